@@ -1,0 +1,31 @@
+#pragma once
+/// A chapter's output folder and atomic file writes: every file appears whole or not at all.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace mcrt {
+
+/// An input/output failure: the chapter exits with code 1 and this message.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Creates `dir` (and its parents) and checks that files can be written in it.
+/// Throws IoError naming the folder otherwise.
+void prepare_output_dir(const std::filesystem::path& dir);
+
+/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see
+/// the old file or the new one, never half of one. Throws IoError on failure, leaving nothing.
+void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+
+/// A temporary name beside `path` (same folder, so rename() is atomic), unique in this process.
+std::filesystem::path temporary_path_for(const std::filesystem::path& path);
+
+/// Renames `from` over `to`; on failure removes `from` and throws IoError.
+void commit_file(const std::filesystem::path& from, const std::filesystem::path& to);
+
+}  // namespace mcrt

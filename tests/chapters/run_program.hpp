@@ -1,0 +1,77 @@
+#pragma once
+// Runs a chapter executable from build/bin/ as a student would, for the chapter tests.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+namespace mcrt::testing {
+
+struct ProgramRun {
+  int exit_code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream s;
+  s << file.rdbuf();
+  return s.str();
+}
+
+/// Runs `bin/<program> <arguments>` (arguments as one shell-quoted string).
+inline ProgramRun run_program(const std::string& program, const std::string& arguments) {
+  const std::filesystem::path tmp = MCRT_TEST_TMP;
+  std::filesystem::create_directories(tmp);
+  static int counter = 0;
+  const std::string stem = (tmp / (program + "-" + std::to_string(::getpid()) + "-" +
+                                   std::to_string(counter++))).string();
+  const std::string command = std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments +
+                              " >" + stem + ".out 2>" + stem + ".err";
+  const int status = std::system(command.c_str());
+  ProgramRun run;
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = read_text(stem + ".out");
+  run.err = read_text(stem + ".err");
+  std::filesystem::remove(stem + ".out");
+  std::filesystem::remove(stem + ".err");
+  return run;
+}
+
+/// A fresh, empty folder for one test's outputs.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(MCRT_TEST_TMP) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline nlohmann::json read_json(const std::filesystem::path& path) {
+  return nlohmann::json::parse(read_text(path));
+}
+
+/// Number of lines in `text` (a trailing newline does not start a new line).
+inline int line_count(const std::string& text) {
+  int lines = 0;
+  for (char c : text) lines += c == '\n';
+  if (!text.empty() && text.back() != '\n') ++lines;
+  return lines;
+}
+
+/// Files left anywhere under `dir` (to prove that a failed run wrote nothing).
+inline int file_count(const std::filesystem::path& dir) {
+  int n = 0;
+  if (!std::filesystem::exists(dir)) return 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    n += entry.is_regular_file();
+  return n;
+}
+
+}  // namespace mcrt::testing
