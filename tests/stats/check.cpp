@@ -1,0 +1,10 @@
+#include "check.hpp"
+
+namespace mcrt::stats {
+
+std::vector<StatisticalCheck>& statistical_checks() {
+  static std::vector<StatisticalCheck> checks;
+  return checks;
+}
+
+}  // namespace mcrt::stats
