@@ -1,0 +1,137 @@
+// Ray-sphere and ray-quad intersection, and the offset that moves new rays off a surface.
+
+#include <gtest/gtest.h>
+
+#include "hit.hpp"
+#include "quad.hpp"
+#include "sphere.hpp"
+
+using namespace mcrt;
+
+namespace {
+
+// Hit distances are exact up to a few ulps of the coordinates involved.
+constexpr double k_tol = 1e-12;
+
+const Sphere k_unit{Vec3(0.0), 1.0, 7};
+
+TEST(SphereTest, HitFromOutsideIsTheNearSide) {
+  const Ray ray{{0, 0, -5}, {0, 0, 1}};
+  const auto hit = intersect(k_unit, ray, {});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 4.0, k_tol);
+  EXPECT_NEAR(hit->point.z, -1.0, k_tol);
+  EXPECT_EQ(hit->normal, Vec3(0, 0, -1));  // faces the incoming ray
+  EXPECT_EQ(hit->material, 7u);
+}
+
+TEST(SphereTest, HitFromInsideIsTheFarSideWithNormalFacingIn) {
+  const Ray ray{{0, 0, 0}, {1, 0, 0}};
+  const auto hit = intersect(k_unit, ray, {});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 1.0, k_tol);
+  EXPECT_EQ(hit->normal, Vec3(-1, 0, 0));
+}
+
+TEST(SphereTest, TangentRayTouchesOnce) {
+  const Ray ray{{-5, 1, 0}, {1, 0, 0}};
+  const auto t = intersect_distance(k_unit, ray, {});
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(*t, 5.0, k_tol);
+}
+
+TEST(SphereTest, MissesWhenPassingBesideOrBehindTheOrigin) {
+  EXPECT_FALSE(intersect_distance(k_unit, {{-5, 1.01, 0}, {1, 0, 0}}, {}));
+  EXPECT_FALSE(intersect_distance(k_unit, {{0, 0, 5}, {0, 0, 1}}, {}));  // sphere behind
+}
+
+TEST(SphereTest, RespectsTheInterval) {
+  const Ray ray{{0, 0, -5}, {0, 0, 1}};
+  EXPECT_NEAR(*intersect_distance(k_unit, ray, {4.5, 100.0}), 6.0, k_tol);  // far side
+  EXPECT_FALSE(intersect_distance(k_unit, ray, {0.0, 3.9}));
+  EXPECT_FALSE(intersect_distance(k_unit, ray, {6.1, 100.0}));
+}
+
+TEST(SphereTest, HugeWallSphereIsAccurate) {
+  // A floor of radius 1e5 with its top at y = 0, and smallpt's ceiling seen from inside.
+  // With radius 1e5 the cancellation in |c - o|^2 - r^2 costs about 1e10 * 2^-52 ~ 2e-6 in
+  // b^2 - c, so t is good to ~1e-9 at these distances: far below any visible effect.
+  const Sphere floor{{50, -1e5, 81.6}, 1e5, 0};
+  EXPECT_NEAR(*intersect_distance(floor, {{50, 40, 81.6}, {0, -1, 0}}, {}), 40.0, 1e-9);
+  const Sphere ceiling{{50, -1e5 + 81.6, 81.6}, 1e5, 0};
+  EXPECT_NEAR(*intersect_distance(ceiling, {{50, 40, 81.6}, {0, 1, 0}}, {}), 41.6, 1e-9);
+}
+
+const Quad k_square{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 3};
+
+TEST(QuadTest, FrontAndBackHits) {
+  const auto front = intersect(k_square, {{0.5, 0.5, 2}, {0, 0, -1}}, {});
+  ASSERT_TRUE(front);
+  EXPECT_NEAR(front->t, 2.0, k_tol);
+  EXPECT_EQ(front->normal, Vec3(0, 0, 1));
+  const auto back = intersect(k_square, {{0.5, 0.5, -2}, {0, 0, 1}}, {});
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->normal, Vec3(0, 0, -1));
+  EXPECT_EQ(back->material, 3u);
+}
+
+TEST(QuadTest, EdgesAndOutside) {
+  EXPECT_TRUE(intersect_distance(k_square, {{1.0, 0.0, 1}, {0, 0, -1}}, {}));   // on an edge
+  EXPECT_FALSE(intersect_distance(k_square, {{1.001, 0.0, 1}, {0, 0, -1}}, {}));
+  EXPECT_FALSE(intersect_distance(k_square, {{0, -1.5, 1}, {0, 0, -1}}, {}));
+}
+
+TEST(QuadTest, ParallelAndBehindRaysMiss) {
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 0}, {1, 0, 0}}, {}));   // in the plane
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 1, 0}}, {}));   // parallel above
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 0, 1}}, {}));   // plane behind
+}
+
+TEST(QuadTest, TMinExcludesTheOrigin) {
+  const Ray ray{{0, 0, 0}, {0, 0, 1}};  // starts on the quad
+  EXPECT_FALSE(intersect_distance(k_square, ray, {}));
+}
+
+TEST(QuadTest, AreaNormalCentre) {
+  EXPECT_DOUBLE_EQ(k_square.area(), 4.0);
+  EXPECT_EQ(k_square.normal(), Vec3(0, 0, 1));
+  EXPECT_EQ(k_square.center(), Vec3(0, 0, 0));
+}
+
+TEST(SpawnRayTest, LeavesTheSurfaceOnTheSideOfTheDirection) {
+  Hit hit;
+  hit.point = {0, 0, 0};
+  hit.normal = {0, 0, 1};
+  const Ray up = spawn_ray(hit, {0, 0, 1});
+  EXPECT_GT(up.origin.z, 0.0);
+  EXPECT_FALSE(intersect_distance(k_square, up, {}));
+  const Ray down = spawn_ray(hit, {0, 0, -1});
+  EXPECT_LT(down.origin.z, 0.0);
+  EXPECT_FALSE(intersect_distance(k_square, down, {}));
+}
+
+TEST(SpawnRayTest, ReboundOffAWallSphereDoesNotHitItAgain) {
+  // smallpt's left wall: the plane x = 1 is the near pole of a ball that holds the whole room.
+  const Sphere wall{{1e5 + 1, 40.8, 81.6}, 1e5, 0};
+  const Ray in{{50, 40, 80}, glm::normalize(Vec3(-1, 0.1, 0.05))};
+  const auto hit = intersect(wall, in, {});
+  ASSERT_TRUE(hit);
+  // On the sphere to ~1e-10 relative: the round-off of coordinates of size 1e5.
+  EXPECT_NEAR(glm::length(hit->point - wall.center), wall.radius, 1e-5);
+  // Back into the room: the next hit is the ball's far side, 2e5 away, never the wall itself.
+  const Ray out = spawn_ray(*hit, glm::normalize(Vec3(1, 0.3, -0.2)));
+  const auto next = intersect_distance(wall, out, {});
+  ASSERT_TRUE(next);
+  EXPECT_GT(*next, 1e5);
+}
+
+TEST(SpawnRayTest, ToTargetReturnsTheRemainingDistance) {
+  Hit hit;
+  hit.point = {0, 0, 0};
+  hit.normal = {0, 0, 1};
+  const auto [ray, distance] = spawn_ray_to(hit, {0, 0, 10});
+  EXPECT_NEAR(distance + ray.origin.z, 10.0, k_tol);
+  EXPECT_NEAR(glm::length(ray.direction), 1.0, k_tol);
+}
+
+}  // namespace
