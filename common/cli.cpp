@@ -13,7 +13,8 @@ void add_common_options(CLI::App& app, CommonOptions& options, const std::string
   options.out = std::filesystem::path("out") / chapter;
   options.threads = hardware_threads();
   app.add_option("--out", options.out, "Output folder");
-  app.add_option("--seed", options.seed, "Random seed (a non-negative integer)");
+  app.add_option("--seed", options.seed, "Random seed (a non-negative integer)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", options.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, k_max_threads));
   app.add_flag("--quiet", options.quiet, "No progress bar and no table on stdout");

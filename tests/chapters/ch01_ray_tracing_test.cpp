@@ -1,0 +1,123 @@
+// Chapter 01 as a student runs it: tiny renders, their outputs, reproducibility across thread
+// counts, and every kind of bad input.
+
+#include <gtest/gtest.h>
+
+#include "image.hpp"
+#include "run_program.hpp"
+
+using namespace mcrt::testing;
+
+namespace {
+
+const std::string k_program = "ch01_ray_tracing";
+
+TEST(Ch01Test, RendersTheCornellBoxAndWritesItsOutputs) {
+  const auto dir = fresh_dir("ch01_smoke");
+  const ProgramRun run =
+      run_program(k_program, "--width 32 --height 24 --spp 2 --quiet --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.out.empty());  // --quiet
+  const mcrt::Image image = mcrt::read_pfm(dir / "image.pfm");
+  EXPECT_EQ(image.width, 32);
+  EXPECT_EQ(image.height, 24);
+  EXPECT_GT(mcrt::mean_radiance(image), 0.0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "image.png"));
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["scene"], "cornell");
+  EXPECT_EQ(summary["spp"], 2);
+  // Every pixel sample traces one camera ray and at most one shadow ray.
+  const int samples = 32 * 24 * 2;
+  EXPECT_GE(summary["rays"].get<int>(), samples);
+  EXPECT_LE(summary["rays"].get<int>(), 2 * samples);
+  EXPECT_EQ(summary["non_finite_samples"], 0);
+  EXPECT_EQ(summary["flags"]["width"], "32");
+  EXPECT_EQ(file_count(dir), 3);  // image.png, image.pfm, summary.json: no temporaries left
+}
+
+TEST(Ch01Test, PrintsASummaryAndHelp) {
+  const auto dir = fresh_dir("ch01_table");
+  const ProgramRun run = run_program(k_program, "--width 8 --height 8 --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("rays per second"), std::string::npos);
+  const ProgramRun help = run_program(k_program, "--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--width", "--height", "--spp", "--scene", "--seed", "--threads",
+                           "--out", "--quiet"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+TEST(Ch01Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch01_threads1"), two = fresh_dir("ch01_threads2");
+  const std::string flags = "--scene cornell-spheres --width 40 --height 30 --spp 3 --seed 9 --quiet";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  EXPECT_EQ(read_text(one / "image.pfm"), read_text(two / "image.pfm"));
+  EXPECT_EQ(read_text(one / "image.png"), read_text(two / "image.png"));
+  const auto other = fresh_dir("ch01_seed10");
+  ASSERT_EQ(run_program(k_program, "--scene cornell-spheres --width 40 --height 30 --spp 3 "
+                                   "--seed 10 --quiet --out " + other.string()).exit_code, 0);
+  EXPECT_NE(read_text(one / "image.pfm"), read_text(other / "image.pfm"));  // jitter differs
+}
+
+TEST(Ch01Test, EveryScene) {
+  for (const std::string scene : {"cornell", "cornell-spheres", "furnace"}) {
+    const auto dir = fresh_dir("ch01_scene_" + scene);
+    const ProgramRun run = run_program(
+        k_program, "--scene " + scene + " --width 16 --height 12 --quiet --out " + dir.string());
+    EXPECT_EQ(run.exit_code, 0) << scene << ": " << run.err;
+  }
+}
+
+TEST(Ch01Test, FurnaceSeesOnlyItsEmission) {
+  // Direct light only, no point light: every camera ray returns the walls' Le exactly.
+  const auto dir = fresh_dir("ch01_furnace");
+  ASSERT_EQ(run_program(k_program, "--scene furnace --emission 2.5 --albedo 0.3 --width 8 "
+                                   "--height 8 --quiet --out " + dir.string()).exit_code, 0);
+  const mcrt::Image image = mcrt::read_pfm(dir / "image.pfm");
+  for (const mcrt::Color& c : image.pixels) EXPECT_EQ(c, mcrt::Color(2.5));
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string flag;  // the message must name it
+};
+
+class Ch01BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Ch01BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
+  const auto dir = fresh_dir("ch01_bad");
+  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, Ch01BadInputTest,
+    ::testing::Values(BadInput{"--width 0", "--width"}, BadInput{"--width -3", "--width"},
+                      BadInput{"--width abc", "--width"}, BadInput{"--spp 0", "--spp"},
+                      BadInput{"--height 1.5", "--height"}, BadInput{"--frobnicate", "--frobnicate"},
+                      BadInput{"--scene moon", "--scene"},
+                      BadInput{"--width 10000 --height 10000", "--width"},
+                      BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
+                      BadInput{"--albedo 1.5", "--albedo"}));
+
+TEST(Ch01Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
+  // A folder without write permission; root ignores permission bits, so as root use a path
+  // under /proc, where nobody can create anything.
+  const auto dir = fresh_dir("ch01_unwritable");
+  const bool root = ::geteuid() == 0;
+  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
+                                        std::filesystem::perms::owner_exec);
+  const ProgramRun run = run_program(k_program, "--width 8 --height 8 --out " + out.string());
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);
+}
+
+}  // namespace
