@@ -1,0 +1,50 @@
+# Shared set-up for the scripts: Debian packages, then configure and build a CMake preset.
+# Sourced, not run.
+
+set -euo pipefail
+
+repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$repo_root"
+
+# Everything the project needs from Debian: build tools, libraries, gnuplot for the plots.
+debian_packages=(
+  cmake g++ make pkg-config
+  libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev libboost-math-dev
+  gnuplot-nox fonts-dejavu-core
+)
+
+# Installs the missing packages when run as root; otherwise prints the one command to run
+# and exits with code 2.
+ensure_packages() {
+  local missing=()
+  for package in "${debian_packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$package")
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "Missing Debian packages. Install them with:" >&2
+    echo "sudo apt-get install -y ${missing[*]}" >&2
+    exit 2
+  fi
+  echo "== Installing Debian packages: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# configure_and_build PRESET [TARGET...]: configure once, then build with every core.
+configure_and_build() {
+  local preset="$1"
+  shift
+  echo "== Configuring (preset $preset)"
+  cmake --preset "$preset" >/dev/null
+  echo "== Building with $(nproc) jobs"
+  if [ $# -gt 0 ]; then
+    cmake --build --preset "$preset" -j "$(nproc)" --target "$@"
+  else
+    cmake --build --preset "$preset" -j "$(nproc)"
+  fi
+}
