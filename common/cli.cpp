@@ -49,15 +49,15 @@ void check_image_size(const ImageOptions& options) {
 nlohmann::ordered_json flags_json(const CLI::App& app) {
   nlohmann::ordered_json flags = nlohmann::ordered_json::object();
   for (const CLI::Option* option : app.get_options()) {
-    const std::string name = option->get_name(false, true);
-    if (name == "--help" || name.empty()) continue;
+    const std::vector<std::string>& names = option->get_lnames();
+    if (names.empty() || names.front() == "help") continue;
     std::string value;
     if (option->count() > 0) {
       for (const std::string& r : option->results()) value += (value.empty() ? "" : ",") + r;
     } else {
       value = option->get_default_str();
     }
-    flags[name.substr(name.find_first_not_of('-'))] = value;
+    flags[names.front()] = value;
   }
   return flags;
 }
