@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vector>
+
+#include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
@@ -44,6 +47,61 @@ double student_t_quantile(double p, double dof) { return bm::quantile(bm::studen
 
 double sidak_alpha(double alpha, int tests) {
   return 1.0 - std::pow(1.0 - alpha, 1.0 / static_cast<double>(tests));
+}
+
+double sidak_p_value(double smallest_p, int tests) {
+  // 1 - (1 - p)^m computed as -expm1(m log1p(-p)), exact also for tiny p.
+  return -std::expm1(static_cast<double>(tests) * std::log1p(-std::clamp(smallest_p, 0.0, 1.0)));
+}
+
+double sidak_p_value(std::span<const double> p_values) {
+  double smallest = 1.0;
+  for (double p : p_values) smallest = std::min(smallest, p);
+  return sidak_p_value(smallest, static_cast<int>(p_values.size()));
+}
+
+ConfidenceInterval binomial_confidence_interval(std::uint64_t successes,
+                                              std::uint64_t trials, double level) {
+  using bm::binomial_distribution;
+  const double tail = (1.0 - level) / 2.0;
+  const auto n = static_cast<double>(trials), k = static_cast<double>(successes);
+  return {binomial_distribution<>::find_lower_bound_on_p(n, k, tail),
+          binomial_distribution<>::find_upper_bound_on_p(n, k, tail)};
+}
+
+double binomial_test_p_value(std::uint64_t successes, std::uint64_t trials, double rate) {
+  const bm::binomial_distribution<> binomial(static_cast<double>(trials), rate);
+  const auto k = static_cast<double>(successes);
+  const double at_most = bm::cdf(binomial, k);
+  const double at_least = successes == 0 ? 1.0 : bm::cdf(bm::complement(binomial, k - 1.0));
+  return std::min(1.0, 2.0 * std::min(at_most, at_least));
+}
+
+double uniformity_ks_statistic(std::span<const double> values) {
+  std::vector<double> sorted(values.begin(), values.end());
+  std::sort(sorted.begin(), sorted.end());
+  const auto n = static_cast<double>(sorted.size());
+  double d = 0.0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const double x = std::clamp(sorted[i], 0.0, 1.0);
+    // The empirical CDF jumps from i/n to (i+1)/n at x.
+    d = std::max({d, static_cast<double>(i + 1) / n - x, x - static_cast<double>(i) / n});
+  }
+  return d;
+}
+
+double ks_p_value(double d, std::uint64_t n) {
+  const double root_n = std::sqrt(static_cast<double>(n));
+  const double lambda = (root_n + 0.12 + 0.11 / root_n) * d;
+  if (lambda < 0.2) return 1.0;  // the series converges slowly here and Q(l) = 1 to 1e-20
+  double sum = 0.0, sign = 1.0;
+  for (int k = 1; k <= 100; ++k) {
+    const double term = sign * std::exp(-2.0 * k * k * lambda * lambda);
+    sum += term;
+    if (std::abs(term) < 1e-16) break;
+    sign = -sign;
+  }
+  return std::clamp(2.0 * sum, 0.0, 1.0);
 }
 
 }  // namespace mcrt::stats

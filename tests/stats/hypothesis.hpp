@@ -5,6 +5,7 @@
 // false-failure rate.
 
 #include <cstdint>
+#include <span>
 
 namespace mcrt::stats {
 
@@ -31,5 +32,39 @@ double student_t_quantile(double p, double dof);
 /// Sidak correction: the per-test level that gives family-wise level `alpha` over `tests`
 /// independent tests, 1 - (1 - alpha)^(1/tests).
 double sidak_alpha(double alpha, int tests);
+
+/// Sidak-adjusted p-value of a family of `tests` independent tests whose smallest p-value is
+/// `smallest_p`: 1 - (1 - p_min)^tests. Rejecting it below alpha is rejecting any member below
+/// sidak_alpha(alpha, tests); under the null it is Uniform(0,1) again.
+double sidak_p_value(double smallest_p, int tests);
+
+/// The Sidak-adjusted p-value of several independent p-values run together.
+double sidak_p_value(std::span<const double> p_values);
+
+/// A closed interval [low, high].
+struct ConfidenceInterval {
+  double low = 0.0;
+  double high = 0.0;
+  bool contains(double x) const { return low <= x && x <= high; }
+};
+
+/// Exact (Clopper-Pearson) two-sided confidence interval at `level` (e.g. 0.99) for a binomial
+/// rate, from `successes` out of `trials`. It covers the true rate with probability >= level.
+ConfidenceInterval binomial_confidence_interval(std::uint64_t successes,
+                                              std::uint64_t trials, double level);
+
+/// Two-sided exact binomial test of `successes` out of `trials` against `rate`:
+/// p = min(1, 2 min(P(X <= k), P(X >= k))) with X ~ Binomial(trials, rate).
+double binomial_test_p_value(std::uint64_t successes, std::uint64_t trials, double rate);
+
+/// Kolmogorov-Smirnov test that `values` are draws of Uniform(0,1): the statistic
+/// D = sup |F_n(x) - x|.
+double uniformity_ks_statistic(std::span<const double> values);
+
+/// The p-value P(D_n > d) of the KS statistic for n values. Boost 1.74 has no Kolmogorov
+/// distribution, so this is its classical series Q(l) = 2 sum_k (-1)^(k-1) exp(-2 k^2 l^2) at
+/// l = (sqrt(n) + 0.12 + 0.11 / sqrt(n)) d (Stephens' correction, accurate to ~1% in p for
+/// n >= 5, which is plenty for a calibration run of hundreds of values).
+double ks_p_value(double d, std::uint64_t n);
 
 }  // namespace mcrt::stats
