@@ -1,6 +1,8 @@
 // Chapter 01 as a student runs it: tiny renders, their outputs, reproducibility across thread
 // counts, and every kind of bad input.
 
+#include <cctype>
+
 #include <gtest/gtest.h>
 
 #include "image.hpp"
@@ -82,6 +84,7 @@ struct BadInput {
   std::string arguments;
   std::string flag;  // the message must name it
 };
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
 
 class Ch01BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
@@ -102,7 +105,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 10000 --height 10000", "--width"},
                       BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
-                      BadInput{"--albedo 1.5", "--albedo"}));
+                      BadInput{"--albedo 1.5", "--albedo"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) {
+      std::string name = std::to_string(info.index) + "_";
+      for (char c : info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
 
 TEST(Ch01Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
   // A folder without write permission; root ignores permission bits, so as root use a path
