@@ -53,7 +53,7 @@ Image make_contact_sheet(std::span<const LabelledImage> cells, const SheetLayout
   const std::int64_t title_band = layout.title.empty() ? 0 : text_height(s) + gap;
 
   const std::int64_t grid_width = gap + columns * (cell_width + gap);
-  const std::int64_t title_width = 2 * gap + text_width(layout.title, s);
+  const std::int64_t title_width = layout.title.empty() ? 0 : 2 * gap + text_width(layout.title, s);
   Image sheet(checked_size(std::max(grid_width, title_width), "contact sheet width"),
               checked_size(gap + title_band + rows * (cell_height + gap), "contact sheet height"),
               layout.background);
