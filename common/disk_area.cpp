@@ -18,7 +18,10 @@
 
 namespace mcrt {
 
-double ball_hit_probability(int k) { return unit_ball_volume(k) / std::ldexp(1.0, k); }
+double ball_hit_probability(int k) {
+  if (k <= 1) return 1.0;  // the segment [-1, 1] is its own cube; pow and tgamma round V_1
+  return unit_ball_volume(k) / std::ldexp(1.0, k);
+}
 
 double hit_count_mean(std::uint64_t n, double p) { return static_cast<double>(n) * p; }
 
