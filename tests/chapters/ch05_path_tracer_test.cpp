@@ -1,0 +1,161 @@
+// Chapter 05 as a student runs it: a tiny run and its outputs, reproducibility across thread
+// counts, and bad input.
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "image.hpp"
+#include "run_program.hpp"
+
+using namespace mcrt::testing;
+
+namespace {
+
+const std::string k_program = "ch05_path_tracer";
+
+struct CsvRow {
+  int spp;
+  double rmse, seconds;
+  long long rays;
+  double rays_per_second;
+};
+
+std::vector<CsvRow> read_rmse_csv(const std::filesystem::path& path, std::string* header) {
+  std::istringstream text(read_text(path));
+  std::getline(text, *header);
+  std::vector<CsvRow> rows;
+  std::string line;
+  while (std::getline(text, line)) {
+    CsvRow r{};
+    char comma;
+    std::istringstream fields(line);
+    fields >> r.spp >> comma >> r.rmse >> comma >> r.seconds >> comma >> r.rays >> comma >>
+        r.rays_per_second;
+    EXPECT_TRUE(fields) << line;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
+  const auto dir = fresh_dir("ch05_smoke");
+  const ProgramRun run = run_program(
+      k_program, "--scene cornell-spheres --width 24 --height 18 --spp 1,4,16 --depth 4 "
+                 "--threads 2 --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
+
+  std::string header;
+  const std::vector<CsvRow> rows = read_rmse_csv(dir / "rmse_vs_spp.csv", &header);
+  EXPECT_EQ(header, "spp,rmse,seconds,rays,rays_per_second");
+  ASSERT_EQ(rows.size(), 3u);
+  const int pixels = 24 * 18, spp[] = {1, 4, 16};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].spp, spp[i]);
+    EXPECT_GT(rows[i].rmse, 0.0);
+    // Two renders of spp samples per pixel, each path 1 to depth + 1 = 5 closest-hit queries.
+    EXPECT_GE(rows[i].rays, 2LL * pixels * spp[i]);
+    EXPECT_LE(rows[i].rays, 2LL * pixels * spp[i] * 5);
+    EXPECT_GT(rows[i].rays_per_second, 0.0);
+  }
+  // 16 times the samples: a quarter of the error, here within a factor 2 either way (432
+  // pixels give the RMS error to about 10% at these spp; the factor is a coarse bound for a
+  // smoke run, the law itself is tested in tests/checks/path_tracer_checks.cpp).
+  EXPECT_GT(rows[2].rmse, rows[0].rmse / 8.0);
+  EXPECT_LT(rows[2].rmse, rows[0].rmse / 2.0);
+
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["non_finite_samples"], 0);
+  EXPECT_EQ(summary["scene"], "cornell-spheres");
+  EXPECT_EQ(summary["depth"], 4);
+  long long rays = 0;
+  for (const CsvRow& r : rows) rays += r.rays;
+  EXPECT_EQ(summary["rays"].get<long long>(), rays);
+  EXPECT_GT(summary["rays_per_second"].get<double>(), 0.0);
+  const double slope = summary["rmse_slope"].get<double>();
+  EXPECT_LT(slope, -0.2);  // coarse, as above: -1/2 within the noise of 432 pixels
+  EXPECT_GT(slope, -0.8);
+  EXPECT_EQ(summary["flags"]["spp"], "1,4,16");
+
+  for (const char* name : {"spp_0001", "spp_0004", "spp_0016"}) {
+    const mcrt::Image image = mcrt::read_pfm(dir / (std::string(name) + ".pfm"));
+    EXPECT_EQ(image.width, 24);
+    EXPECT_EQ(image.height, 18);
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string(name) + ".png")));
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "noise_strip.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "rmse_vs_spp.gp"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
+}
+
+TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch05_threads1"), two = fresh_dir("ch05_threads2");
+  const std::string flags = "--width 20 --height 16 --spp 2 --depth 6 --seed 5 --quiet";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  EXPECT_EQ(read_text(one / "spp_0002.pfm"), read_text(two / "spp_0002.pfm"));
+  EXPECT_EQ(read_text(one / "spp_0002.png"), read_text(two / "spp_0002.png"));
+  EXPECT_EQ(read_json(one / "summary.json")["rays"], read_json(two / "summary.json")["rays"]);
+}
+
+TEST(Ch05Test, HelpNamesEveryFlag) {
+  const ProgramRun help = run_program(k_program, "--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--scene", "--width", "--height", "--spp", "--depth", "--seed",
+                           "--threads", "--out", "--quiet"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string flag;  // the message must name it
+};
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
+
+class Ch05BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Ch05BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
+  const auto dir = fresh_dir("ch05_bad");
+  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, Ch05BadInputTest,
+    ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--spp 1,0,4", "--spp"},
+                      BadInput{"--spp x", "--spp"}, BadInput{"--depth -1", "--depth"},
+                      BadInput{"--scene moon", "--scene"},
+                      BadInput{"--width 16384 --height 16384", "--width"},
+                      BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
+                      BadInput{"--threads 0", "--threads"}),
+    [](const ::testing::TestParamInfo<BadInput>& param_info) {
+      std::string name = std::to_string(param_info.index) + "_";
+      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(Ch05Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
+  // A folder without write permission; root ignores permission bits, so as root use a path
+  // under /proc, where nobody can create anything.
+  const auto dir = fresh_dir("ch05_unwritable");
+  const bool root = ::geteuid() == 0;
+  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
+                                        std::filesystem::perms::owner_exec);
+  const ProgramRun run = run_program(k_program, "--width 8 --height 8 --spp 1 --out " + out.string());
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);
+}
+
+}  // namespace

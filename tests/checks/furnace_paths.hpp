@@ -1,0 +1,61 @@
+#pragma once
+// Path-tracer samples in the furnace, shared by the furnace checks and by the unit tests that
+// show those checks reject known-wrong tracers.
+//
+// In the furnace (albedo a, emission Le everywhere) the radiance after at most k bounces is
+// Le (1 - a^(k+1)) / (1 - a) in every direction, with the variance furnace_radiance_variance
+// (common/path_tracer.hpp). The z-test compares the mean of n paths with it, using that
+// closed-form standard error sqrt(Var / n); n is large enough for the central limit theorem
+// (every sample is bounded by Le (1 + 2a + ... + (2a)^k)).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "hypothesis.hpp"
+#include "path_tracer.hpp"
+#include "rng.hpp"
+#include "scene.hpp"
+#include "statistics.hpp"
+
+namespace mcrt::testing {
+
+struct FurnaceSetup {
+  double albedo = 0.5;
+  double emission = 1.0;
+  int depth = 3;
+};
+
+/// n paths from the furnace's centre, path i in a uniformly random direction drawn from
+/// stream i of `seed`; `estimate(scene, ray, depth, rng, count)` is the tracer under test.
+template <class Estimator>
+RunningStats furnace_samples(const FurnaceSetup& setup, int n, std::uint64_t seed,
+                             Estimator&& estimate) {
+  const Scene scene = make_furnace(setup.albedo, setup.emission);
+  RunningStats samples;
+  RayCount count;
+  for (int i = 0; i < n; ++i) {
+    Rng rng(seed, static_cast<std::uint64_t>(i));
+    const Vec2 u = rng.uniform2();
+    const double z = 1.0 - 2.0 * u.x, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const Ray ray{Vec3(0.0), {r * std::cos(k_two_pi * u.y), r * std::sin(k_two_pi * u.y), z}};
+    samples.add(average(estimate(scene, ray, setup.depth, rng, count)));
+  }
+  return samples;
+}
+
+/// Two-sided z-test of the furnace mean against Le (1 - a^(k+1)) / (1 - a).
+inline double furnace_mean_p_value(const FurnaceSetup& setup, const RunningStats& samples) {
+  const double expected = furnace_radiance(setup.albedo, setup.emission, setup.depth);
+  const double variance = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
+  return stats::z_test_p_value(samples.mean(), expected,
+                               std::sqrt(variance / static_cast<double>(samples.count())));
+}
+
+/// The path tracer under test, as the callable furnace_samples takes.
+inline Color chapter_path_tracer(const Scene& scene, const Ray& ray, int depth, Rng& rng,
+                                 RayCount& count) {
+  return estimate_path_radiance(scene, ray, depth, rng, count);
+}
+
+}  // namespace mcrt::testing

@@ -1,0 +1,266 @@
+// The path tracer of chapter 05 (common/path_tracer.hpp) against closed forms and against an
+// independent renderer:
+//  - furnace: the mean radiance after k bounces is Le (1 - a^(k+1)) / (1 - a) (z-tests for
+//    several a and k) and its variance is furnace_radiance_variance (z-tests of the sample
+//    variance);
+//  - the RMS error of an image falls as spp^-1/2 (a z-test of the fitted slope);
+//  - cornell-spheres agrees, tile by tile, with a path tracer written here from scratch.
+// Every check is designed for a false-failure rate alpha = 1e-4.
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "camera.hpp"
+#include "check.hpp"
+#include "furnace_paths.hpp"
+#include "hypothesis.hpp"
+#include "path_tracer.hpp"
+#include "render.hpp"
+#include "scene.hpp"
+#include "statistics.hpp"
+
+namespace {
+
+using namespace mcrt;
+using mcrt::testing::FurnaceSetup;
+
+// ---------------------------------------------------------------------------------------------
+// Furnace: the mean.
+
+constexpr int k_furnace_paths = 40000;
+
+double furnace_mean_check(std::uint64_t seed, std::uint64_t stream_seed_offset,
+                          const FurnaceSetup& setup) {
+  const RunningStats samples = mcrt::testing::furnace_samples(setup, k_furnace_paths,
+                                                        seed + stream_seed_offset,
+                                                        mcrt::testing::chapter_path_tracer);
+  return mcrt::testing::furnace_mean_p_value(setup, samples);
+}
+
+// A different seed offset per check keeps the checks independent of each other.
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a05_k1, 1e-4) {
+  return furnace_mean_check(seed, 1, {0.5, 1.0, 1});
+}
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a05_k4, 1e-4) {
+  return furnace_mean_check(seed, 2, {0.5, 1.0, 4});
+}
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a08_k10, 1e-4) {
+  return furnace_mean_check(seed, 3, {0.8, 2.0, 10});
+}
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a095_k3, 1e-4) {
+  return furnace_mean_check(seed, 4, {0.95, 0.5, 3});
+}
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a02_k2, 1e-4) {
+  return furnace_mean_check(seed, 5, {0.2, 3.0, 2});
+}
+
+// ---------------------------------------------------------------------------------------------
+// Furnace: the variance. The samples are not normal, so the chi-square variance test does not
+// apply; the sample variance s^2 of n values has variance (mu4 - sigma^4 (n - 3)/(n - 1)) / n,
+// with mu4 the fourth central moment, estimated here from the same samples (consistent, and
+// the samples are bounded, so every moment exists). At n = 4e4 the sample variance is close
+// to normal (CLT), so a z-test on it holds its false-failure rate.
+
+double furnace_variance_check(std::uint64_t seed, std::uint64_t stream_seed_offset,
+                              const FurnaceSetup& setup) {
+  std::vector<double> x;
+  x.reserve(k_furnace_paths);
+  mcrt::testing::furnace_samples(setup, k_furnace_paths, seed + stream_seed_offset,
+                           [&](const Scene& s, const Ray& ray, int depth, Rng& rng,
+                               RayCount& count) {
+                             const Color c = estimate_path_radiance(s, ray, depth, rng, count);
+                             x.push_back(average(c));
+                             return c;
+                           });
+  const double n = static_cast<double>(x.size());
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= n;
+  double m2 = 0.0, m4 = 0.0;
+  for (double v : x) {
+    const double d2 = (v - mean) * (v - mean);
+    m2 += d2;
+    m4 += d2 * d2;
+  }
+  const double sample_variance = m2 / (n - 1.0);
+  const double mu4 = m4 / n, sigma2 = m2 / n;
+  const double variance_of_variance = (mu4 - sigma2 * sigma2 * (n - 3.0) / (n - 1.0)) / n;
+  const double expected = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
+  return stats::z_test_p_value(sample_variance, expected, std::sqrt(variance_of_variance));
+}
+
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a05_k4, 1e-4) {
+  return furnace_variance_check(seed, 11, {0.5, 1.0, 4});
+}
+MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a09_k8, 1e-4) {
+  return furnace_variance_check(seed, 12, {0.9, 1.0, 8});
+}
+
+// ---------------------------------------------------------------------------------------------
+// RMS error against spp. For independent renders A, B of n samples per pixel,
+// E[(A - B)^2 / 2] = Var[A] = sigma_p^2 / n exactly, so the mean squared error MSE(n) over the
+// image falls exactly as 1/n and log RMSE against log n has slope -1/2.
+//
+// The test: at each n, MSE(n) is the mean of d_p = (A_p - B_p)^2 / 2 over P independent
+// pixels, so log MSE(n) has variance v = Var(d) / (P MSE^2) (delta method, Var(d) estimated
+// from the pixels). A weighted least-squares fit of log MSE on log n with weights 1/v has a
+// slope with standard error 1 / sqrt(sum w (x - mean_w x)^2); the RMSE slope is half of it.
+// z-test of that slope against -1/2. Every render uses its own sample range, so all levels
+// are independent. The log's bias (-v/2, Jensen) differs between levels by about 1e-3 in the
+// slope, far below its standard error (about 0.02).
+
+MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
+  const Scene scene = make_cornell_spheres();
+  const Camera camera(scene.camera, 32, 24);
+  const int depth = 4;
+  auto path_radiance = [&](const Ray& ray, Rng& rng, RayCount& count) {
+    return estimate_path_radiance(scene, ray, depth, rng, count);
+  };
+  double sum_w = 0.0, sum_wx = 0.0, sum_wy = 0.0, sum_wxx = 0.0, sum_wxy = 0.0;
+  std::uint64_t first_sample = 0;
+  for (int spp : {4, 8, 16, 32, 64}) {
+    RenderSettings settings{spp, first_sample, seed, 1, nullptr};
+    const Image a = render(camera, settings, path_radiance).image;
+    settings.first_sample += static_cast<std::uint64_t>(spp);
+    const Image b = render(camera, settings, path_radiance).image;
+    first_sample = settings.first_sample + static_cast<std::uint64_t>(spp);
+
+    RunningStats d;
+    for (std::size_t p = 0; p < a.pixels.size(); ++p) {
+      const Color diff = a.pixels[p] - b.pixels[p];
+      d.add(glm::dot(diff, diff) / 6.0);  // (A - B)^2 / 2, averaged over the 3 channels
+    }
+    const double mse = d.mean();
+    const double v = d.variance() / (static_cast<double>(d.count()) * mse * mse);
+    const double x = std::log(static_cast<double>(spp)), y = std::log(mse), w = 1.0 / v;
+    sum_w += w;
+    sum_wx += w * x;
+    sum_wy += w * y;
+    sum_wxx += w * x * x;
+    sum_wxy += w * x * y;
+  }
+  const double sxx = sum_wxx - sum_wx * sum_wx / sum_w;
+  const double mse_slope = (sum_wxy - sum_wx * sum_wy / sum_w) / sxx;
+  return stats::z_test_p_value(mse_slope / 2.0, -0.5, 0.5 / std::sqrt(sxx));
+}
+
+// ---------------------------------------------------------------------------------------------
+// An independent renderer of cornell-spheres. Written here from scratch, sharing only the
+// scene's data and the camera (the camera is tested on its own; the subject here is the
+// radiance): its own ray-sphere intersection (the geometric form: the closest approach of the
+// ray to the centre), its own orthonormal basis, and cosine-weighted directions
+// (pdf cos(theta)/pi, so the path weight is multiplied by the albedo alone) instead of uniform
+// ones. It cuts paths at the same depth, so both estimate the same radiance.
+
+struct ReferenceSphere {
+  Vec3 center;
+  double radius;
+  Color albedo;
+  Color emission;
+};
+
+struct ReferenceHit {
+  double t;
+  std::size_t sphere;
+};
+
+// Closest approach: tca = (c - o).d, squared distance of the line from c is |c - o|^2 - tca^2;
+// the hits are tca -+ sqrt(r^2 - that). Hits nearer than 1e-4 are ignored (the ray's own start
+// point; 1e-4 is far above the round-off of coordinates below 1e5 and far below any feature).
+std::optional<ReferenceHit> reference_hit(const std::vector<ReferenceSphere>& spheres,
+                                          const Vec3& o, const Vec3& d) {
+  std::optional<ReferenceHit> best;
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Vec3 l = spheres[i].center - o;
+    const double tca = l.x * d.x + l.y * d.y + l.z * d.z;
+    const double half_chord2 =
+        spheres[i].radius * spheres[i].radius - ((l.x * l.x + l.y * l.y + l.z * l.z) - tca * tca);
+    if (half_chord2 < 0.0) continue;
+    const double thc = std::sqrt(half_chord2);
+    double t = tca - thc;
+    if (t <= 1e-4) t = tca + thc;
+    if (t > 1e-4 && (!best || t < best->t)) best = ReferenceHit{t, i};
+  }
+  return best;
+}
+
+Color reference_radiance(const std::vector<ReferenceSphere>& spheres, Vec3 o, Vec3 d, int depth,
+                         Rng& rng) {
+  Color sum(0.0), weight(1.0);
+  for (int bounce = 0; bounce <= depth; ++bounce) {
+    const std::optional<ReferenceHit> hit = reference_hit(spheres, o, d);
+    if (!hit) break;
+    const ReferenceSphere& s = spheres[hit->sphere];
+    const Vec3 p = o + hit->t * d;
+    Vec3 n = (p - s.center) / s.radius;
+    if (n.x * d.x + n.y * d.y + n.z * d.z > 0.0) n = -n;  // the side the ray came from
+    sum += weight * s.emission;
+    // Cosine-weighted direction: a uniform point on the disk lifted to the hemisphere.
+    const double r = std::sqrt(rng.uniform()), phi = k_two_pi * rng.uniform();
+    const double lx = r * std::cos(phi), ly = r * std::sin(phi);
+    const double lz = std::sqrt(std::max(0.0, 1.0 - lx * lx - ly * ly));
+    // A basis around n from the cross product with the axis least aligned with it.
+    const Vec3 helper = std::abs(n.x) > 0.5 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    const Vec3 tangent = glm::normalize(glm::cross(helper, n));
+    const Vec3 bitangent = glm::cross(n, tangent);
+    d = glm::normalize(lx * tangent + ly * bitangent + lz * n);
+    o = p;
+    weight *= s.albedo;  // f_r cos / pdf = (rho / pi) cos / (cos / pi)
+  }
+  return sum;
+}
+
+// Tiles of the image: every sample picks a uniformly random point of its tile, so the mean of
+// a tile's samples estimates the tile's mean radiance with the plain sample variance. Two
+// renderers, n samples per tile each: the difference of means over its standard error
+// sqrt(s1^2/n + s2^2/n) is standard normal (n = 1.5e4, CLT) if both are unbiased. One test per
+// tile and channel, 6 x 3 = 18 in all; Sidak correction to a family-wise rate of 1e-4 (exact
+// for independent tests and conservative for the channels' positive correlation: Sidak's
+// inequality for two-sided normal tests). Returns the smallest p-value rescaled to the family,
+// 1 - (1 - p_min)^18, so the check's own alpha is the family-wise rate.
+MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
+  const Scene scene = make_cornell_spheres();
+  std::vector<ReferenceSphere> spheres;
+  for (const Sphere& s : scene.spheres)
+    spheres.push_back({s.center, s.radius, scene.materials[s.material].albedo,
+                       scene.materials[s.material].emission});
+  constexpr int k_tiles_x = 3, k_tiles_y = 2, k_tile_size = 16, k_samples = 15000, k_depth = 4;
+  const Camera camera(scene.camera, k_tiles_x * k_tile_size, k_tiles_y * k_tile_size);
+
+  double p_min = 1.0;
+  int tests = 0;
+  for (int tile = 0; tile < k_tiles_x * k_tiles_y; ++tile) {
+    const double x0 = (tile % k_tiles_x) * k_tile_size, y0 = (tile / k_tiles_x) * k_tile_size;
+    RunningStats ours[3], reference[3];
+    RayCount count;
+    for (int i = 0; i < k_samples; ++i) {
+      const std::uint64_t stream = stream_index(static_cast<std::uint64_t>(tile), i);
+      Rng rng(seed, stream);
+      const Vec2 u = rng.uniform2();
+      const Ray ray = camera.generate_ray(x0 + k_tile_size * u.x, y0 + k_tile_size * u.y);
+      const Color l = estimate_path_radiance(scene, ray, k_depth, rng, count);
+      Rng reference_rng(seed + 1, stream);
+      const Vec2 v = reference_rng.uniform2();
+      const Ray reference_ray =
+          camera.generate_ray(x0 + k_tile_size * v.x, y0 + k_tile_size * v.y);
+      const Color r = reference_radiance(spheres, reference_ray.origin, reference_ray.direction,
+                                         k_depth, reference_rng);
+      for (int c = 0; c < 3; ++c) {
+        ours[c].add(l[c]);
+        reference[c].add(r[c]);
+      }
+    }
+    for (int c = 0; c < 3; ++c) {
+      const double standard_error = std::sqrt(ours[c].variance() / k_samples +
+                                              reference[c].variance() / k_samples);
+      p_min = std::min(p_min, stats::z_test_p_value(ours[c].mean() - reference[c].mean(), 0.0,
+                                                    standard_error));
+      ++tests;
+    }
+  }
+  return -std::expm1(tests * std::log1p(-p_min));  // 1 - (1 - p_min)^tests, without round-off
+}
+
+}  // namespace
