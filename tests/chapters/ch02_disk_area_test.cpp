@@ -1,0 +1,177 @@
+// Chapter 02 as a student runs it: a tiny study, its CSV tables and summary, reproducibility
+// across thread counts, and every kind of bad input.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ball.hpp"
+#include "disk_area.hpp"
+#include "run_program.hpp"
+
+using namespace mcrt::testing;
+
+namespace {
+
+const std::string k_program = "ch02_disk_area";
+const std::string k_tiny = "--max-n 1000 --trials 20 --dims 2,3,7 --ball-n 1000 --points 50";
+
+// A CSV as its header and rows of numbers.
+struct Csv {
+  std::string header;
+  std::vector<std::vector<double>> rows;
+};
+
+Csv read_csv(const std::filesystem::path& path) {
+  std::istringstream text(read_text(path));
+  Csv csv;
+  std::getline(text, csv.header);
+  for (std::string line; std::getline(text, line);) {
+    std::vector<double>& row = csv.rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+  }
+  return csv;
+}
+
+TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
+  const auto dir = fresh_dir("ch02_smoke");
+  const ProgramRun run = run_program(k_program, k_tiny + " --quiet --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.out.empty());  // --quiet
+
+  const Csv disk = read_csv(dir / "disk_area.csv");
+  EXPECT_EQ(disk.header, "n,trials,mean_estimate,bias,empirical_std,theory_std,rmse");
+  // log_grid(10, 1000, 4): 10, 18, 32, 56, 100, 178, 316, 562, 1000.
+  ASSERT_EQ(disk.rows.size(), 9u);
+  EXPECT_EQ(disk.rows.front()[0], 10.0);
+  EXPECT_EQ(disk.rows.back()[0], 1000.0);
+  for (const auto& row : disk.rows) {
+    ASSERT_EQ(row.size(), 7u);
+    EXPECT_EQ(row[1], 20.0);
+    EXPECT_NEAR(row[3], row[2] - mcrt::k_pi, 1e-8);  // bias = mean - pi (10 printed digits)
+    EXPECT_NEAR(row[5], mcrt::disk_area_theory_std(static_cast<std::uint64_t>(row[0])), 1e-9);
+    // rmse^2 = (T-1)/T s^2 + bias^2 exactly, up to the printed digits.
+    EXPECT_NEAR(row[6] * row[6], 19.0 / 20.0 * row[4] * row[4] + row[3] * row[3],
+                1e-8 + 1e-8 * row[6] * row[6]);
+    // Every estimate 4 M / N lies in [0, 4].
+    EXPECT_GE(row[2], 0.0);
+    EXPECT_LE(row[2], 4.0);
+  }
+
+  const Csv ball = read_csv(dir / "ball_volume.csv");
+  EXPECT_EQ(ball.header,
+            "k,n,trials,exact_volume,mean_estimate,empirical_std,theory_std,relative_std");
+  ASSERT_EQ(ball.rows.size(), 3u);
+  const int dims[] = {2, 3, 7};
+  for (int i = 0; i < 3; ++i) {
+    const auto& row = ball.rows[i];
+    EXPECT_EQ(row[0], dims[i]);
+    EXPECT_EQ(row[1], 1000.0);
+    EXPECT_NEAR(row[3], mcrt::unit_ball_volume(dims[i]), 1e-8 * row[3]);
+    EXPECT_NEAR(row[6], mcrt::ball_volume_theory_std(dims[i], 1000), 1e-8 * row[6]);
+    EXPECT_NEAR(row[7], row[6] / row[3], 1e-8 * row[7]);
+  }
+
+  const Csv ball_error = read_csv(dir / "ball_error_vs_n.csv");
+  EXPECT_EQ(ball_error.header, "k,n,trials,mean_estimate,empirical_std,theory_std,rmse");
+  EXPECT_EQ(ball_error.rows.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
+
+  const Csv points = read_csv(dir / "points.csv");
+  EXPECT_EQ(points.header, "x,y,inside");
+  ASSERT_EQ(points.rows.size(), 50u);
+  int inside = 0;
+  for (const auto& p : points.rows) {
+    EXPECT_EQ(p[2], p[0] * p[0] + p[1] * p[1] <= 1.0 ? 1.0 : 0.0);  // 6 digits: none on the edge
+    inside += p[2] > 0;
+  }
+
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["picture"]["estimate"].get<double>(), 4.0 * inside / 50.0);
+  EXPECT_EQ(summary["disk"]["theory_slope"], -0.5);
+  EXPECT_TRUE(summary["disk"]["fitted_slope"].is_number());
+  EXPECT_GT(summary["disk"]["samples_per_second"].get<double>(), 0.0);
+  EXPECT_EQ(summary["disk"]["samples"].get<double>(), 20.0 * (10 + 18 + 32 + 56 + 100 + 178 + 316 + 562 + 1000));
+  EXPECT_EQ(summary["ball"]["fitted_slopes"].size(), 3u);
+  EXPECT_EQ(summary["seed"], 1);
+  EXPECT_EQ(summary["flags"]["trials"], "20");
+  for (const char* name : {"error_vs_n", "points", "ball_error_vs_n"})
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string(name) + ".gp"))) << name;
+}
+
+TEST(Ch02Test, PrintsATableAndHelp) {
+  const auto dir = fresh_dir("ch02_table");
+  const ProgramRun run = run_program(k_program, k_tiny + " --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("slope of log(rmse)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("samples per second"), std::string::npos);
+  const ProgramRun help = run_program(k_program, "--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--max-n", "--trials", "--dims", "--points", "--ball-n", "--seed",
+                           "--threads", "--out", "--quiet"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+TEST(Ch02Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch02_threads1"), two = fresh_dir("ch02_threads2");
+  const std::string flags = k_tiny + " --seed 5 --quiet";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  for (const char* csv : {"disk_area.csv", "ball_volume.csv", "ball_error_vs_n.csv", "points.csv"})
+    EXPECT_EQ(read_text(one / csv), read_text(two / csv)) << csv;
+  const auto other = fresh_dir("ch02_seed6");
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 6 --quiet --out " + other.string()).exit_code, 0);
+  EXPECT_NE(read_text(one / "disk_area.csv"), read_text(other / "disk_area.csv"));
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string flag;  // the message must name it
+};
+
+void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.arguments; }
+
+class Ch02BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Ch02BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
+  const auto dir = fresh_dir("ch02_bad");
+  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, Ch02BadInputTest,
+    ::testing::Values(BadInput{"--max-n 0", "--max-n"}, BadInput{"--max-n ten", "--max-n"},
+                      BadInput{"--max-n -5", "--max-n"}, BadInput{"--trials 1", "--trials"},
+                      BadInput{"--trials 2.5", "--trials"}, BadInput{"--dims 0", "--dims"},
+                      BadInput{"--dims 200", "--dims"}, BadInput{"--dims 2,x", "--dims"},
+                      BadInput{"--points 0", "--points"}, BadInput{"--ball-n 1", "--ball-n"},
+                      BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
+                      BadInput{"--frobnicate", "--frobnicate"},
+                      // 1e12 x 1e5 trials: far too much work, refused with its estimate.
+                      BadInput{"--max-n 1000000000000 --trials 100000", "--max-n"},
+                      BadInput{"--ball-n 1000000000 --trials 1000 --dims 50", "--ball-n"}));
+
+TEST(Ch02Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
+  // A folder without write permission; root ignores permission bits, so as root use a path
+  // under /proc, where nobody can create anything.
+  const auto dir = fresh_dir("ch02_unwritable");
+  const bool root = ::geteuid() == 0;
+  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
+                                        std::filesystem::perms::owner_exec);
+  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);
+}
+
+}  // namespace
