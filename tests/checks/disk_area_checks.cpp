@@ -44,7 +44,7 @@ MCRT_STATISTICAL_CHECK(disk_area_error_slope_is_minus_one_half, k_alpha) {
 }
 
 // The k-ball estimate pooled over the 10 sizes, one trial each (5.3e6 points): relative
-// standard errors 3e-4 (k = 3, q = 0.52) and 2.2e-3 (k = 7, q = 0.037).
+// standard errors 4e-4 (k = 3, q = 0.52) and 2.2e-3 (k = 7, q = 0.037).
 double ball_mean_p_value(int k, std::uint64_t seed) {
   return mcrt::checks::pooled_mean_p_value(
       [k](std::uint64_t n, mcrt::Rng& rng) { return mcrt::estimate_ball_volume(k, n, rng); },
