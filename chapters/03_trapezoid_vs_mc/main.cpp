@@ -87,15 +87,20 @@ double theory_slope(const Study& study, bool trapezoid) {
   return (study.smooth() ? -2.0 : -1.0) / study.dims;
 }
 
-// ---- the work: one task per trapezoid grid and per Monte Carlo trial ----------------------
+// ---- the work: one task per trapezoid grid and per Monte Carlo N -------------------------
 
 struct Task {
   std::size_t study;
   std::size_t grid_index;  // which N (Monte Carlo) or n (trapezoid) of the study
   bool trapezoid;
-  std::uint64_t n;         // points per axis (trapezoid) or samples (Monte Carlo)
-  int trial;               // Monte Carlo only
-  std::uint64_t evaluations;
+  std::uint64_t n;         // points per axis (trapezoid) or samples per trial (Monte Carlo)
+  std::uint64_t evaluations;  // n^k, or trials * N
+};
+
+// What a task finds: T, or the mean of F_N over the trials and their rms error.
+struct TaskResult {
+  double estimate = 0.0;
+  double rmse = 0.0;
 };
 
 // T with n points per axis.
@@ -105,12 +110,19 @@ double run_trapezoid(const Study& study, std::uint64_t n) {
   });
 }
 
-// F_N from generator stream (study, N index, trial) of the seed: the same numbers whatever
-// the thread count.
-double run_monte_carlo(const Study& study, const Task& task, std::uint64_t seed) {
-  Rng rng(seed, stream_index(task.study * 1000 + task.grid_index, static_cast<std::uint64_t>(task.trial)));
+// `trials` independent F_N, trial t from generator stream (study, N index, t) of the seed:
+// the same numbers whatever the thread count. Their mean, and rmse = sqrt(mean (F_N - I)^2).
+TaskResult run_monte_carlo(const Study& study, const Task& task, int trials, std::uint64_t seed) {
   return with_integrand(study, [&](const auto& f, const auto& domain) {
-    return monte_carlo(f, domain, task.n, rng).estimate;
+    const double exact = f.reference();
+    double mean = 0.0, squared_error = 0.0;
+    for (int t = 0; t < trials; ++t) {
+      Rng rng(seed, stream_index(task.study * 1000 + task.grid_index, static_cast<std::uint64_t>(t)));
+      const double f_n = monte_carlo(f, domain, task.n, rng).estimate;
+      mean += f_n / trials;
+      squared_error += (f_n - exact) * (f_n - exact) / trials;
+    }
+    return TaskResult{mean, std::sqrt(squared_error)};
   });
 }
 
@@ -120,7 +132,7 @@ struct Plan {
   std::vector<Study> studies;
   std::vector<std::vector<std::uint64_t>> points_per_axis;  // trapezoid n, per study
   std::vector<std::uint64_t> samples;                        // Monte Carlo N, all studies
-  std::vector<Task> tasks;              // per study: its grids, then each N's trials in order
+  std::vector<Task> tasks;              // per study: its grids n, then its Monte Carlo N
   std::vector<std::size_t> schedule;    // task indices, largest first
   double total_evaluations = 0.0;
 };
@@ -138,23 +150,20 @@ Plan make_plan(const Options& o) {
   plan.studies = {{Kind::gaussian_1d, 1}, {Kind::ceil_sin_1d, 1}};
   for (int k = 1; k <= o.dims; ++k) plan.studies.push_back({Kind::gaussian_kd, k});
   for (int k = 2; k <= o.dims; ++k) plan.studies.push_back({Kind::unit_ball_kd, k});
-
   plan.samples = log_grid(std::min(k_first_monte_carlo_n, o.max_evaluations), o.max_evaluations,
                           k_per_decade);
-  for (std::size_t s = 0; s < plan.studies.size(); ++s) {
-    const int k = plan.studies[s].dims;
+  for (const Study& study : plan.studies)
     plan.points_per_axis.push_back(
-        log_grid(2, points_per_axis_within(o.max_evaluations, k), k_per_decade));
-    for (std::size_t i = 0; i < plan.points_per_axis[s].size(); ++i) {
-      const std::uint64_t n = plan.points_per_axis[s][i];
-      plan.tasks.push_back({s, i, true, n, 0, grid_evaluations(n, k)});
-    }
-    for (std::size_t i = 0; i < plan.samples.size(); ++i)
-      for (int t = 0; t < o.trials; ++t)
-        plan.tasks.push_back({s, i, false, plan.samples[i], t, plan.samples[i]});
+        log_grid(2, points_per_axis_within(o.max_evaluations, study.dims), k_per_decade));
+
+  // The whole study's cost, refused before any work if it is far too much.
+  double monte_carlo_samples = 0.0;
+  for (std::uint64_t n : plan.samples) monte_carlo_samples += static_cast<double>(n);
+  for (std::size_t s = 0; s < plan.studies.size(); ++s) {
+    plan.total_evaluations += o.trials * monte_carlo_samples;
+    for (std::uint64_t n : plan.points_per_axis[s])
+      plan.total_evaluations += static_cast<double>(grid_evaluations(n, plan.studies[s].dims));
   }
-  for (const Task& task : plan.tasks)
-    plan.total_evaluations += static_cast<double>(task.evaluations);
   if (plan.total_evaluations > k_max_total_evaluations) {
     char message[300];
     std::snprintf(message, sizeof message,
@@ -163,6 +172,16 @@ Plan make_plan(const Options& o) {
                   o.trials, static_cast<unsigned long long>(o.max_evaluations), o.dims,
                   plan.total_evaluations, k_max_total_evaluations);
     throw UsageError(message);
+  }
+
+  for (std::size_t s = 0; s < plan.studies.size(); ++s) {
+    const int k = plan.studies[s].dims;
+    for (std::size_t i = 0; i < plan.points_per_axis[s].size(); ++i) {
+      const std::uint64_t n = plan.points_per_axis[s][i];
+      plan.tasks.push_back({s, i, true, n, grid_evaluations(n, k)});
+    }
+    for (std::size_t i = 0; i < plan.samples.size(); ++i)
+      plan.tasks.push_back({s, i, false, plan.samples[i], o.trials * plan.samples[i]});
   }
   // Largest tasks first, so the cores finish together.
   plan.schedule.resize(plan.tasks.size());
@@ -315,15 +334,15 @@ int run(const CLI::App& app, const Options& o) {
 
   // Every task writes only its own result: the same numbers on any number of threads.
   const auto start = std::chrono::steady_clock::now();
-  std::vector<double> results(plan.tasks.size());
+  std::vector<TaskResult> results(plan.tasks.size());
   ProgressBar progress("ch03 integrating", static_cast<std::uint64_t>(plan.total_evaluations),
                        o.common.quiet);
   parallel_for(plan.schedule.size(), o.common.threads, [&](std::size_t j) {
     const std::size_t i = plan.schedule[j];
     const Task& task = plan.tasks[i];
     const Study& study = plan.studies[task.study];
-    results[i] = task.trapezoid ? run_trapezoid(study, task.n)
-                                : run_monte_carlo(study, task, o.common.seed);
+    results[i] = task.trapezoid ? TaskResult{run_trapezoid(study, task.n), 0.0}
+                                : run_monte_carlo(study, task, o.trials, o.common.seed);
     progress.advance(task.evaluations);
   });
   progress.finish();
@@ -332,24 +351,12 @@ int run(const CLI::App& app, const Options& o) {
 
   // The rows, in the plan's order: per study its trapezoid grids, then each Monte Carlo N.
   std::vector<ErrorRow> rows;
-  for (std::size_t i = 0; i < plan.tasks.size();) {
+  for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
     const Task& task = plan.tasks[i];
-    const Study& study = plan.studies[task.study];
-    const double exact = reference(study);
-    if (task.trapezoid) {
-      rows.push_back({task.study, true, task.n, task.evaluations, results[i], exact,
-                      std::abs(results[i] - exact), 0.0});
-      ++i;
-      continue;
-    }
-    // The trials of this N follow each other: their mean and rms error.
-    double mean = 0.0, squared_error = 0.0;
-    for (int t = 0; t < o.trials; ++t, ++i) {
-      mean += results[i] / o.trials;
-      squared_error += (results[i] - exact) * (results[i] - exact) / o.trials;
-    }
-    rows.push_back({task.study, false, 0, task.evaluations, mean, exact, std::abs(mean - exact),
-                    std::sqrt(squared_error)});
+    const double exact = reference(plan.studies[task.study]);
+    rows.push_back({task.study, task.trapezoid, task.trapezoid ? task.n : 0,
+                    task.trapezoid ? task.evaluations : task.n, results[i].estimate, exact,
+                    std::abs(results[i].estimate - exact), results[i].rmse});
   }
   std::vector<SlopeRow> slopes;
   for (std::size_t s = 0; s < plan.studies.size(); ++s)

@@ -1,0 +1,221 @@
+// Chapter 03 as a student runs it: a tiny study, its tables and summary, reproducibility
+// across thread counts, and every kind of bad input.
+
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "integrands.hpp"
+#include "plot.hpp"
+#include "run_program.hpp"
+
+using namespace mcrt::testing;
+
+namespace {
+
+const std::string k_program = "ch03_trapezoid_vs_mc";
+// k up to 3, N up to 3000, 4 trials: about 2e5 evaluations, well under a second.
+const std::string k_tiny = "--trials 4 --max-evaluations 3000 --dims 3 --quiet";
+
+using Row = std::map<std::string, std::string>;
+
+// A CSV with a header row as one map per line (empty fields stay empty strings).
+std::vector<Row> read_csv(const std::filesystem::path& path, std::string* header = nullptr) {
+  std::istringstream text(read_text(path));
+  std::string line;
+  std::getline(text, line);
+  if (header) *header = line;
+  const auto split = [](const std::string& s) {
+    std::vector<std::string> fields;
+    std::string field;
+    std::istringstream stream(s);
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    if (!s.empty() && s.back() == ',') fields.emplace_back();
+    return fields;
+  };
+  const std::vector<std::string> names = split(line);
+  std::vector<Row> rows;
+  while (std::getline(text, line)) {
+    const std::vector<std::string> fields = split(line);
+    EXPECT_EQ(fields.size(), names.size()) << line;
+    Row row;
+    for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double closed_form(const std::string& integrand, int dims) {
+  if (integrand == "gaussian_1d") return mcrt::Gaussian1D{}.reference();
+  if (integrand == "ceil_sin_1d") return mcrt::CeilSinSquare1D{}.reference();
+  if (integrand == "gaussian_kd") return mcrt::GaussianProduct{dims}.reference();
+  if (integrand == "unit_ball_kd") return mcrt::UnitBallIndicator{dims}.reference();
+  ADD_FAILURE() << "unknown integrand " << integrand;
+  return 0.0;
+}
+
+TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
+  const auto dir = fresh_dir("ch03_smoke");
+  const ProgramRun run = run_program(k_program, k_tiny + " --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.out.empty());  // --quiet
+
+  std::string header;
+  const std::vector<Row> errors = read_csv(dir / "errors.csv", &header);
+  EXPECT_EQ(header, "integrand,dims,method,points_per_axis,evaluations,estimate,reference,"
+                    "abs_error,rmse");
+  ASSERT_FALSE(errors.empty());
+  std::map<std::string, int> rows_per_study;
+  for (const Row& r : errors) {
+    const int dims = std::stoi(r.at("dims"));
+    const std::uint64_t evaluations = std::stoull(r.at("evaluations"));
+    rows_per_study[r.at("integrand") + "/" + r.at("dims") + "/" + r.at("method")]++;
+    EXPECT_LE(evaluations, 3000u);
+    // The reference is the closed form, printed to round-trip exactly.
+    EXPECT_EQ(std::stod(r.at("reference")), closed_form(r.at("integrand"), dims));
+    // abs_error = |estimate - reference|, printed to 7 significant digits.
+    const double abs_error = std::abs(std::stod(r.at("estimate")) - std::stod(r.at("reference")));
+    EXPECT_NEAR(std::stod(r.at("abs_error")), abs_error, 1e-6 * abs_error);
+    if (r.at("method") == "trapezoid") {
+      EXPECT_TRUE(r.at("rmse").empty());
+      const double n = std::stod(r.at("points_per_axis"));
+      EXPECT_EQ(static_cast<double>(evaluations), std::pow(n, dims));  // N = n^k
+    } else {
+      ASSERT_EQ(r.at("method"), "monte_carlo");
+      EXPECT_TRUE(r.at("points_per_axis").empty());
+      // The rmse over trials is at least the error of their mean (Jensen), up to printing.
+      EXPECT_GE(std::stod(r.at("rmse")) * (1.0 + 1e-5), std::stod(r.at("abs_error")));
+    }
+  }
+  // gaussian_1d, ceil_sin_1d, gaussian_kd at k = 1..3, unit_ball_kd at k = 2..3; two methods.
+  EXPECT_EQ(rows_per_study.size(), 14u);
+  for (const auto& [study, rows] : rows_per_study) EXPECT_GE(rows, 2) << study;  // a slope needs 2
+
+  const std::vector<Row> slopes = read_csv(dir / "slopes.csv", &header);
+  EXPECT_EQ(header, "integrand,dims,method,fitted_slope,standard_error,theory_slope,points");
+  ASSERT_EQ(slopes.size(), 14u);
+  for (const Row& s : slopes) {
+    const int dims = std::stoi(s.at("dims"));
+    const bool smooth = s.at("integrand").find("gaussian") == 0;
+    const double theory = s.at("method") == "monte_carlo" ? -0.5 : (smooth ? -2.0 : -1.0) / dims;
+    EXPECT_NEAR(std::stod(s.at("theory_slope")), theory, 1e-6) << s.at("integrand") << dims;
+    const std::string key = s.at("integrand") + "/" + s.at("dims") + "/" + s.at("method");
+    EXPECT_LE(std::stoi(s.at("points")), rows_per_study[key]);
+    if (s.at("integrand") == "gaussian_1d" && s.at("method") == "trapezoid") {
+      // Deterministic: n = 2..3000. The error is c/(n-1)^2, so against log n the fit is a
+      // little steeper than -2 (-2.06 here: the local slope is -2n/(n-1)); 0.15 allows that.
+      EXPECT_NEAR(std::stod(s.at("fitted_slope")), -2.0, 0.15);
+    }
+    if (s.at("integrand") == "gaussian_1d" && s.at("method") == "monte_carlo") {
+      // Random: 4 trials at 14 values of N give the slope a standard deviation near 0.06
+      // (log of chi^2_4 / 4 has variance trigamma(2) = 0.64); 0.3 is five of them.
+      EXPECT_NEAR(std::stod(s.at("fitted_slope")), -0.5, 0.3);
+    }
+  }
+
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["chapter"], "ch03_trapezoid_vs_mc");
+  EXPECT_EQ(summary["trials"], 4);
+  EXPECT_EQ(summary["dims"], 3);
+  EXPECT_EQ(summary["max_evaluations"], 3000);
+  EXPECT_EQ(summary["slopes"].size(), 14u);
+  EXPECT_EQ(summary["flags"]["max-evaluations"], "3000");
+  EXPECT_GT(summary["evaluations"].get<double>(), 0.0);
+
+  int expected_files = 3;
+  for (const char* plot : {"smooth_1d", "discontinuous_1d", "disk_2d", "slopes_vs_k"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".gp"))) << plot;
+    ++expected_files;
+    if (mcrt::gnuplot_available()) {
+      EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".png"))) << plot;
+      EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".svg"))) << plot;
+      expected_files += 2;
+    }
+  }
+  EXPECT_EQ(file_count(dir), expected_files);  // no temporaries left behind
+}
+
+TEST(Ch03Test, PrintsTheSlopesTableAndHelp) {
+  const auto dir = fresh_dir("ch03_table");
+  const ProgramRun run = run_program(
+      k_program, "--trials 2 --max-evaluations 100 --dims 2 --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("unit_ball_kd"), std::string::npos) << run.out;
+  const ProgramRun help = run_program(k_program, "--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--trials", "--max-evaluations", "--dims", "--seed", "--threads",
+                           "--out", "--quiet"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+TEST(Ch03Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch03_threads1"), two = fresh_dir("ch03_threads2");
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 5 --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 5 --threads 2 --out " + two.string()).exit_code, 0);
+  EXPECT_EQ(read_text(one / "errors.csv"), read_text(two / "errors.csv"));
+  EXPECT_EQ(read_text(one / "slopes.csv"), read_text(two / "slopes.csv"));
+  const auto other = fresh_dir("ch03_seed6");
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 6 --out " + other.string()).exit_code, 0);
+  EXPECT_NE(read_text(one / "errors.csv"), read_text(other / "errors.csv"));  // Monte Carlo rows
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string flag;  // the message must name it
+};
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
+
+class Ch03BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Ch03BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
+  const auto dir = fresh_dir("ch03_bad");
+  const auto out = dir / "out";
+  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(out));  // refused before creating any output
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, Ch03BadInputTest,
+    ::testing::Values(
+        BadInput{"--dims 0", "--dims"}, BadInput{"--dims 13", "--dims"},
+        BadInput{"--dims two", "--dims"}, BadInput{"--max-evaluations 0", "--max-evaluations"},
+        BadInput{"--max-evaluations -5", "--max-evaluations"},
+        BadInput{"--max-evaluations 1e99x", "--max-evaluations"},
+        BadInput{"--trials abc", "--trials"}, BadInput{"--trials 0", "--trials"},
+        BadInput{"--trials 2.5", "--trials"}, BadInput{"--threads 0", "--threads"},
+        // A grid over the budget: k = 8 needs 3^8 = 6561 evaluations for two grid sizes.
+        BadInput{"--dims 8 --max-evaluations 1000", "6561"},
+        BadInput{"--dims 8 --max-evaluations 1000", "--max-evaluations"},
+        // Far too much work in all: refused at once, with the estimate.
+        BadInput{"--trials 100000 --max-evaluations 1000000000", "--trials"}),
+    [](const ::testing::TestParamInfo<BadInput>& param_info) {
+      std::string name = std::to_string(param_info.index) + "_";
+      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(Ch03Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
+  // A folder without write permission; root ignores permission bits, so as root use a path
+  // under /proc, where nobody can create anything.
+  const auto dir = fresh_dir("ch03_unwritable");
+  const bool root = ::geteuid() == 0;
+  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
+                                        std::filesystem::perms::owner_exec);
+  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);
+}
+
+}  // namespace
