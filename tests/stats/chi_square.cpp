@@ -104,8 +104,7 @@ fs::path write_chi_square_report(const fs::path& dir, const std::string& name,
 
   Plot plot;
   plot.name = name;
-  plot.title = name + ": (observed - expected) / sqrt(expected) on " + grid.name + "; " +
-               result.describe() +
+  plot.title = name + ": " + result.describe() +
                (result.outside > 0 ? "; " + std::to_string(result.outside) + " outside" : "");
   plot.x_label = grid.u_label;
   plot.y_label = grid.v_label;
@@ -114,7 +113,7 @@ fs::path write_chi_square_report(const fs::path& dir, const std::string& name,
            << "set xrange [" << grid.u_min << ":" << grid.u_max << "]\n"
            << "set yrange [" << grid.v_min << ":" << grid.v_max << "]\n"
            << "set cbrange [" << -largest << ":" << largest << "]\n"
-           << "set cblabel 'standardised residual (red: too many samples, blue: too few)'\n"
+           << "set cblabel '(observed - expected) / sqrt(expected): red too many, blue too few'\n"
            << "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
   plot.settings = settings.str();
   // Cell centres as the image's pixel centres; skip the CSV header row.

@@ -29,6 +29,10 @@ double t_test_p_value(double sample_mean, double sample_variance, std::uint64_t 
 }
 
 double variance_test_p_value(double sample_variance, std::uint64_t n, double expected_variance) {
+  if (expected_variance <= 0.0) return sample_variance == 0.0 ? 1.0 : 0.0;
+  // Identical values from a distribution with spread: impossible, so p = 0 (Boost's chi-square
+  // CDF at 0 overflows in its gamma function for large dof instead of returning 0).
+  if (sample_variance <= 0.0) return 0.0;
   const double dof = static_cast<double>(n - 1);
   const double statistic = dof * sample_variance / expected_variance;
   const bm::chi_squared chi2(dof);
