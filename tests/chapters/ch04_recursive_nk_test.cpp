@@ -1,0 +1,254 @@
+// Chapter 04 as a student runs it: a tiny sweep and its tables, exact ray counts in the
+// furnace, reproducibility across thread counts, the --max-rays refusal and bad input.
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "recursive_estimator.hpp"
+#include "run_program.hpp"
+
+using namespace mcrt::testing;
+
+namespace {
+
+const std::string k_program = "ch04_recursive_nk";
+// 8 x 6 pixels, N = 1 and 2, k = 0..2; equal cost at depth 1 with 6 rays per pixel, which
+// buys N = 1 three samples (2 rays each) and N = 2 two samples (3 rays each).
+const std::string k_tiny = "--width 8 --height 6 --spp 1 --branching 2,1 --max-depth 2 "
+                           "--equal-cost-depth 1 --budget 6 --quiet";
+constexpr std::uint64_t k_pixels = 8 * 6;
+
+using Table = std::vector<std::vector<std::string>>;
+
+// The rows of a CSV file, the header row first.
+Table read_csv(const std::filesystem::path& path) {
+  Table rows;
+  std::istringstream lines(read_text(path));
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+std::string header(const Table& table) {
+  std::string text;
+  for (const std::string& cell : table.at(0)) text += (text.empty() ? "" : ",") + cell;
+  return text;
+}
+
+// The CSV without the named columns (timings, which no two runs share).
+std::string without_columns(const Table& table, const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& row : table) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      bool dropped = false;
+      for (const std::string& name : names) dropped |= table[0][c] == name;
+      if (!dropped) text += row[c] + ",";
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+TEST(Ch04Test, TinySweepWritesItsTablesPlotsAndSummary) {
+  const auto dir = fresh_dir("ch04_smoke");
+  const ProgramRun run = run_program(k_program, k_tiny + " --seed 3 --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.out.empty());  // --quiet
+
+  const Table rays = read_csv(dir / "rays.csv");
+  EXPECT_EQ(header(rays),
+            "branching,depth,rays,predicted_max_rays,seconds,rays_per_second,mean_radiance");
+  ASSERT_EQ(rays.size(), 1u + 2 * 3);  // N = 1, 2 (sorted), k = 0, 1, 2
+  double previous_n1_mean = -1.0;
+  for (std::size_t i = 1; i < rays.size(); ++i) {
+    const int n = std::stoi(rays[i][0]), k = std::stoi(rays[i][1]);
+    EXPECT_EQ(n, i <= 3 ? 1 : 2);
+    EXPECT_EQ(k, static_cast<int>((i - 1) % 3));
+    const std::uint64_t traced = std::stoull(rays[i][2]), predicted = std::stoull(rays[i][3]);
+    EXPECT_EQ(predicted, k_pixels * mcrt::max_rays_per_sample(n, k));
+    EXPECT_LE(traced, predicted);
+    if (k == 0) {
+      EXPECT_EQ(traced, k_pixels);  // one camera ray per pixel, counted even if it escapes
+    }
+    EXPECT_GE(std::stod(rays[i][4]), 0.0);
+    const double mean = std::stod(rays[i][6]);
+    EXPECT_TRUE(std::isfinite(mean) && mean >= 0.0) << rays[i][6];
+    if (n == 1) {  // N = 1: one bounce deeper extends the same paths, so never darker
+      EXPECT_GE(mean, previous_n1_mean);
+      previous_n1_mean = mean;
+    }
+  }
+
+  const Table equal_cost = read_csv(dir / "equal_cost.csv");
+  EXPECT_EQ(header(equal_cost),
+            "branching,depth,spp,predicted_rays_per_pixel,rays_per_pixel,seconds,mean_radiance,"
+            "rms_error,relative_rms_error,rms_error_at_budget");
+  ASSERT_EQ(equal_cost.size(), 3u);
+  for (std::size_t i = 1; i < equal_cost.size(); ++i) {
+    const int n = std::stoi(equal_cost[i][0]), spp = std::stoi(equal_cost[i][2]);
+    EXPECT_EQ(std::stoi(equal_cost[i][1]), 1);
+    EXPECT_EQ(spp, n == 1 ? 3 : 2);  // floor(6 / (1 + N))
+    EXPECT_EQ(std::stoull(equal_cost[i][3]), spp * mcrt::max_rays_per_sample(n, 1));
+    EXPECT_LE(std::stod(equal_cost[i][4]), 6.0);
+    EXPECT_GE(std::stod(equal_cost[i][7]), 0.0);
+    EXPECT_TRUE(std::isfinite(std::stod(equal_cost[i][9])));
+  }
+
+  const Table missing = read_csv(dir / "missing_light.csv");
+  EXPECT_EQ(header(missing), "depth,mean_radiance,limit_mean_radiance,missing_fraction");
+  ASSERT_EQ(missing.size(), 4u);
+  for (std::size_t i = 2; i < missing.size(); ++i)  // less light missing one bounce deeper
+    EXPECT_LE(std::stod(missing[i][3]), std::stod(missing[i - 1][3]));
+
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["chapter"], "ch04_recursive_nk");
+  EXPECT_EQ(summary["seed"], 3);
+  EXPECT_EQ(summary["sweep"].size(), 6u);
+  EXPECT_EQ(summary["non_finite_samples"], 0);
+  EXPECT_LE(summary["rays"].get<double>(), summary["predicted_max_rays"].get<double>());
+  const int best = summary["equal_cost"]["best_branching"];
+  EXPECT_TRUE(best == 1 || best == 2);
+  EXPECT_FALSE(summary["equal_cost"]["conclusion"].get<std::string>().empty());
+  EXPECT_EQ(summary["flags"]["max-depth"], "2");
+  for (const char* file : {"grid.png", "rays_vs_depth.gp", "mean_radiance_vs_depth.gp",
+                           "equal_cost.gp"})
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+}
+
+// No ray leaves the furnace: every count is the prediction, exactly.
+TEST(Ch04Test, FurnaceRayCountsEqualThePrediction) {
+  const auto dir = fresh_dir("ch04_furnace");
+  std::string flags = k_tiny;
+  flags.replace(flags.find("--branching 2,1"), 15, "--branching 1,3");
+  const ProgramRun run = run_program(
+      k_program, flags + " --scene furnace --albedo 0.6 --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Table rays = read_csv(dir / "rays.csv");
+  ASSERT_EQ(rays.size(), 7u);
+  for (std::size_t i = 1; i < rays.size(); ++i) EXPECT_EQ(rays[i][2], rays[i][3]);
+}
+
+TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
+  const auto dir = fresh_dir("ch04_table");
+  std::string flags = k_tiny;
+  flags.erase(flags.find(" --quiet"));
+  const ProgramRun run = run_program(k_program, flags + " --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("predicted"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("At equal cost"), std::string::npos) << run.out;
+  const ProgramRun help = run_program(k_program, "--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--branching", "--max-depth", "--max-rays", "--spp", "--budget",
+                           "--equal-cost-depth", "--scene", "--seed", "--threads", "--out"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+TEST(Ch04Test, SameSeedSameOutputsWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch04_threads1"), two = fresh_dir("ch04_threads2");
+  const std::string flags = k_tiny + " --seed 12";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  const std::vector<std::string> timings{"seconds", "rays_per_second"};
+  for (const char* csv : {"rays.csv", "equal_cost.csv"})
+    EXPECT_EQ(without_columns(read_csv(one / csv), timings),
+              without_columns(read_csv(two / csv), timings))
+        << csv;
+  EXPECT_EQ(read_text(one / "missing_light.csv"), read_text(two / "missing_light.csv"));
+  EXPECT_EQ(read_text(one / "grid.png"), read_text(two / "grid.png"));
+  const auto other = fresh_dir("ch04_seed13");
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 13 --out " + other.string()).exit_code, 0);
+  EXPECT_NE(read_text(one / "missing_light.csv"), read_text(other / "missing_light.csv"));
+}
+
+// N = 8 to depth 14 at the default image size is ~6e16 rays, decades of work: a run that
+// started it would never return. The refusal names the flag, the predicted count and the time.
+TEST(Ch04Test, RefusesTooManyRaysBeforeAnyWork) {
+  const auto dir = fresh_dir("ch04_refused");
+  const auto out = dir / "out";
+  const ProgramRun run =
+      run_program(k_program, "--branching 8 --max-depth 14 --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("--max-rays"), std::string::npos) << run.err;
+  const std::size_t count_at = run.err.find("up to ");
+  ASSERT_NE(count_at, std::string::npos) << run.err;
+  EXPECT_GT(std::stod(run.err.substr(count_at + 6)), 1e16) << run.err;  // the predicted count
+  const std::size_t time_at = run.err.find("about ");
+  ASSERT_NE(time_at, std::string::npos) << run.err;
+  EXPECT_GT(std::stod(run.err.substr(time_at + 6)), 1e6) << run.err;  // seconds it would take
+  EXPECT_FALSE(std::filesystem::exists(out));  // refused before creating any output
+
+  // The limit is the flag's value: the tiny run is refused under a limit of 100 rays.
+  const ProgramRun tight = run_program(k_program, k_tiny + " --max-rays 100 --out " + out.string());
+  EXPECT_EQ(tight.exit_code, 2);
+  EXPECT_NE(tight.err.find("--max-rays"), std::string::npos) << tight.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+struct BadInput {
+  std::string arguments;
+  std::string flag;  // the message must name it
+};
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
+
+class Ch04BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Ch04BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
+  const auto dir = fresh_dir("ch04_bad");
+  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, Ch04BadInputTest,
+    ::testing::Values(BadInput{"--branching 0", "--branching"},
+                      BadInput{"--branching 1,0,2", "--branching"},
+                      BadInput{"--branching two", "--branching"},
+                      BadInput{"--branching 1.5", "--branching"},
+                      BadInput{"--max-depth -1", "--max-depth"},
+                      BadInput{"--max-depth three", "--max-depth"},
+                      BadInput{"--max-depth 65", "--max-depth"},
+                      BadInput{"--max-rays lots", "--max-rays"},
+                      BadInput{"--max-rays 0", "--max-rays"},
+                      BadInput{"--spp abc", "--spp"}, BadInput{"--spp 0", "--spp"},
+                      BadInput{"--budget x", "--budget"},
+                      BadInput{"--budget 3 --equal-cost-depth 3", "--budget"},
+                      BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
+                      BadInput{"--width 0", "--width"}, BadInput{"--scene moon", "--scene"},
+                      BadInput{"--threads 0", "--threads"}),
+    [](const ::testing::TestParamInfo<BadInput>& param_info) {
+      std::string name = std::to_string(param_info.index) + "_";
+      for (char c : param_info.param.arguments)
+        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+// A regular file where the output folder should be: exit 1, one line naming the path, and
+// nothing written anywhere.
+TEST(Ch04Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
+  const auto dir = fresh_dir("ch04_unwritable");
+  const auto blocker = dir / "blocker";
+  { std::ofstream(blocker) << "in the way\n"; }
+  const auto out = blocker / "out";
+  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 1);  // the blocker alone
+}
+
+}  // namespace
