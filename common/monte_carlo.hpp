@@ -10,6 +10,7 @@
 /// f(std::span<const double>) on a Box. Random numbers come from the caller's stream, so the
 /// caller decides which stream (trial, pixel) a run uses. Nothing is allocated.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -52,18 +53,26 @@ MonteCarloEstimate monte_carlo(F&& f, const Segment& segment, std::uint64_t n, R
   return detail::finish_estimate(length, sum, sum_of_squares, n);
 }
 
-/// F_N over `box` with n >= 1 samples drawn from `rng` (dims uniforms per sample, axis 0 first).
+/// F_N over `box` with n >= 1 samples drawn from `rng` (dims uniforms per sample, axis 0
+/// first). Samples are drawn a batch at a time, then evaluated (see PointBatch).
 template <class F>
 MonteCarloEstimate monte_carlo(F&& f, const Box& box, std::uint64_t n, Rng& rng) {
-  BoxPoint x{};
-  const auto point = box.coordinates(x);
+  PointBatch batch;
+  batch.dims = box.dims;
   double sum = 0.0, sum_of_squares = 0.0;
-  for (std::uint64_t i = 0; i < n; ++i) {
-    for (int axis = 0; axis < box.dims; ++axis)
-      x[axis] = box.lower[axis] + rng.uniform() * (box.upper[axis] - box.lower[axis]);
-    const double f_x = f(point);
-    sum += f_x;
-    sum_of_squares += f_x * f_x;
+  for (std::uint64_t first = 0; first < n; first += k_point_batch) {
+    const auto count =
+        static_cast<std::size_t>(std::min<std::uint64_t>(k_point_batch, n - first));
+    for (std::size_t j = 0; j < count; ++j) {
+      double* x = batch.point(j);
+      for (int axis = 0; axis < box.dims; ++axis)
+        x[axis] = box.lower[axis] + rng.uniform() * (box.upper[axis] - box.lower[axis]);
+    }
+    for (std::size_t j = 0; j < count; ++j) {
+      const double f_x = f(batch[j]);
+      sum += f_x;
+      sum_of_squares += f_x * f_x;
+    }
   }
   return detail::finish_estimate(box.volume(), sum, sum_of_squares, n);
 }

@@ -12,6 +12,7 @@
 /// The integrand is any callable, inlined into the loop: f(double) on a Segment,
 /// f(std::span<const double>) on a Box. Nothing is allocated.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -54,15 +55,23 @@ double trapezoid(F&& f, const Box& box, std::uint64_t n) {
   const auto end_weight = [n](std::uint64_t i) { return i == 0 || i + 1 == n ? 0.5 : 1.0; };
 
   std::array<std::uint64_t, k_max_box_dims> index{};
-  BoxPoint x = box.lower;
-  const std::span<const double> point = box.coordinates(x);
+  BoxPoint outer = box.lower;  // the current line's coordinates on axes 1..k-1
+  PointBatch batch;
+  batch.dims = k;
   CompensatedSum total;
   while (true) {
-    // One line along axis 0: h_0 sum_i w_i f(x_i, x_outer).
+    // One line along axis 0: h_0 sum_i w_i f(x_i, x_outer), its points written a batch at a
+    // time, then evaluated (see PointBatch).
     CompensatedSum line;
-    for (std::uint64_t i = 0; i < n; ++i) {
-      x[0] = grid_point(box.lower[0], box.upper[0], i, n);
-      line.add(end_weight(i) * f(point));
+    for (std::uint64_t first = 0; first < n; first += k_point_batch) {
+      const auto count =
+          static_cast<std::size_t>(std::min<std::uint64_t>(k_point_batch, n - first));
+      for (std::size_t j = 0; j < count; ++j) {
+        double* point = batch.point(j);
+        point[0] = grid_point(box.lower[0], box.upper[0], first + j, n);
+        for (int axis = 1; axis < k; ++axis) point[axis] = outer[axis];
+      }
+      for (std::size_t j = 0; j < count; ++j) line.add(end_weight(first + j) * f(batch[j]));
     }
     double outer_weight = h[0];
     for (int axis = 1; axis < k; ++axis) outer_weight *= end_weight(index[axis]) * h[axis];
@@ -71,11 +80,11 @@ double trapezoid(F&& f, const Box& box, std::uint64_t n) {
     int axis = 1;  // odometer over axes 1..k-1
     for (; axis < k; ++axis) {
       if (++index[axis] < n) {
-        x[axis] = grid_point(box.lower[axis], box.upper[axis], index[axis], n);
+        outer[axis] = grid_point(box.lower[axis], box.upper[axis], index[axis], n);
         break;
       }
       index[axis] = 0;
-      x[axis] = box.lower[axis];
+      outer[axis] = box.lower[axis];
     }
     if (axis >= k) return total.value();
   }
