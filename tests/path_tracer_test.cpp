@@ -256,17 +256,17 @@ TEST(PathTracerTest, FurnaceTestRejectsKnownWrongTracers) {
   const int n = 40000;  // as in tests/checks/path_tracer_checks.cpp
   // The right tracer passes at this seed (its false-failure rate is 1e-4)...
   EXPECT_GE(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, mcrt::testing::chapter_path_tracer)),
+                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, mcrt::testing::chapter_path_tracer)),
             1e-4);
   // ... and every wrong one is rejected.
   EXPECT_LT(mcrt::testing::furnace_mean_p_value(setup,
-                                          mcrt::testing::furnace_samples(setup, n, seed, without_cosine)),
+                                          mcrt::testing::furnace_samples(setup, n, seed, 1, without_cosine)),
             1e-4);
   EXPECT_LT(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, pdf_of_the_sphere)),
+                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, pdf_of_the_sphere)),
             1e-4);
   EXPECT_LT(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, cosine_directions_uniform_weights)),
+                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, cosine_directions_uniform_weights)),
             1e-4);
 }
 

@@ -4,7 +4,8 @@
 //    several a and k) and its variance is furnace_radiance_variance (z-tests of the sample
 //    variance);
 //  - the RMS error of an image falls as spp^-1/2 (a z-test of the fitted slope);
-//  - cornell-spheres agrees, tile by tile, with a path tracer written here from scratch.
+//  - cornell-spheres agrees, tile by tile and in every channel, with a path tracer written
+//    here from scratch.
 // Every check is designed for a false-failure rate alpha = 1e-4.
 
 #include <algorithm>
@@ -31,15 +32,13 @@ using mcrt::testing::FurnaceSetup;
 
 constexpr int k_furnace_paths = 40000;
 
-double furnace_mean_check(std::uint64_t seed, std::uint64_t stream_seed_offset,
-                          const FurnaceSetup& setup) {
-  const RunningStats samples = mcrt::testing::furnace_samples(setup, k_furnace_paths,
-                                                        seed + stream_seed_offset,
-                                                        mcrt::testing::chapter_path_tracer);
+double furnace_mean_check(std::uint64_t seed, std::uint64_t block, const FurnaceSetup& setup) {
+  const RunningStats samples = mcrt::testing::furnace_samples(
+      setup, k_furnace_paths, seed, block, mcrt::testing::chapter_path_tracer);
   return mcrt::testing::furnace_mean_p_value(setup, samples);
 }
 
-// A different seed offset per check keeps the checks independent of each other.
+// A different block of streams per check keeps the checks independent of each other.
 MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a05_k1, 1e-4) {
   return furnace_mean_check(seed, 1, {0.5, 1.0, 1});
 }
@@ -63,11 +62,11 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a02_k2, 1e-4) {
 // the samples are bounded, so every moment exists). At n = 4e4 the sample variance is close
 // to normal (CLT), so a z-test on it holds its false-failure rate.
 
-double furnace_variance_check(std::uint64_t seed, std::uint64_t stream_seed_offset,
+double furnace_variance_check(std::uint64_t seed, std::uint64_t block,
                               const FurnaceSetup& setup) {
   std::vector<double> x;
   x.reserve(k_furnace_paths);
-  mcrt::testing::furnace_samples(setup, k_furnace_paths, seed + stream_seed_offset,
+  mcrt::testing::furnace_samples(setup, k_furnace_paths, seed, block,
                            [&](const Scene& s, const Ray& ray, int depth, Rng& rng,
                                RayCount& count) {
                              const Color c = estimate_path_radiance(s, ray, depth, rng, count);
@@ -111,21 +110,39 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a09_k8, 1e-4) {
 // are independent. The log's bias (-v/2, Jensen) differs between levels by about 1e-3 in the
 // slope, far below its standard error (about 0.02).
 
+// Each pixel value is the mean of `spp` paths through jittered points of the pixel, as in
+// mcrt::render, but with scrambled streams (independent_stream): with render's consecutive
+// streams the pixels' errors are correlated and the variance v above would be wrong.
+Image render_independent(const Camera& camera, const Scene& scene, int depth, int spp,
+                         std::uint64_t first_sample, std::uint64_t seed) {
+  Image image(camera.width(), camera.height());
+  RayCount count;
+  for (int y = 0; y < camera.height(); ++y) {
+    for (int x = 0; x < camera.width(); ++x) {
+      const std::uint64_t pixel = static_cast<std::uint64_t>(y) * camera.width() + x;
+      Color sum(0.0);
+      for (int s = 0; s < spp; ++s) {
+        Rng rng(seed, mcrt::testing::independent_stream(stream_index(pixel, first_sample + s)));
+        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+        sum += estimate_path_radiance(scene, ray, depth, rng, count);
+      }
+      image.at(x, y) = sum / static_cast<double>(spp);
+    }
+  }
+  return image;
+}
+
 MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
   const Scene scene = make_cornell_spheres();
   const Camera camera(scene.camera, 32, 24);
   const int depth = 4;
-  auto path_radiance = [&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_path_radiance(scene, ray, depth, rng, count);
-  };
   double sum_w = 0.0, sum_wx = 0.0, sum_wy = 0.0, sum_wxx = 0.0, sum_wxy = 0.0;
   std::uint64_t first_sample = 0;
   for (int spp : {4, 8, 16, 32, 64}) {
-    RenderSettings settings{spp, first_sample, seed, 1, nullptr};
-    const Image a = render(camera, settings, path_radiance).image;
-    settings.first_sample += static_cast<std::uint64_t>(spp);
-    const Image b = render(camera, settings, path_radiance).image;
-    first_sample = settings.first_sample + static_cast<std::uint64_t>(spp);
+    const auto n = static_cast<std::uint64_t>(spp);
+    const Image a = render_independent(camera, scene, depth, spp, first_sample, seed);
+    const Image b = render_independent(camera, scene, depth, spp, first_sample + n, seed);
+    first_sample += 2 * n;
 
     RunningStats d;
     for (std::size_t p = 0; p < a.pixels.size(); ++p) {
@@ -213,13 +230,31 @@ Color reference_radiance(const std::vector<ReferenceSphere>& spheres, Vec3 o, Ve
 }
 
 // Tiles of the image: every sample picks a uniformly random point of its tile, so the mean of
-// a tile's samples estimates the tile's mean radiance with the plain sample variance. Two
-// renderers, n samples per tile each: the difference of means over its standard error
-// sqrt(s1^2/n + s2^2/n) is standard normal (n = 1.5e4, CLT) if both are unbiased. One test per
-// tile and channel, 6 x 3 = 18 in all; Sidak correction to a family-wise rate of 1e-4 (exact
-// for independent tests and conservative for the channels' positive correlation: Sidak's
-// inequality for two-sided normal tests). Returns the smallest p-value rescaled to the family,
-// 1 - (1 - p_min)^18, so the check's own alpha is the family-wise rate.
+// a tile's samples estimates the tile's mean radiance (RGB) with the plain sample covariance.
+// Two renderers, n samples per tile each: the difference d of their mean colours has
+// covariance S = C1/n + C2/n, and d' S^-1 d is chi-square with 3 degrees of freedom if both
+// are unbiased (n = 1.5e4: CLT, and S is estimated to about 1%). The tiles' samples are
+// independent, so the Sidak correction over the 6 tiles is exact: the check returns the
+// smallest tile p-value rescaled to the family, 1 - (1 - p_min)^6, and its alpha is the
+// family-wise false-failure rate.
+struct ColorMoments {
+  double n = 0.0;
+  Vec3 sum{0.0};
+  glm::dmat3 sum_outer{0.0};
+  void add(const Color& c) {
+    n += 1.0;
+    sum += c;
+    sum_outer += glm::outerProduct(c, c);
+  }
+  Vec3 mean() const { return sum / n; }
+  // Covariance of the mean: the sample covariance over n.
+  glm::dmat3 covariance_of_mean() const {
+    const glm::dmat3 covariance =
+        (sum_outer - glm::outerProduct(sum, sum) / n) / (n - 1.0);
+    return covariance / n;
+  }
+};
+
 MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
   const Scene scene = make_cornell_spheres();
   std::vector<ReferenceSphere> spheres;
@@ -227,40 +262,34 @@ MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_sphe
     spheres.push_back({s.center, s.radius, scene.materials[s.material].albedo,
                        scene.materials[s.material].emission});
   constexpr int k_tiles_x = 3, k_tiles_y = 2, k_tile_size = 16, k_samples = 15000, k_depth = 4;
+  constexpr int k_tiles = k_tiles_x * k_tiles_y;
   const Camera camera(scene.camera, k_tiles_x * k_tile_size, k_tiles_y * k_tile_size);
 
   double p_min = 1.0;
-  int tests = 0;
-  for (int tile = 0; tile < k_tiles_x * k_tiles_y; ++tile) {
+  for (int tile = 0; tile < k_tiles; ++tile) {
     const double x0 = (tile % k_tiles_x) * k_tile_size, y0 = (tile / k_tiles_x) * k_tile_size;
-    RunningStats ours[3], reference[3];
+    ColorMoments ours, reference;
     RayCount count;
     for (int i = 0; i < k_samples; ++i) {
-      const std::uint64_t stream = stream_index(static_cast<std::uint64_t>(tile), i);
-      Rng rng(seed, stream);
+      // Streams (2 tile, i) for the path tracer, (2 tile + 1, i) for the reference.
+      const auto block = 2 * static_cast<std::uint64_t>(tile);
+      Rng rng(seed, mcrt::testing::independent_stream(stream_index(block, i)));
       const Vec2 u = rng.uniform2();
       const Ray ray = camera.generate_ray(x0 + k_tile_size * u.x, y0 + k_tile_size * u.y);
-      const Color l = estimate_path_radiance(scene, ray, k_depth, rng, count);
-      Rng reference_rng(seed + 1, stream);
+      ours.add(estimate_path_radiance(scene, ray, k_depth, rng, count));
+      Rng reference_rng(seed, mcrt::testing::independent_stream(stream_index(block + 1, i)));
       const Vec2 v = reference_rng.uniform2();
       const Ray reference_ray =
           camera.generate_ray(x0 + k_tile_size * v.x, y0 + k_tile_size * v.y);
-      const Color r = reference_radiance(spheres, reference_ray.origin, reference_ray.direction,
-                                         k_depth, reference_rng);
-      for (int c = 0; c < 3; ++c) {
-        ours[c].add(l[c]);
-        reference[c].add(r[c]);
-      }
+      reference.add(reference_radiance(spheres, reference_ray.origin, reference_ray.direction,
+                                       k_depth, reference_rng));
     }
-    for (int c = 0; c < 3; ++c) {
-      const double standard_error = std::sqrt(ours[c].variance() / k_samples +
-                                              reference[c].variance() / k_samples);
-      p_min = std::min(p_min, stats::z_test_p_value(ours[c].mean() - reference[c].mean(), 0.0,
-                                                    standard_error));
-      ++tests;
-    }
+    const Vec3 d = ours.mean() - reference.mean();
+    const glm::dmat3 s = ours.covariance_of_mean() + reference.covariance_of_mean();
+    const double chi_square = glm::dot(d, glm::inverse(s) * d);
+    p_min = std::min(p_min, stats::chi_square_upper_tail(chi_square, 3.0));
   }
-  return -std::expm1(tests * std::log1p(-p_min));  // 1 - (1 - p_min)^tests, without round-off
+  return -std::expm1(k_tiles * std::log1p(-p_min));  // 1 - (1 - p_min)^tiles, without round-off
 }
 
 }  // namespace
