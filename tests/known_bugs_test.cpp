@@ -52,9 +52,9 @@ Vec2 disk_with_radius_u(Vec2 u) {
 }
 
 TEST_F(KnownBugsTest, DiskSamplerWithRadiusUIsRejected) {
-  EXPECT_GE(disk_sampler_p_value(sample_uniform_disk, disk_pdf, k_seed, "right_disk"),
+  EXPECT_GE(disk_sampler_p_value(sample_uniform_disk, disk_pdf, k_seed, k_disk_stream, "right"),
             k_sampler_alpha);
-  EXPECT_LT(disk_sampler_p_value(disk_with_radius_u, disk_pdf, k_seed, "disk_r_equals_u"),
+  EXPECT_LT(disk_sampler_p_value(disk_with_radius_u, disk_pdf, k_seed, k_disk_stream, "wrong"),
             k_sampler_alpha);
 }
 
@@ -64,10 +64,10 @@ double hemisphere_pdf_one_over_pi(const Vec3&) { return k_inv_pi; }
 
 TEST_F(KnownBugsTest, HemisphereSamplerWhosePdfClaimsOneOverPiIsRejected) {
   EXPECT_GE(hemisphere_sampler_p_value(sample_uniform_hemisphere, uniform_hemisphere_pdf_at,
-                                       k_seed, "right_hemisphere"),
+                                       k_seed, k_uniform_hemisphere_stream, "right"),
             k_sampler_alpha);
   EXPECT_LT(hemisphere_sampler_p_value(sample_uniform_hemisphere, hemisphere_pdf_one_over_pi,
-                                       k_seed, "hemisphere_pdf_one_over_pi"),
+                                       k_seed, k_uniform_hemisphere_stream, "wrong"),
             k_sampler_alpha);
 }
 
@@ -77,10 +77,10 @@ double cosine_pdf_times_two(const Vec3& w) { return 2.0 * w.z * k_inv_pi; }
 
 TEST_F(KnownBugsTest, CosineSamplerWithAnExtraFactorTwoIsRejected) {
   EXPECT_GE(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_hemisphere_pdf_at,
-                                       k_seed, "right_cosine"),
+                                       k_seed, k_cosine_hemisphere_stream, "right"),
             k_sampler_alpha);
   EXPECT_LT(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_pdf_times_two, k_seed,
-                                       "cosine_pdf_times_two"),
+                                       k_cosine_hemisphere_stream, "wrong"),
             k_sampler_alpha);
 }
 
@@ -89,7 +89,7 @@ TEST_F(KnownBugsTest, CosineSamplerWithAnExtraFactorTwoIsRejected) {
 TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
   const Binning<Vec2> binning = sampler_disk_binning();
   const ChiSquareResult r = chi_square_sampler_test(disk_with_radius_u, disk_pdf, binning,
-                                                    k_seed, k_sampler_samples);
+                                                    k_seed, k_sampler_samples, k_disk_stream);
   double inner_observed = 0.0, inner_expected = 0.0, outer_observed = 0.0, outer_expected = 0.0;
   for (const CellCount& c : r.cells) {
     if (c.u_index == 0) inner_observed += c.observed, inner_expected += c.expected;
@@ -131,7 +131,7 @@ TEST_F(KnownBugsTest, PathWeightMissingTheCosineIsRejected) {
   constexpr int k_paths = 40000;
   const auto p = [&](auto tracer) {
     return mcrt::testing::furnace_mean_p_value(
-        setup, mcrt::testing::furnace_samples(setup, k_paths, k_seed + 2, tracer));
+        setup, mcrt::testing::furnace_samples(setup, k_paths, k_seed, 2, tracer));
   };
   EXPECT_GE(p(mcrt::testing::chapter_path_tracer), 1e-4);
   EXPECT_LT(p(path_radiance_without_cosine), 1e-4);

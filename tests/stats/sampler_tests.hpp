@@ -15,6 +15,15 @@
 
 namespace mcrt::stats {
 
+/// Each sampler's test draws from its own generator stream (with the suite's seed), so the
+/// tests are independent of each other: the disk's (r^2, phi) and the hemisphere's
+/// (phi, cos theta) cells cut the square of uniforms u alike, and on one stream the two tests
+/// would see the same counts.
+inline constexpr std::uint64_t k_square_stream = 1;
+inline constexpr std::uint64_t k_disk_stream = 2;
+inline constexpr std::uint64_t k_uniform_hemisphere_stream = 3;
+inline constexpr std::uint64_t k_cosine_hemisphere_stream = 4;
+
 /// Designed false-failure rate of one sampler test.
 inline constexpr double k_sampler_alpha = 1e-4;
 /// Points drawn per sampler test.
@@ -28,29 +37,29 @@ inline Binning<Vec2> sampler_disk_binning() { return disk_binning(11, 21); }
 inline Binning<Vec3> sampler_hemisphere_binning() { return hemisphere_binning(21, 11); }
 
 /// Chi-square p-value of a sampler Vec2(Vec2 u) on the square [-1,1]^2 against its pdf
-/// double(Vec2 x); on failure a report named `name` is written.
+/// double(Vec2 x), u drawn from Rng(seed, stream); on failure a report named `name` is written.
 template <class Sampler, class Pdf>
 double square_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::uint64_t seed,
-                              const std::string& name) {
+                              std::uint64_t stream, const std::string& name) {
   return chi_square_sampler_p_value(sample, pdf, sampler_square_binning(), seed,
-                                    {name, k_sampler_samples, 0, k_sampler_alpha});
+                                    {name, k_sampler_samples, stream, k_sampler_alpha});
 }
 
 /// The same for a sampler of the unit disk.
 template <class Sampler, class Pdf>
 double disk_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::uint64_t seed,
-                            const std::string& name) {
+                            std::uint64_t stream, const std::string& name) {
   return chi_square_sampler_p_value(sample, pdf, sampler_disk_binning(), seed,
-                                    {name, k_sampler_samples, 0, k_sampler_alpha});
+                                    {name, k_sampler_samples, stream, k_sampler_alpha});
 }
 
 /// The same for a sampler of directions Vec3(Vec2 u) on the hemisphere around +z, against
 /// its pdf double(Vec3 w) per steradian.
 template <class Sampler, class Pdf>
 double hemisphere_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::uint64_t seed,
-                                  const std::string& name) {
+                                  std::uint64_t stream, const std::string& name) {
   return chi_square_sampler_p_value(sample, pdf, sampler_hemisphere_binning(), seed,
-                                    {name, k_sampler_samples, 0, k_sampler_alpha});
+                                    {name, k_sampler_samples, stream, k_sampler_alpha});
 }
 
 }  // namespace mcrt::stats
