@@ -39,7 +39,8 @@ double trapezoid(F&& f, const Segment& segment, std::uint64_t n) {
   const double h = segment.length() / static_cast<double>(n - 1);
   CompensatedSum sum;
   sum.add(0.5 * f(segment.lower));
-  for (std::uint64_t i = 1; i + 1 < n; ++i) sum.add(f(grid_point(segment.lower, segment.upper, i, n)));
+  for (std::uint64_t i = 1; i + 1 < n; ++i)
+    sum.add(f(grid_point(segment.lower, segment.upper, i, n)));
   sum.add(0.5 * f(segment.upper));
   return h * sum.value();
 }

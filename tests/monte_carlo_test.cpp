@@ -82,7 +82,8 @@ TEST(MonteCarlo, EstimateAndStandardErrorFromTheSameSamples) {
   Rng rng(21, 4), replay(21, 4);
   const auto result = mcrt::monte_carlo(f, f.domain, n, rng);
   mcrt::RunningStats stats;
-  for (std::uint64_t i = 0; i < n; ++i) stats.add(f(f.domain.lower + replay.uniform() * f.domain.length()));
+  for (std::uint64_t i = 0; i < n; ++i)
+    stats.add(f(f.domain.lower + replay.uniform() * f.domain.length()));
   const double vol = f.domain.length();
   EXPECT_NEAR(result.estimate, vol * stats.mean(), 1e-12 * std::abs(vol * stats.mean()));
   EXPECT_NEAR(result.standard_error, vol * stats.standard_error(),

@@ -27,7 +27,8 @@ TEST(Trapezoid1D, ExactForLinearFunctions) {
   const Segment segment{-1.0, 2.5};
   // integral of 3x - 2 = 3/2 (b^2 - a^2) - 2 (b - a)
   const double exact = 1.5 * (2.5 * 2.5 - 1.0) - 2.0 * 3.5;
-  for (std::uint64_t n : {2, 3, 7, 1000}) EXPECT_NEAR(mcrt::trapezoid(f, segment, n), exact, k_roundoff * 10.0) << n;
+  for (std::uint64_t n : {2, 3, 7, 1000})
+    EXPECT_NEAR(mcrt::trapezoid(f, segment, n), exact, k_roundoff * 10.0) << n;
 }
 
 TEST(TrapezoidBox, ExactForMultilinearFunctions) {

@@ -47,8 +47,12 @@ void BM_TrapezoidStdFunction(benchmark::State& state) {
     benchmark::DoNotOptimize(mcrt::trapezoid(erased, f.domain(), k_points_per_axis));
   evaluation_rate(state, mcrt::grid_evaluations(k_points_per_axis, k_dims));
 }
-BENCHMARK(BM_TrapezoidStdFunction<mcrt::GaussianProduct>)->Unit(benchmark::kMillisecond)->MinTime(0.5);
-BENCHMARK(BM_TrapezoidStdFunction<mcrt::UnitBallIndicator>)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_TrapezoidStdFunction<mcrt::GaussianProduct>)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
+BENCHMARK(BM_TrapezoidStdFunction<mcrt::UnitBallIndicator>)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
 
 template <class Integrand>
 void BM_MonteCarlo(benchmark::State& state) {
@@ -74,7 +78,11 @@ void BM_MonteCarloStdFunction(benchmark::State& state) {
   }
   evaluation_rate(state, k_samples);
 }
-BENCHMARK(BM_MonteCarloStdFunction<mcrt::GaussianProduct>)->Unit(benchmark::kMillisecond)->MinTime(0.5);
-BENCHMARK(BM_MonteCarloStdFunction<mcrt::UnitBallIndicator>)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_MonteCarloStdFunction<mcrt::GaussianProduct>)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
+BENCHMARK(BM_MonteCarloStdFunction<mcrt::UnitBallIndicator>)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
 
 }  // namespace

@@ -155,8 +155,9 @@ TEST(Ch03Test, PrintsTheSlopesTableAndHelp) {
 
 TEST(Ch03Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   const auto one = fresh_dir("ch03_threads1"), two = fresh_dir("ch03_threads2");
-  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 5 --threads 1 --out " + one.string()).exit_code, 0);
-  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 5 --threads 2 --out " + two.string()).exit_code, 0);
+  const std::string flags = k_tiny + " --seed 5";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
   EXPECT_EQ(read_text(one / "errors.csv"), read_text(two / "errors.csv"));
   EXPECT_EQ(read_text(one / "slopes.csv"), read_text(two / "slopes.csv"));
   const auto other = fresh_dir("ch03_seed6");
@@ -198,7 +199,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--trials 100000 --max-evaluations 1000000000", "--trials"}),
     [](const ::testing::TestParamInfo<BadInput>& param_info) {
       std::string name = std::to_string(param_info.index) + "_";
-      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      for (char c : param_info.param.arguments)
+        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
       return name;
     });
 
