@@ -106,7 +106,7 @@ void check_plan(const Options& o, const Plan& plan) {
     const double seconds =
         plan.predicted_rays / (k_estimated_rays_per_second_per_thread * o.common.threads);
     throw UsageError(format(
-        "--max-rays: this run would trace up to %.3g rays (sweep, limit and equal-cost "
+        "--max-rays: this run would trace up to %.3g rays (sweep, missing-light and equal-cost "
         "renders), about %.3g s at an estimated %.3g rays/s per thread on %d threads, above "
         "the limit of %.3g; lower --max-depth, --branching, --spp, --budget or the image size, "
         "or raise --max-rays",
@@ -231,7 +231,9 @@ void write_plots(const Options& o, double limit, int limit_depth) {
   write_plot(o.common.out,
              {"equal_cost",
               format("Equal cost: %d rays per pixel at depth %d", o.budget, o.equal_cost_depth),
-              "branching N", "RMS error at the budget", true, true, "set key top left\n",
+              "branching N", "RMS error at the budget", true, true,
+              "set key top left\nset format x '%g'\nset xtics (" + join(o.branching, ", ") +
+                  ")\n" + format("set xrange [0.8:%g]\n", 1.25 * o.branching.back()),
               "plot 'equal_cost.csv' using 1:10 with linespoints pt 7 lw 2 title 'RMS error'"});
 }
 

@@ -10,7 +10,11 @@
 // most 9.5 here, measured on 2e5 samples), and the skewness of the mean falls as 1/sqrt(n): the p-value at the alpha = 1e-4
 // boundary (|t| = 3.9) is off by a few tens of percent of alpha at most, not by orders of
 // magnitude. The variance checks rest on the same argument one moment higher (s^2 is itself a
-// mean of squared deviations, its own variance estimated from the fourth moment).
+// mean of squared deviations), tested on the log scale with the samples' kurtosis
+// (recursive_furnace.hpp). Calibrated over 400 seeds (means) and 600 seeds (variances): every
+// check's p-values pass a Kolmogorov-Smirnov test of uniformity at 1 %; the means reject at
+// p < 0.05 in 4.4 % of the runs, the variances in 5.9 % (107 of 1800: slightly liberal, by a
+// factor that at the 1e-4 tail may reach 2 or 3, still a false-failure rate below 1e-3).
 
 #include "check.hpp"
 #include "recursive_furnace.hpp"
