@@ -36,10 +36,11 @@ struct Options {
   CommonOptions common;
   int trials = 16;                          // Monte Carlo runs per N: rmse over these
   std::uint64_t max_evaluations = 1 << 20;  // N of the largest point of every study
-  int dims = 8;                             // k-dimensional integrands at k = 1 (2) .. dims
+  std::vector<int> dims = {1, 2, 3, 4, 5, 6, 7, 8};  // the k of the k-dimensional integrands
 };
 
 constexpr int k_max_dims = 12;                     // 3^12 = 531441 evaluations at least
+constexpr int k_disk_dims = 2;                     // the lecture's disk, always studied
 constexpr std::uint64_t k_max_budget = 1'000'000'000;
 constexpr double k_max_total_evaluations = 2e11;   // about 20 minutes on 2 cores
 constexpr int k_per_decade = 5;                    // grid points per factor of 10 in N or n
@@ -139,19 +140,34 @@ struct Plan {
   double total_evaluations = 0.0;
 };
 
+// The k of --dims, sorted, each once.
+std::vector<int> sorted_dims(const Options& o) {
+  std::vector<int> dims = o.dims;
+  std::sort(dims.begin(), dims.end());
+  dims.erase(std::unique(dims.begin(), dims.end()), dims.end());
+  return dims;
+}
+
 Plan make_plan(const Options& o) {
+  const std::vector<int> dims = sorted_dims(o);
   // A slope needs two grid sizes, n = 2 and 3 points per axis, at the largest k.
-  const std::uint64_t smallest_grid = grid_evaluations(3, o.dims);
+  const int largest = std::max(dims.back(), k_disk_dims);
+  const std::uint64_t smallest_grid = grid_evaluations(3, largest);
   if (smallest_grid > o.max_evaluations)
     throw UsageError("--max-evaluations " + std::to_string(o.max_evaluations) +
                      " is below the smallest trapezoid study at --dims " +
-                     std::to_string(o.dims) + ": n = 2 and 3 points per axis need 3^" +
-                     std::to_string(o.dims) + " = " + std::to_string(smallest_grid) +
+                     std::to_string(largest) + ": n = 2 and 3 points per axis need 3^" +
+                     std::to_string(largest) + " = " + std::to_string(smallest_grid) +
                      " evaluations; raise --max-evaluations or lower --dims");
   Plan plan;
   plan.studies = {{Kind::gaussian_1d, 1}, {Kind::ceil_sin_1d, 1}};
-  for (int k = 1; k <= o.dims; ++k) plan.studies.push_back({Kind::gaussian_kd, k});
-  for (int k = 2; k <= o.dims; ++k) plan.studies.push_back({Kind::unit_ball_kd, k});
+  for (int k : dims) plan.studies.push_back({Kind::gaussian_kd, k});
+  // The ball at every k >= 2 of --dims, and always at k = 2: the disk. (At k = 1 it would
+  // be the whole interval [-1, 1], nothing to study.)
+  if (!std::binary_search(dims.begin(), dims.end(), k_disk_dims))
+    plan.studies.push_back({Kind::unit_ball_kd, k_disk_dims});
+  for (int k : dims)
+    if (k >= 2) plan.studies.push_back({Kind::unit_ball_kd, k});
   plan.samples = log_grid(std::min(k_first_monte_carlo_n, o.max_evaluations), o.max_evaluations,
                           k_per_decade);
   for (const Study& study : plan.studies)
@@ -169,9 +185,9 @@ Plan make_plan(const Options& o) {
   if (plan.total_evaluations > k_max_total_evaluations) {
     char message[300];
     std::snprintf(message, sizeof message,
-                  "--trials %d with --max-evaluations %llu and --dims %d: %.3g evaluations in "
+                  "--trials %d with --max-evaluations %llu and %zu --dims: %.3g evaluations in "
                   "all, above the limit of %.3g; lower one of them",
-                  o.trials, static_cast<unsigned long long>(o.max_evaluations), o.dims,
+                  o.trials, static_cast<unsigned long long>(o.max_evaluations), dims.size(),
                   plan.total_evaluations, k_max_total_evaluations);
     throw UsageError(message);
   }
@@ -302,7 +318,7 @@ Plot error_plot(const std::string& name, const std::string& title, const Study& 
 
 // Fitted slope against k for both k-dimensional integrands and both methods, with the
 // theory: -2/k and -1/k for the trapezoid rule, -1/2 for Monte Carlo.
-Plot slopes_plot(int max_dims) {
+Plot slopes_plot(int largest_dims) {
   const auto series = [](const std::string& integrand, const std::string& method) {
     return "every ::1 using 2:(strcol(1) eq '" + integrand + "' && strcol(3) eq '" + method +
            "' ? $4 : 1/0):5 with yerrorlines";
@@ -312,7 +328,7 @@ Plot slopes_plot(int max_dims) {
   plot.title = "Fitted slope of log(error) against log(N), by dimension k";
   plot.x_label = "dimension k";
   plot.y_label = "slope";
-  plot.settings = "set key bottom right\nset xrange [0.5:" + std::to_string(max_dims) +
+  plot.settings = "set key bottom right\nset xrange [0.5:" + std::to_string(largest_dims) +
                   ".5]\nset yrange [-2.2:0.3]\nset xtics 1\nset samples 400\n";
   plot.plot = "plot 'slopes.csv' " + series("gaussian_kd", "trapezoid") +
               " pt 7 lc rgb '#1f77b4' title 'trapezoid, smooth (e^{-|x|^2})', \\\n"
@@ -367,8 +383,12 @@ int run(const CLI::App& app, const Options& o) {
 
   write_file_atomic(o.common.out / "errors.csv", errors_csv(plan.studies, rows));
   write_file_atomic(o.common.out / "slopes.csv", slopes_csv(plan.studies, slopes));
-  // Studies 0 and 1 are the 1D integrands; the disk is the first unit-ball study (k = 2).
-  const std::size_t disk = 2 + static_cast<std::size_t>(o.dims);
+  // Studies 0 and 1 are the 1D integrands; the disk is the unit ball at k = 2.
+  const std::vector<int> dims = sorted_dims(o);
+  std::size_t disk = 0;
+  for (std::size_t s = 0; s < plan.studies.size(); ++s)
+    if (plan.studies[s].kind == Kind::unit_ball_kd && plan.studies[s].dims == k_disk_dims)
+      disk = s;
   write_plot(o.common.out, error_plot("smooth_1d", "e^{-x^2} on [0,1]: error against N",
                                       plan.studies[0], slopes[0], slopes[1], "N^{-2}"));
   write_plot(o.common.out,
@@ -377,7 +397,7 @@ int run(const CLI::App& app, const Options& o) {
   write_plot(o.common.out,
              error_plot("disk_2d", "Unit disk in [-1,1]^2: error against N", plan.studies[disk],
                         slopes[2 * disk], slopes[2 * disk + 1], "N^{-1/2} (n^{-1})"));
-  write_plot(o.common.out, slopes_plot(o.dims));
+  write_plot(o.common.out, slopes_plot(std::max(dims.back(), k_disk_dims)));
 
   Json summary;
   summary["chapter"] = "ch03_trapezoid_vs_mc";
@@ -385,7 +405,7 @@ int run(const CLI::App& app, const Options& o) {
   summary["threads"] = o.common.threads;
   summary["trials"] = o.trials;
   summary["max_evaluations"] = o.max_evaluations;
-  summary["dims"] = o.dims;
+  summary["dims"] = dims;
   summary["evaluations"] = plan.total_evaluations;
   summary["seconds"] = seconds;
   summary["evaluations_per_second"] = seconds > 0.0 ? plan.total_evaluations / seconds : 0.0;
@@ -407,8 +427,10 @@ int run(const CLI::App& app, const Options& o) {
   write_json(o.common.out / "summary.json", summary);
 
   if (!o.common.quiet) {
-    std::printf("ch03_trapezoid_vs_mc  N up to %llu  %d trials  k up to %d  %d threads\n",
-                static_cast<unsigned long long>(o.max_evaluations), o.trials, o.dims,
+    std::string k_list;
+    for (int k : dims) k_list += (k_list.empty() ? "" : ",") + std::to_string(k);
+    std::printf("ch03_trapezoid_vs_mc  N up to %llu  %d trials  k = %s  %d threads\n",
+                static_cast<unsigned long long>(o.max_evaluations), o.trials, k_list.c_str(),
                 o.common.threads);
     std::printf("  %-13s %4s  %-12s %16s  %8s\n", "integrand", "k", "method", "fitted slope",
                 "theory");
@@ -439,8 +461,9 @@ int main(int argc, char** argv) {
                  "Function evaluations at the largest point of every study")
       ->check(CLI::Range(std::uint64_t{1}, k_max_budget));
   app.add_option("--dims", o.dims,
-                 "Largest dimension k of the k-dimensional integrands (studied from k = 1, "
-                 "the ball from k = 2)")
-      ->check(CLI::Range(2, k_max_dims));
+                 "Dimensions k of the k-dimensional integrands, e.g. 1,2,4,8 (the ball at "
+                 "k >= 2, and always at k = 2)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, k_max_dims));
   return run_chapter(app, argc, argv, [&] { return run(app, o); });
 }

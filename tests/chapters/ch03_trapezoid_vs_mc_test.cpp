@@ -19,7 +19,7 @@ namespace {
 
 const std::string k_program = "ch03_trapezoid_vs_mc";
 // k up to 3, N up to 3000, 4 trials: about 2e5 evaluations, well under a second.
-const std::string k_tiny = "--trials 4 --max-evaluations 3000 --dims 3 --quiet";
+const std::string k_tiny = "--trials 4 --max-evaluations 3000 --dims 3,1,2 --quiet";
 
 using Row = std::map<std::string, std::string>;
 
@@ -120,7 +120,7 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["chapter"], "ch03_trapezoid_vs_mc");
   EXPECT_EQ(summary["trials"], 4);
-  EXPECT_EQ(summary["dims"], 3);
+  EXPECT_EQ(summary["dims"], nlohmann::json::parse("[1, 2, 3]"));  // sorted
   EXPECT_EQ(summary["max_evaluations"], 3000);
   EXPECT_EQ(summary["slopes"].size(), 14u);
   EXPECT_EQ(summary["flags"]["max-evaluations"], "3000");
@@ -140,12 +140,13 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
 }
 
 TEST(Ch03Test, PrintsTheSlopesTableAndHelp) {
+  // --dims 1 alone: the disk (the ball at k = 2) is studied all the same.
   const auto dir = fresh_dir("ch03_table");
   const ProgramRun run = run_program(
-      k_program, "--trials 2 --max-evaluations 100 --dims 2 --out " + dir.string());
+      k_program, "--trials 2 --max-evaluations 100 --dims 1 --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("unit_ball_kd"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("unit_ball_kd     2"), std::string::npos) << run.out;
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--trials", "--max-evaluations", "--dims", "--seed", "--threads",
@@ -187,7 +188,8 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, Ch03BadInputTest,
     ::testing::Values(
         BadInput{"--dims 0", "--dims"}, BadInput{"--dims 13", "--dims"},
-        BadInput{"--dims two", "--dims"}, BadInput{"--max-evaluations 0", "--max-evaluations"},
+        BadInput{"--dims two", "--dims"}, BadInput{"--dims 2,x", "--dims"},
+        BadInput{"--max-evaluations 0", "--max-evaluations"},
         BadInput{"--max-evaluations -5", "--max-evaluations"},
         BadInput{"--max-evaluations 1e99x", "--max-evaluations"},
         BadInput{"--trials abc", "--trials"}, BadInput{"--trials 0", "--trials"},
