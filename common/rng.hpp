@@ -12,10 +12,23 @@
 
 namespace mcrt {
 
+/// SplitMix64's finaliser: a bijection of 64-bit words under which neighbouring inputs land
+/// far apart.
+constexpr std::uint64_t mix64(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 class Rng {
  public:
-  /// Generators with the same seed and different streams are independent sequences.
-  Rng(std::uint64_t seed, std::uint64_t stream) : engine_(seed, stream) {}
+  /// Generators with different (seed, stream) are independent sequences. PCG32 seeded with
+  /// neighbouring raw values starts from neighbouring states, and its sequences stay
+  /// correlated (seeds s and s + 1 agree in their fourth draws); so the starting state is
+  /// scrambled by mix64. The stream still selects PCG's increment, so distinct streams are
+  /// distinct sequences.
+  Rng(std::uint64_t seed, std::uint64_t stream)
+      : engine_(mix64(seed ^ mix64(stream + 0x9e3779b97f4a7c15ULL)), stream) {}
 
   /// 32 uniformly random bits.
   std::uint32_t next_bits() { return engine_(); }
