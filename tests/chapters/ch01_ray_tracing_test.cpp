@@ -106,9 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--width 10000 --height 10000", "--width"},
                       BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
                       BadInput{"--albedo 1.5", "--albedo"}),
-    [](const ::testing::TestParamInfo<BadInput>& info) {
-      std::string name = std::to_string(info.index) + "_";
-      for (char c : info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    [](const ::testing::TestParamInfo<BadInput>& param_info) {
+      std::string name = std::to_string(param_info.index) + "_";
+      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
       return name;
     });
 
