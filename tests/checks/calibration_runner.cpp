@@ -167,16 +167,18 @@ void print_table(const std::vector<Calibration>& rows, double level) {
   std::printf("Calibration: rejections (rate) on correct code; consistency level a = %.2g per "
               "test (Sidak: 1%% for the whole run)\n",
               level);
-  std::printf("%-52s %7s %6s %14s %14s %14s %7s %7s %8s %s\n", "check", "alpha", "seeds",
+  int width = 5;
+  for (const Calibration& c : rows) width = std::max(width, static_cast<int>(c.check->name.size()));
+  std::printf("%-*s %7s %6s %14s %14s %14s %7s %7s %8s %s\n", width, "check", "alpha", "seeds",
               "rej@alpha", "rej@0.05", "rej@0.01", "KS D", "KS p", "seconds", "verdict");
   for (const Calibration& c : rows) {
     if (!c.error.empty()) {
-      std::printf("%-52s %7.0e  error: %s\n", c.check->name.c_str(), c.check->alpha,
+      std::printf("%-*s %7.0e  error: %s\n", width, c.check->name.c_str(), c.check->alpha,
                   c.error.c_str());
       continue;
     }
     const auto n = c.p_values.size();
-    std::printf("%-52s %7.0e %6zu %14s %14s %14s %7.4f %7.3f %8.2f %s\n",
+    std::printf("%-*s %7.0e %6zu %14s %14s %14s %7.4f %7.3f %8.2f %s\n", width,
                 c.check->name.c_str(), c.check->alpha, n, rate_cell(c.at_alpha, n).c_str(),
                 rate_cell(c.at_5_percent, n).c_str(), rate_cell(c.at_1_percent, n).c_str(),
                 c.ks_statistic, c.ks_p, c.seconds, c.consistent ? "consistent" : "INCONSISTENT");
@@ -243,7 +245,9 @@ void write_outputs(const std::filesystem::path& dir, const std::vector<Calibrati
   write_plot(dir, plot);
 }
 
-int run(const CLI::App&, const Options& o) {
+int run(const CLI::App& app, Options o) {
+  // Without an explicit --min-seeds, a small --seeds lowers the floor with it.
+  if (app.count("--min-seeds") == 0) o.min_seeds = std::min(o.min_seeds, o.seeds);
   std::vector<const StatisticalCheck*> checks;
   for (const StatisticalCheck& check : statistical_checks())
     if (check.name.find(o.filter) != std::string::npos) checks.push_back(&check);
