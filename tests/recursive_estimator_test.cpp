@@ -58,7 +58,8 @@ TEST(IncidentRadiance, FurnaceRayCountsEqualThePrediction) {
   for (int n : {1, 2, 3, 5})
     for (int k : {0, 1, 2, 4}) {
       const RenderResult r = render_recursive(furnace, width, height, spp, {n, k});
-      EXPECT_EQ(r.rays, static_cast<std::uint64_t>(width * height * spp) * max_rays_per_sample(n, k))
+      const auto samples = static_cast<std::uint64_t>(width * height * spp);
+      EXPECT_EQ(r.rays, samples * max_rays_per_sample(n, k))
           << "N = " << n << ", k = " << k;
     }
 }
@@ -115,8 +116,8 @@ TEST(IncidentRadiance, FurnaceSamplesStayWithinTheirBounds) {
     for (int k : {1, 3}) {
       double upper = 0.0, weight = 1.0;
       for (int j = 0; j <= k; ++j, weight *= 2.0 * a) upper += le * weight;
-      const auto samples =
-          testing::recursive_furnace_samples({a, le, n, k}, 2000, 11, static_cast<std::uint64_t>(n));
+      const auto samples = testing::recursive_furnace_samples({a, le, n, k}, 2000, 11,
+                                                              static_cast<std::uint64_t>(n));
       for (double x : samples) {
         ASSERT_GE(x, le);
         ASSERT_LE(x, upper * (1.0 + 1e-12));  // round-off in the sum of weights

@@ -208,7 +208,8 @@ void write_plots(const Options& o, double limit, int limit_depth) {
   const std::string per_n = "Ns = '" + join(o.branching, " ") + "'\nset xtics 1\n";
   const std::string column_of_n = "(column(1) == word(Ns, i) + 0 ? column(%d) : NaN)";
   write_plot(o.common.out,
-             {"rays_vs_depth", "Rays traced against depth: N^k grows as a straight line of slope log N",
+             {"rays_vs_depth",
+              "Rays traced against depth: N^k grows as a straight line of slope log N",
               "depth k", "rays traced", false, true, per_n + "set key top left\n",
               "plot for [i=1:words(Ns)] 'rays.csv' using 2:" + format(column_of_n.c_str(), 3) +
                   " with linespoints pt 7 lw 2 lc i title 'N = '.word(Ns, i), "
@@ -357,7 +358,8 @@ int run(const CLI::App& app, Options& o) {
   summary["predicted_max_rays"] = plan.predicted_rays;
   summary["rays"] = total_rays;
   summary["seconds"] = total_seconds;
-  summary["rays_per_second"] = total_seconds > 0.0 ? static_cast<double>(total_rays) / total_seconds : 0.0;
+  summary["rays_per_second"] =
+      total_seconds > 0.0 ? static_cast<double>(total_rays) / total_seconds : 0.0;
   summary["non_finite_samples"] = non_finite;
   Json sweep_json = Json::array();
   for (const SweepRow& r : sweep)
