@@ -110,6 +110,18 @@ TEST(HypothesisTest, VarianceTestIsTwoSided) {
   EXPECT_EQ(variance_test_p_value(0.0, 4000, 1.0), 0.0);  // ... for any number of them
 }
 
+TEST(HypothesisTest, VarianceZTestUsesTheFourthMoment) {
+  // Uniform values: sigma^2 = 1/12, mu4 = 1/80, so Var[s^2] = (1/80 - (n-3)/(n-1)/144) / n.
+  const std::uint64_t n = 100000;
+  const double sd = std::sqrt((1.0 / 80.0 - (n - 3.0) / (n - 1.0) / 144.0) / n);
+  EXPECT_NEAR(variance_z_test_p_value(1.0 / 12.0 + 1.959964 * sd, n, 1.0 / 12.0, 1.0 / 80.0),
+              0.05, k_table_tol);
+  // The uniform's light tails make s^2 steadier than for normal values (mu4 = 3 sigma^4):
+  // the same deviation is more significant.
+  const double normal_sd = std::sqrt(2.0 / (n - 1.0)) / 12.0;
+  EXPECT_LT(sd, normal_sd);
+}
+
 TEST(HypothesisTest, DistributionFunctionsAtTabulatedValues) {
   EXPECT_NEAR(chi_square_upper_tail(3.841459, 1.0), 0.05, k_table_tol);
   EXPECT_NEAR(chi_square_upper_tail(124.3421, 100.0), 0.05, k_table_tol);

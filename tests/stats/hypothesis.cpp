@@ -41,6 +41,15 @@ double variance_test_p_value(double sample_variance, std::uint64_t n, double exp
   return std::min(1.0, 2.0 * std::min(lower, upper));
 }
 
+double variance_z_test_p_value(double sample_variance, std::uint64_t n,
+                               double expected_variance, double fourth_central_moment) {
+  const auto count = static_cast<double>(n);
+  const double sigma4 = expected_variance * expected_variance;
+  const double variance_of_s2 =
+      (fourth_central_moment - sigma4 * (count - 3.0) / (count - 1.0)) / count;
+  return z_test_p_value(sample_variance, expected_variance, std::sqrt(variance_of_s2));
+}
+
 double chi_square_upper_tail(double x, double dof) {
   return bm::cdf(bm::complement(bm::chi_squared(dof), x));
 }

@@ -22,6 +22,13 @@ double t_test_p_value(double sample_mean, double sample_variance, std::uint64_t 
 /// closed-form variance sigma^2: (n - 1) s^2 / sigma^2 ~ chi^2(n - 1).
 double variance_test_p_value(double sample_variance, std::uint64_t n, double expected_variance);
 
+/// Two-sided z-test of a sample variance s^2 of n i.i.d. values that need not be normal,
+/// against sigma^2, given their fourth central moment mu4:
+/// Var[s^2] = (mu4 - sigma^4 (n - 3) / (n - 1)) / n, and s^2, a mean of n terms, is normal for
+/// large n (thousands: its skewness falls as 1/sqrt(n)).
+double variance_z_test_p_value(double sample_variance, std::uint64_t n,
+                               double expected_variance, double fourth_central_moment);
+
 /// Upper tail P(X > x) of chi-square with `dof` degrees of freedom.
 double chi_square_upper_tail(double x, double dof);
 
