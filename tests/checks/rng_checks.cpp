@@ -41,24 +41,24 @@ namespace {
 // r = 12 mean((u - 1/2)(v - 1/2)), since Var u = 1/12). The 2J statistics are independent, so
 // their sum of squares is chi^2(2J); correlation inflates it. False-failure rate 1e-4.
 MCRT_STATISTICAL_CHECK(rng_neighbouring_seeds_and_streams_are_independent, 1e-4) {
-  constexpr int k_streams = 40000, k_draws = 8;
-  double seed_products[k_draws] = {}, stream_products[k_draws] = {};
+  constexpr int k_streams = 40000, k_draws_per_stream = 8;
+  double seed_products[k_draws_per_stream] = {}, stream_products[k_draws_per_stream] = {};
   const std::uint64_t first = (seed % 1000) << 20;  // streams first .. first + S - 1
   for (int s = 0; s < k_streams; ++s) {
     mcrt::Rng a(seed, first + s), next_seed(seed + 1, first + s), next_stream(seed, first + s + 1);
-    for (int j = 0; j < k_draws; ++j) {
+    for (int j = 0; j < k_draws_per_stream; ++j) {
       const double u = a.uniform() - 0.5;
       seed_products[j] += u * (next_seed.uniform() - 0.5);
       stream_products[j] += u * (next_stream.uniform() - 0.5);
     }
   }
   double chi2 = 0.0;
-  for (int j = 0; j < k_draws; ++j)
+  for (int j = 0; j < k_draws_per_stream; ++j)
     for (const double product : {seed_products[j], stream_products[j]}) {
       const double z = 12.0 * product / k_streams * std::sqrt(double(k_streams));
       chi2 += z * z;
     }
-  return mcrt::stats::chi_square_upper_tail(chi2, 2 * k_draws);
+  return mcrt::stats::chi_square_upper_tail(chi2, 2 * k_draws_per_stream);
 }
 
 }  // namespace
