@@ -80,21 +80,10 @@ TEST(Ch01Test, FurnaceSeesOnlyItsEmission) {
   for (const mcrt::Color& c : image.pixels) EXPECT_EQ(c, mcrt::Color(2.5));
 }
 
-struct BadInput {
-  std::string arguments;
-  std::string flag;  // the message must name it
-};
-void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
-
 class Ch01BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch01BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
-  const auto dir = fresh_dir("ch01_bad");
-  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+  expect_refused(k_program, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -106,26 +95,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--width 10000 --height 10000", "--width"},
                       BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
                       BadInput{"--albedo 1.5", "--albedo"}),
-    [](const ::testing::TestParamInfo<BadInput>& param_info) {
-      std::string name = std::to_string(param_info.index) + "_";
-      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      return name;
-    });
+    bad_input_name);
 
 TEST(Ch01Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
-  // A folder without write permission; root ignores permission bits, so as root use a path
-  // under /proc, where nobody can create anything.
-  const auto dir = fresh_dir("ch01_unwritable");
-  const bool root = ::geteuid() == 0;
-  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
-                                        std::filesystem::perms::owner_exec);
-  const ProgramRun run = run_program(k_program, "--width 8 --height 8 --out " + out.string());
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);
+  expect_unwritable_output_fails(k_program, "--width 8 --height 8");
 }
 
 }  // namespace

@@ -127,22 +127,10 @@ TEST(Ch02Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   EXPECT_NE(read_text(one / "disk_area.csv"), read_text(other / "disk_area.csv"));
 }
 
-struct BadInput {
-  std::string arguments;
-  std::string flag;  // the message must name it
-};
-
-void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.arguments; }
-
 class Ch02BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch02BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
-  const auto dir = fresh_dir("ch02_bad");
-  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+  expect_refused(k_program, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -156,22 +144,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--frobnicate", "--frobnicate"},
                       // 1e12 x 1e5 trials: far too much work, refused with its estimate.
                       BadInput{"--max-n 1000000000000 --trials 100000", "--max-n"},
-                      BadInput{"--ball-n 1000000000 --trials 1000 --dims 50", "--ball-n"}));
+                      BadInput{"--ball-n 1000000000 --trials 1000 --dims 50", "--ball-n"}),
+    bad_input_name);
 
 TEST(Ch02Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
-  // A folder without write permission; root ignores permission bits, so as root use a path
-  // under /proc, where nobody can create anything.
-  const auto dir = fresh_dir("ch02_unwritable");
-  const bool root = ::geteuid() == 0;
-  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
-                                        std::filesystem::perms::owner_exec);
-  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);
+  expect_unwritable_output_fails(k_program, k_tiny);
 }
 
 }  // namespace

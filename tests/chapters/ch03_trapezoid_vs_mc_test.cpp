@@ -166,22 +166,10 @@ TEST(Ch03Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   EXPECT_NE(read_text(one / "errors.csv"), read_text(other / "errors.csv"));  // Monte Carlo rows
 }
 
-struct BadInput {
-  std::string arguments;
-  std::string flag;  // the message must name it
-};
-void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
-
 class Ch03BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch03BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
-  const auto dir = fresh_dir("ch03_bad");
-  const auto out = dir / "out";
-  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + out.string());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
-  EXPECT_FALSE(std::filesystem::exists(out));  // refused before creating any output
+  expect_refused(k_program, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -199,27 +187,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--dims 8 --max-evaluations 1000", "--max-evaluations"},
         // Far too much work in all: refused at once, with the estimate.
         BadInput{"--trials 100000 --max-evaluations 1000000000", "--trials"}),
-    [](const ::testing::TestParamInfo<BadInput>& param_info) {
-      std::string name = std::to_string(param_info.index) + "_";
-      for (char c : param_info.param.arguments)
-        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      return name;
-    });
+    bad_input_name);
 
 TEST(Ch03Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
-  // A folder without write permission; root ignores permission bits, so as root use a path
-  // under /proc, where nobody can create anything.
-  const auto dir = fresh_dir("ch03_unwritable");
-  const bool root = ::geteuid() == 0;
-  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
-                                        std::filesystem::perms::owner_exec);
-  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);
+  expect_unwritable_output_fails(k_program, k_tiny);
 }
 
 }  // namespace

@@ -196,21 +196,10 @@ TEST(Ch04Test, RefusesTooManyRaysBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-struct BadInput {
-  std::string arguments;
-  std::string flag;  // the message must name it
-};
-void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
-
 class Ch04BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch04BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
-  const auto dir = fresh_dir("ch04_bad");
-  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+  expect_refused(k_program, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -230,25 +219,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
                       BadInput{"--width 0", "--width"}, BadInput{"--scene moon", "--scene"},
                       BadInput{"--threads 0", "--threads"}),
-    [](const ::testing::TestParamInfo<BadInput>& param_info) {
-      std::string name = std::to_string(param_info.index) + "_";
-      for (char c : param_info.param.arguments)
-        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      return name;
-    });
+    bad_input_name);
 
-// A regular file where the output folder should be: exit 1, one line naming the path, and
-// nothing written anywhere.
 TEST(Ch04Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
-  const auto dir = fresh_dir("ch04_unwritable");
-  const auto blocker = dir / "blocker";
-  { std::ofstream(blocker) << "in the way\n"; }
-  const auto out = blocker / "out";
-  const ProgramRun run = run_program(k_program, k_tiny + " --out " + out.string());
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 1);  // the blocker alone
+  expect_unwritable_output_fails(k_program, k_tiny);
 }
 
 }  // namespace

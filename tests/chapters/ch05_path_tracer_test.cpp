@@ -111,21 +111,10 @@ TEST(Ch05Test, HelpNamesEveryFlag) {
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
-struct BadInput {
-  std::string arguments;
-  std::string flag;  // the message must name it
-};
-void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
-
 class Ch05BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch05BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
-  const auto dir = fresh_dir("ch05_bad");
-  const ProgramRun run = run_program(k_program, GetParam().arguments + " --out " + dir.string());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(GetParam().flag), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);  // refused before any output
+  expect_refused(k_program, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -136,26 +125,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
                       BadInput{"--threads 0", "--threads"}),
-    [](const ::testing::TestParamInfo<BadInput>& param_info) {
-      std::string name = std::to_string(param_info.index) + "_";
-      for (char c : param_info.param.arguments) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      return name;
-    });
+    bad_input_name);
 
 TEST(Ch05Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
-  // A folder without write permission; root ignores permission bits, so as root use a path
-  // under /proc, where nobody can create anything.
-  const auto dir = fresh_dir("ch05_unwritable");
-  const bool root = ::geteuid() == 0;
-  const std::filesystem::path out = root ? std::filesystem::path("/proc/mcrt/out") : dir / "sub";
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_read |
-                                        std::filesystem::perms::owner_exec);
-  const ProgramRun run = run_program(k_program, "--width 8 --height 8 --spp 1 --out " + out.string());
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(line_count(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
-  EXPECT_EQ(file_count(dir), 0);
+  expect_unwritable_output_fails(k_program, "--width 8 --height 8 --spp 1");
 }
 
 }  // namespace

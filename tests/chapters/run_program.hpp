@@ -1,6 +1,7 @@
 #pragma once
 // Runs a chapter executable from build/bin/ as a student would, for the chapter tests.
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,7 +9,9 @@
 #include <string>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 namespace mcrt::testing {
@@ -72,6 +75,46 @@ inline int file_count(const std::filesystem::path& dir) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
     n += entry.is_regular_file();
   return n;
+}
+
+/// A command line a chapter must refuse, and the flag its one-line message must name.
+struct BadInput {
+  std::string arguments;
+  std::string flag;
+};
+inline void PrintTo(const BadInput& input, std::ostream* os) { *os << input.arguments; }
+
+/// A readable test name for each BadInput: its index and its arguments.
+inline std::string bad_input_name(const ::testing::TestParamInfo<BadInput>& param_info) {
+  std::string name = std::to_string(param_info.index) + "_";
+  for (char c : param_info.param.arguments)
+    name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+/// The chapter refuses `input`: exit code 2, one line on stderr naming the flag, and no
+/// output folder created (refused before any work).
+inline void expect_refused(const std::string& program, const BadInput& input) {
+  const std::filesystem::path out = fresh_dir(program + "_refused") / "out";
+  const ProgramRun run = run_program(program, input.arguments + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(input.flag), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+/// With a regular file where the output folder should go (which stops root too), the chapter
+/// exits with code 1 and one line naming the path, and writes nothing anywhere.
+inline void expect_unwritable_output_fails(const std::string& program, const std::string& arguments) {
+  const auto dir = fresh_dir(program + "_unwritable");
+  const auto blocker = dir / "blocker";
+  { std::ofstream(blocker) << "in the way\n"; }
+  const auto out = blocker / "out";
+  const ProgramRun run = run_program(program, arguments + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
+  EXPECT_EQ(file_count(dir), 1);  // the blocker alone
 }
 
 }  // namespace mcrt::testing
