@@ -1,7 +1,6 @@
 // Chapter 01 as a student runs it: tiny renders, their outputs, reproducibility across thread
 // counts, and every kind of bad input.
 
-#include <cctype>
 
 #include <gtest/gtest.h>
 

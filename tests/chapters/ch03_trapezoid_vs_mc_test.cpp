@@ -1,7 +1,6 @@
 // Chapter 03 as a student runs it: a tiny study, its tables and summary, reproducibility
 // across thread counts, and every kind of bad input.
 
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <sstream>

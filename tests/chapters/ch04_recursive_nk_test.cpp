@@ -1,7 +1,6 @@
 // Chapter 04 as a student runs it: a tiny sweep and its tables, exact ray counts in the
 // furnace, reproducibility across thread counts, the --max-rays refusal and bad input.
 
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <fstream>

@@ -1,7 +1,6 @@
 // Chapter 05 as a student runs it: a tiny run and its outputs, reproducibility across thread
 // counts, and bad input.
 
-#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <vector>
