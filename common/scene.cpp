@@ -4,10 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace mcrt {
 
 std::uint32_t Scene::add_material(const Material& m) {
@@ -15,56 +11,35 @@ std::uint32_t Scene::add_material(const Material& m) {
   return static_cast<std::uint32_t>(materials.size() - 1);
 }
 
-namespace {
-
-// sqrt of a non-negative number as one instruction: std::sqrt must also set errno for negative
-// input, and the branch that checks for it mispredicts as often as rays miss spheres.
-inline double sqrt_non_negative(double x) {
-#if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
-#else
-  return std::sqrt(x);
-#endif
+void Scene::add_sphere(const Sphere& s) {
+  spheres_.push_back(s);
+  sphere_set_.add(s);
 }
 
-}  // namespace
+void Scene::add_quad(const Quad& q) { quads_.push_back(q); }
 
 // Find the nearest t over every primitive first; build the Hit record once, for the winner.
-// The sphere loop computes both roots of every sphere and chooses between them with selects
-// rather than early exits (a mispredicted branch costs more than the square root it would
-// skip: 1.27x faster on cornell-spheres, bench_path_tracer); it keeps the first root beyond
-// range.min: the same t, bit for bit, as intersect_distance (sphere.hpp).
+// The spheres are searched four at a time (SphereSet); ties keep the first primitive, spheres
+// before quads, as the plain loop over intersect_distance does.
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval range) const {
-  const std::size_t none = spheres.size();
-  std::size_t best_sphere = none;
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const Sphere& s = spheres[i];
-    const Vec3 oc = s.center - ray.origin;
-    const double b = glm::dot(oc, ray.direction);
-    const double det = b * b - glm::dot(oc, oc) + s.radius * s.radius;
-    const double root = sqrt_non_negative(std::max(det, 0.0));
-    const double near = b - root, far = b + root;
-    const double t = near > range.min ? near : far;
-    const bool closer = det >= 0.0 && t > range.min && t < range.max;
-    range.max = closer ? t : range.max;
-    best_sphere = closer ? i : best_sphere;
-  }
+  const SphereSet::Nearest sphere = sphere_set_.nearest(ray, range);
+  range.max = sphere.t;
   const Quad* best_quad = nullptr;
-  for (const Quad& q : quads) {
+  for (const Quad& q : quads_) {
     if (const auto t = intersect_distance(q, ray, range)) {
       range.max = *t;
       best_quad = &q;
     }
   }
   if (best_quad) return hit_at(*best_quad, ray, range.max);
-  if (best_sphere != none) return hit_at(spheres[best_sphere], ray, range.max);
+  if (sphere.index != sphere_set_.size()) return hit_at(spheres_[sphere.index], ray, range.max);
   return std::nullopt;
 }
 
 bool Scene::any_hit(const Ray& ray, Interval range) const {
-  for (const Sphere& s : spheres)
+  for (const Sphere& s : spheres_)
     if (intersect_distance(s, ray, range)) return true;
-  for (const Quad& q : quads)
+  for (const Quad& q : quads_)
     if (intersect_distance(q, ray, range)) return true;
   return false;
 }
@@ -92,12 +67,12 @@ void add_box(Scene& scene, Vec3 size, double angle, Vec3 offset, std::uint32_t m
   const Vec3 dx = turn({size.x, 0, 0}), dy{0, size.y, 0}, dz = turn({0, 0, size.z});
   const Vec3 o = place({0, 0, 0});
   const Vec3 far = place(size);
-  scene.quads.push_back({o, dx, dy, material});         // front
-  scene.quads.push_back({o, dz, dy, material});         // left
-  scene.quads.push_back({o, dx, dz, material});         // bottom
-  scene.quads.push_back({far, -dx, -dy, material});     // back
-  scene.quads.push_back({far, -dz, -dy, material});     // right
-  scene.quads.push_back({far, -dx, -dz, material});     // top
+  scene.add_quad({o, dx, dy, material});         // front
+  scene.add_quad({o, dz, dy, material});         // left
+  scene.add_quad({o, dx, dz, material});         // bottom
+  scene.add_quad({far, -dx, -dy, material});     // back
+  scene.add_quad({far, -dz, -dy, material});     // right
+  scene.add_quad({far, -dx, -dz, material});     // top
 }
 
 }  // namespace
@@ -115,14 +90,14 @@ Scene make_cornell_box() {
 
   const double l = 555.0;
   // The camera looks along +z with y up, so x = 555 is on the left of the image.
-  scene.quads.push_back({{l, 0, 0}, {0, l, 0}, {0, 0, l}, red});     // left wall, x = 555
-  scene.quads.push_back({{0, 0, 0}, {0, l, 0}, {0, 0, l}, green});   // right wall, x = 0
-  scene.quads.push_back({{0, 0, 0}, {l, 0, 0}, {0, 0, l}, white});   // floor
-  scene.quads.push_back({{0, l, 0}, {l, 0, 0}, {0, 0, l}, white});   // ceiling
-  scene.quads.push_back({{0, 0, l}, {l, 0, 0}, {0, l, 0}, white});   // back wall
+  scene.add_quad({{l, 0, 0}, {0, l, 0}, {0, 0, l}, red});     // left wall, x = 555
+  scene.add_quad({{0, 0, 0}, {0, l, 0}, {0, 0, l}, green});   // right wall, x = 0
+  scene.add_quad({{0, 0, 0}, {l, 0, 0}, {0, 0, l}, white});   // floor
+  scene.add_quad({{0, l, 0}, {l, 0, 0}, {0, 0, l}, white});   // ceiling
+  scene.add_quad({{0, 0, l}, {l, 0, 0}, {0, l, 0}, white});   // back wall
   // The light, 130 x 105, just below the ceiling; edge order makes its normal point down.
   const Quad lamp{{213, l - 1, 227}, {0, 0, 105}, {130, 0, 0}, light};
-  scene.quads.push_back(lamp);
+  scene.add_quad(lamp);
   add_box(scene, {165, 330, 165}, 15.0 * k_pi / 180.0, {265, 0, 295}, white);
   add_box(scene, {165, 165, 165}, -18.0 * k_pi / 180.0, {130, 0, 65}, white);
 
@@ -146,7 +121,7 @@ Scene make_cornell_spheres() {
   const auto white = diffuse(Color(.999));
   const Color le(12.0);
   const auto light = scene.add_material({Color(0.0), le});
-  scene.spheres = {
+  const Sphere spheres[] = {
       {{1e5 + 1, 40.8, 81.6}, 1e5, left},      // left wall
       {{-1e5 + 99, 40.8, 81.6}, 1e5, right},   // right wall
       {{50, 40.8, 1e5}, 1e5, grey},            // back wall
@@ -157,6 +132,7 @@ Scene make_cornell_spheres() {
       {{73, 16.5, 78}, 16.5, white},           // right sphere (smallpt's glass)
       {{50, 681.6 - .27, 81.6}, 600, light},   // light: a cap 0.27 deep through the ceiling
   };
+  for (const Sphere& s : spheres) scene.add_sphere(s);
   scene.camera = {{50, 52, 295.6}, {0, -0.042612, -1}, {0, 1, 0}, 2.0 * std::atan(0.5135 / 2.0),
                   140.0};
   // The light is the cap of the 600-radius sphere below the ceiling (y = 81.6): height
@@ -173,7 +149,7 @@ Scene make_furnace(double albedo, double emission) {
   Scene scene;
   scene.name = "furnace";
   const auto m = scene.add_material({Color(albedo), Color(emission)});
-  scene.spheres.push_back({Vec3(0.0), 1.0, m});
+  scene.add_sphere({Vec3(0.0), 1.0, m});
   scene.camera = {Vec3(0.0), {0, 0, -1}, {0, 1, 0}, 60.0 * k_pi / 180.0, 0.0};
   scene.point_light = {Vec3(0.0), Color(0.0)};  // the walls are the light; no point light
   return scene;

@@ -12,6 +12,7 @@
 #include "material.hpp"
 #include "quad.hpp"
 #include "sphere.hpp"
+#include "sphere_set.hpp"
 
 namespace mcrt {
 
@@ -21,15 +22,20 @@ struct PointLight {
   Color intensity{0.0};
 };
 
+/// Primitives are added through add_sphere / add_quad only, so the structure-of-arrays copy
+/// of the spheres that closest_hit reads stays in step with the list.
 struct Scene {
   std::string name;
-  std::vector<Sphere> spheres;
-  std::vector<Quad> quads;
   std::vector<Material> materials;
   CameraSpec camera;
   PointLight point_light;  ///< the area light collapsed to its centre, with the same power
 
   std::uint32_t add_material(const Material& m);
+  void add_sphere(const Sphere& s);
+  void add_quad(const Quad& q);
+
+  const std::vector<Sphere>& spheres() const { return spheres_; }
+  const std::vector<Quad>& quads() const { return quads_; }
   const Material& material(const Hit& hit) const { return materials[hit.material]; }
 
   /// The closest surface along the ray within `range`. One call is one traced ray.
@@ -37,6 +43,11 @@ struct Scene {
 
   /// Whether any surface blocks the ray within `range` (a shadow ray); stops at the first.
   bool any_hit(const Ray& ray, Interval range = {}) const;
+
+ private:
+  std::vector<Sphere> spheres_;
+  std::vector<Quad> quads_;
+  SphereSet sphere_set_;  ///< spheres_ as a structure of arrays
 };
 
 /// Parameters of the built-in scenes that take them.

@@ -60,8 +60,8 @@ TEST(PathTracerTest, PathsNeverCrossTheSurfaceTheyBounceOff) {
   Scene scene;
   const auto white = scene.add_material({Color(1.0), Color(0.0)});
   const auto lamp = scene.add_material({Color(0.0), Color(1.0)});
-  scene.quads.push_back({{-1e3, 0, -1e3}, {0, 0, 2e3}, {2e3, 0, 0}, white});
-  scene.spheres.push_back({{0, -300, 0}, 200, lamp});
+  scene.add_quad({{-1e3, 0, -1e3}, {0, 0, 2e3}, {2e3, 0, 0}, white});
+  scene.add_sphere({{0, -300, 0}, 200, lamp});
   Rng rng(2, 0);
   int lit_from_below = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -92,11 +92,10 @@ TEST(PathTracerTest, RaysGrazingQuadEdgesStayFinite) {
   const Scene scene = make_cornell_box();
   Rng rng(3, 0);
   std::uint64_t stream = 0;
-  for (const Quad& q : scene.quads) {
+  for (const Quad& q : scene.quads()) {
     // Aimed exactly at the corners and edge midpoints, from random points in the box.
-    const std::vector<Vec3> targets{q.corner, q.corner + q.edge_u, q.corner + q.edge_v,
-                                    q.corner + q.edge_u + q.edge_v, q.corner + 0.5 * q.edge_u,
-                                    q.corner + 0.5 * q.edge_v};
+    const Vec3 o = q.corner(), u = q.edge_u(), v = q.edge_v();
+    const std::vector<Vec3> targets{o, o + u, o + v, o + u + v, o + 0.5 * u, o + 0.5 * v};
     for (const Vec3& target : targets) {
       for (int i = 0; i < 5; ++i) {
         const Vec3 origin(5 + 545 * rng.uniform(), 5 + 545 * rng.uniform(), 5 + 545 * rng.uniform());
@@ -104,15 +103,15 @@ TEST(PathTracerTest, RaysGrazingQuadEdgesStayFinite) {
       }
     }
     // In the quad's plane, along its edges: parallel to the quad, through its edge lines.
-    expect_finite_and_non_negative(scene, {q.corner, glm::normalize(q.edge_u)}, stream++);
-    expect_finite_and_non_negative(scene, {q.corner + q.edge_v, glm::normalize(q.edge_u)}, stream++);
-    expect_finite_and_non_negative(scene, {q.center(), glm::normalize(q.edge_v)}, stream++);
+    expect_finite_and_non_negative(scene, {o, glm::normalize(u)}, stream++);
+    expect_finite_and_non_negative(scene, {o + v, glm::normalize(u)}, stream++);
+    expect_finite_and_non_negative(scene, {q.center(), glm::normalize(v)}, stream++);
   }
 }
 
 TEST(PathTracerTest, RaysTangentToSpheresStayFinite) {
   const Scene scene = make_cornell_spheres();
-  const Sphere& ball = scene.spheres[6];
+  const Sphere& ball = scene.spheres()[6];
   // Tangent rays: through a point of the sphere, perpendicular to its normal there.
   Rng rng(4, 0);
   for (int i = 0; i < 200; ++i) {

@@ -15,19 +15,19 @@ TEST(SceneTest, EveryNamedSceneBuilds) {
     const Scene scene = make_scene(name);
     EXPECT_EQ(scene.name, name);
     EXPECT_FALSE(scene.materials.empty());
-    EXPECT_FALSE(scene.spheres.empty() && scene.quads.empty());
+    EXPECT_FALSE(scene.spheres().empty() && scene.quads().empty());
   }
   EXPECT_THROW(make_scene("no-such-scene"), std::invalid_argument);
 }
 
 TEST(SceneTest, CornellSpheresIsSmallptsSceneAllDiffuse) {
   const Scene scene = make_cornell_spheres();
-  ASSERT_EQ(scene.spheres.size(), 9u);
-  const Sphere& light = scene.spheres[8];
+  ASSERT_EQ(scene.spheres().size(), 9u);
+  const Sphere& light = scene.spheres()[8];
   EXPECT_EQ(light.radius, 600.0);
   EXPECT_EQ(scene.materials[light.material].emission, Color(12.0));
-  EXPECT_EQ(scene.materials[scene.spheres[6].material].albedo, Color(0.999));
-  EXPECT_EQ(scene.materials[scene.spheres[0].material].albedo, Color(.75, .25, .25));
+  EXPECT_EQ(scene.materials[scene.spheres()[6].material].albedo, Color(0.999));
+  EXPECT_EQ(scene.materials[scene.spheres()[0].material].albedo, Color(.75, .25, .25));
   int emitters = 0;
   for (const Material& m : scene.materials) emitters += m.is_emitter();
   EXPECT_EQ(emitters, 1);
@@ -59,7 +59,7 @@ TEST(SceneTest, ClosestHitIsTheNearestOfAllPrimitives) {
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Ray ray{origin, rng.uniform() < 0.5 ? local : -local};
     double nearest = 1e300;
-    for (const Sphere& s : scene.spheres)
+    for (const Sphere& s : scene.spheres())
       if (const auto t = intersect_distance(s, ray, {})) nearest = std::min(nearest, *t);
     const auto hit = scene.closest_hit(ray);
     if (nearest == 1e300) {

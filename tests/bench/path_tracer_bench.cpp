@@ -68,12 +68,12 @@ std::vector<mcrt::Ray> path_rays(const mcrt::Scene& scene) {
 std::optional<mcrt::Hit> reference_closest_hit(const mcrt::Scene& scene, const mcrt::Ray& ray) {
   mcrt::Interval range;
   std::optional<mcrt::Hit> hit;
-  for (const mcrt::Sphere& s : scene.spheres)
+  for (const mcrt::Sphere& s : scene.spheres())
     if (const auto t = mcrt::intersect_distance(s, ray, range)) {
       range.max = *t;
       hit = mcrt::hit_at(s, ray, *t);
     }
-  for (const mcrt::Quad& q : scene.quads)
+  for (const mcrt::Quad& q : scene.quads())
     if (const auto t = mcrt::intersect_distance(q, ray, range)) {
       range.max = *t;
       hit = mcrt::hit_at(q, ray, *t);

@@ -258,7 +258,7 @@ struct ColorMoments {
 MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
   const Scene scene = make_cornell_spheres();
   std::vector<ReferenceSphere> spheres;
-  for (const Sphere& s : scene.spheres)
+  for (const Sphere& s : scene.spheres())
     spheres.push_back({s.center, s.radius, scene.materials[s.material].albedo,
                        scene.materials[s.material].emission});
   constexpr int k_tiles_x = 3, k_tiles_y = 2, k_tile_size = 16, k_samples = 15000, k_depth = 4;
