@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "math.hpp"
+#include "unit_circle.hpp"
 
 namespace mcrt {
 
@@ -19,8 +20,7 @@ inline double uniform_square_pdf() { return 0.25; }
 /// phi = 2 pi u1. pdf = 1/pi per unit area.
 inline Vec2 sample_uniform_disk(Vec2 u) {
   const double r = std::sqrt(u.x);
-  const double phi = k_two_pi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi)};
+  return r * unit_circle_point(u.y);  // (cos phi, sin phi)
 }
 inline double uniform_disk_pdf() { return k_inv_pi; }
 
@@ -29,8 +29,8 @@ inline double uniform_disk_pdf() { return k_inv_pi; }
 inline Vec3 sample_uniform_hemisphere(Vec2 u) {
   const double cos_theta = u.x;
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  const double phi = k_two_pi * u.y;
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  const Vec2 phi = unit_circle_point(u.y);  // (cos phi, sin phi)
+  return {sin_theta * phi.x, sin_theta * phi.y, cos_theta};
 }
 inline double uniform_hemisphere_pdf() { return k_inv_two_pi; }
 
