@@ -12,7 +12,7 @@ namespace mcrt {
 /// A quad keeps, beside its corner and edges, what every ray query needs and no ray changes:
 /// the plane normal n = cross(edge_u, edge_v), |n| (its area), the unit normal, and the axes
 /// that give a point's edge coordinates by one dot product each. Computing them per query cost
-/// a cross product, a length and a division (precomputing them: 1.9x the closest-hit queries
+/// a cross product, a length and a division (precomputing them: 1.55x the closest-hit queries
 /// per second on `cornell`, bench_path_tracer).
 class Quad {
  public:

@@ -46,8 +46,8 @@ inline double cos_quarter(double x) {
 /// 2 pi u = (pi/2) (q + f): q quarter turns, then an angle a = (pi/2) f in the quarter, f in
 /// [0, 1) (4u and 4u - q are exact). cos a and sin a come from series on [0, pi/4]: directly
 /// for f <= 1/2, else as sin and cos of pi/2 - a = (pi/2)(1 - f) (1 - f is exact there). Then
-/// q quarter turns, each (c, s) -> (-s, c). Why: std::sin and std::cos of the hemisphere
-/// sampler took a fifth of the path tracer's time; this is 1.6x the rays per second.
+/// q quarter turns, each (c, s) -> (-s, c). Why: no call into libm and no argument reduction
+/// on every bounce; 1.03x to 1.17x the path tracer's rays per second (bench_path_tracer).
 inline Vec2 unit_circle_point(double u) {
   using namespace unit_circle_detail;
   constexpr double k_half_pi = 0.5 * k_pi;
