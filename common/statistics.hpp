@@ -2,6 +2,7 @@
 /// Running mean and variance, standard error, and the least-squares slope of log(error)
 /// against log(N): the numbers every convergence study reports.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -45,6 +46,39 @@ class RunningStats {
   double mean_ = 0.0;
   double m2_ = 0.0;
 };
+
+/// Repeated independent estimates of a known value: their mean, bias, spread and
+/// root-mean-square error rmse = sqrt(mean (estimate - exact)^2) = sqrt(bias^2 + (T-1)/T s^2).
+class ErrorStats {
+ public:
+  explicit ErrorStats(double exact) : exact_(exact) {}
+
+  void add(double estimate) {
+    stats_.add(estimate);
+    squared_error_ += (estimate - exact_) * (estimate - exact_);
+  }
+
+  std::uint64_t count() const { return stats_.count(); }
+  double mean() const { return stats_.mean(); }
+  double bias() const { return stats_.mean() - exact_; }
+  /// Sample standard deviation s of the estimates (n - 1 in the denominator).
+  double stddev() const { return stats_.stddev(); }
+  double rmse() const {
+    return count() > 0 ? std::sqrt(squared_error_ / static_cast<double>(count())) : 0.0;
+  }
+
+ private:
+  double exact_;
+  RunningStats stats_;
+  double squared_error_ = 0.0;
+};
+
+/// The middle value (the mean of the two middle values for an even count); needs a value.
+inline double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
 
 /// Least-squares line y = intercept + slope x, with the slope's standard error.
 struct LineFit {

@@ -348,3 +348,27 @@ TEST(TrialsTest, IdenticalTrialsAreRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+// Estimates 1, 2, 6 of the exact value 2: mean 3, bias 1, s^2 = ((-2)^2 + (-1)^2 + 3^2) / 2
+// = 7, rmse = sqrt((1 + 0 + 16) / 3); and rmse^2 = bias^2 + (T-1)/T s^2 = 1 + 14/3 = 17/3.
+TEST(ErrorStatsTest, MeanBiasSpreadAndRmseOfRepeatedEstimates) {
+  mcrt::ErrorStats errors(2.0);
+  for (double estimate : {1.0, 2.0, 6.0}) errors.add(estimate);
+  EXPECT_EQ(errors.count(), 3u);
+  EXPECT_DOUBLE_EQ(errors.mean(), 3.0);
+  EXPECT_DOUBLE_EQ(errors.bias(), 1.0);
+  EXPECT_DOUBLE_EQ(errors.stddev(), std::sqrt(7.0));
+  EXPECT_DOUBLE_EQ(errors.rmse(), std::sqrt(17.0 / 3.0));
+  EXPECT_DOUBLE_EQ(errors.rmse() * errors.rmse(),
+                   errors.bias() * errors.bias() + 2.0 / 3.0 * errors.stddev() * errors.stddev());
+}
+
+TEST(MedianTest, OddAndEvenCounts) {
+  EXPECT_EQ(mcrt::median({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_EQ(mcrt::median({4.0, 1.0, 3.0, 2.0}), 2.5);
+  EXPECT_EQ(mcrt::median({5.0}), 5.0);
+}
+
+}  // namespace

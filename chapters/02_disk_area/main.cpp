@@ -90,19 +90,9 @@ ErrorRow run_trials(std::uint64_t n, int trials, double exact, double theory_std
     estimates[t] = estimate(n, rng);
     progress.advance(n);
   });
-  RunningStats stats;
-  double squared_error = 0.0;
-  for (double f : estimates) {
-    stats.add(f);
-    squared_error += (f - exact) * (f - exact);
-  }
-  return {n,
-          trials,
-          stats.mean(),
-          stats.mean() - exact,
-          stats.stddev(),
-          theory_std,
-          std::sqrt(squared_error / trials)};
+  ErrorStats errors(exact);
+  for (double f : estimates) errors.add(f);
+  return {n, trials, errors.mean(), errors.bias(), errors.stddev(), theory_std, errors.rmse()};
 }
 
 LineFit error_slope(std::span<const ErrorRow> rows) {
@@ -112,12 +102,6 @@ LineFit error_slope(std::span<const ErrorRow> rows) {
     rmse.push_back(row.rmse);
   }
   return fit_log_log(n, rmse);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t middle = values.size() / 2;
-  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 // ---- the three studies -------------------------------------------------------------------

@@ -115,17 +115,14 @@ double run_trapezoid(const Study& study, std::uint64_t n) {
 // the same numbers whatever the thread count. Their mean, and rmse = sqrt(mean (F_N - I)^2).
 TaskResult run_monte_carlo(const Study& study, const Task& task, int trials, std::uint64_t seed) {
   return with_integrand(study, [&](const auto& f, const auto& domain) {
-    const double exact = f.reference();
-    double mean = 0.0, squared_error = 0.0;
+    ErrorStats errors(f.reference());
     for (int t = 0; t < trials; ++t) {
       const std::uint64_t stream = stream_index(task.study * 1000 + task.grid_index,
                                                 static_cast<std::uint64_t>(t));
       Rng rng(seed, stream);
-      const double f_n = monte_carlo(f, domain, task.n, rng).estimate;
-      mean += f_n / trials;
-      squared_error += (f_n - exact) * (f_n - exact) / trials;
+      errors.add(monte_carlo(f, domain, task.n, rng).estimate);
     }
-    return TaskResult{mean, std::sqrt(squared_error)};
+    return TaskResult{errors.mean(), errors.rmse()};
   });
 }
 
