@@ -15,6 +15,7 @@
 #include "path_tracer.hpp"
 #include "render.hpp"
 #include "scene.hpp"
+#include "path_rays.hpp"
 
 namespace {
 
@@ -43,25 +44,7 @@ void BM_PathTracer(benchmark::State& state) {
 BENCHMARK(BM_PathTracer)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(2.0);
 
-// Rays met by real paths: the camera rays of a 64x48 image and every bounce after them.
-std::vector<mcrt::Ray> path_rays(const mcrt::Scene& scene) {
-  const mcrt::Camera camera(scene.camera, 64, 48);
-  std::vector<mcrt::Ray> rays;
-  for (int y = 0; y < camera.height(); ++y) {
-    for (int x = 0; x < camera.width(); ++x) {
-      mcrt::Rng rng(7, mcrt::stream_index(static_cast<std::uint64_t>(y) * 64 + x, 0));
-      mcrt::Ray ray = camera.generate_ray(x, y, rng.uniform2());
-      for (int bounce = 0; bounce <= 3; ++bounce) {
-        rays.push_back(ray);
-        const std::optional<mcrt::Hit> hit = scene.closest_hit(ray);
-        if (!hit) break;
-        const mcrt::Vec3 local = mcrt::sample_uniform_hemisphere(rng.uniform2());
-        ray = mcrt::spawn_ray(*hit, mcrt::Frame(hit->normal).to_world(local));
-      }
-    }
-  }
-  return rays;
-}
+using mcrt::bench::path_rays;
 
 // The straightforward closest-hit loop, one intersect_distance per primitive: the baseline
 // Scene::closest_hit is measured against (same rays, same answers).

@@ -15,6 +15,7 @@
 #include "recursive_estimator.hpp"
 #include "render.hpp"
 #include "scene.hpp"
+#include "path_rays.hpp"
 
 namespace {
 
@@ -41,24 +42,7 @@ BENCHMARK(BM_IncidentRadiance)
     ->Args({1, 3})->Args({2, 3})->Args({8, 3})->Args({1, 8})
     ->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
-// Rays met by single paths in the box: camera rays of a 64x48 image and up to 3 bounces each.
-std::vector<mcrt::Ray> path_rays(const mcrt::Scene& scene) {
-  const mcrt::Camera camera(scene.camera, 64, 48);
-  std::vector<mcrt::Ray> rays;
-  for (int y = 0; y < camera.height(); ++y)
-    for (int x = 0; x < camera.width(); ++x) {
-      mcrt::Rng rng(7, mcrt::stream_index(static_cast<std::uint64_t>(y) * 64 + x, 0));
-      mcrt::Ray ray = camera.generate_ray(x, y, rng.uniform2());
-      for (int bounce = 0; bounce <= 3; ++bounce) {
-        rays.push_back(ray);
-        const std::optional<mcrt::Hit> hit = scene.closest_hit(ray);
-        if (!hit) break;
-        const mcrt::Vec3 local = mcrt::sample_uniform_hemisphere(rng.uniform2());
-        ray = mcrt::spawn_ray(*hit, mcrt::Frame(hit->normal).to_world(local));
-      }
-    }
-  return rays;
-}
+using mcrt::bench::path_rays;
 
 void BM_ClosestHitOnly(benchmark::State& state) {
   const mcrt::Scene scene = mcrt::make_cornell_box();
