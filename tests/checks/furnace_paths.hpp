@@ -20,18 +20,6 @@
 
 namespace mcrt::testing {
 
-/// A stream index scrambled by the splitmix64 finaliser. pcg32 generators that share the seed
-/// and take consecutive stream indices are far from independent: their states are an
-/// arithmetic progression in the stream, so across 4e4 consecutive streams the mean of the
-/// first uniform has 0.2 times, and of the sixth 1.4 times, the standard deviation of
-/// independent draws (measured). Tests that need independent samples scramble the index.
-constexpr std::uint64_t independent_stream(std::uint64_t i) {
-  std::uint64_t z = i + 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
 struct FurnaceSetup {
   double albedo = 0.5;
   double emission = 1.0;
@@ -39,7 +27,8 @@ struct FurnaceSetup {
 };
 
 /// n paths from the furnace's centre, path i in a uniformly random direction drawn from
-/// stream independent_stream((block, i)) of `seed` (distinct blocks give independent sets); `estimate(scene, ray, depth, rng, count)` is the tracer under test.
+/// stream (block, i) of `seed` (distinct blocks give independent sets);
+/// `estimate(scene, ray, depth, rng, count)` is the tracer under test.
 template <class Estimator>
 RunningStats furnace_samples(const FurnaceSetup& setup, int n, std::uint64_t seed,
                              std::uint64_t block, Estimator&& estimate) {
@@ -47,7 +36,7 @@ RunningStats furnace_samples(const FurnaceSetup& setup, int n, std::uint64_t see
   RunningStats samples;
   RayCount count;
   for (int i = 0; i < n; ++i) {
-    Rng rng(seed, independent_stream(stream_index(block, static_cast<std::uint64_t>(i))));
+    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
     const Vec2 u = rng.uniform2();
     const double z = 1.0 - 2.0 * u.x, r = std::sqrt(std::max(0.0, 1.0 - z * z));
     const Ray ray{Vec3(0.0), {r * std::cos(k_two_pi * u.y), r * std::sin(k_two_pi * u.y), z}};

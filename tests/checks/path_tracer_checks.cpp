@@ -110,26 +110,14 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a09_k8, 1e-4) {
 // are independent. The log's bias (-v/2, Jensen) differs between levels by about 1e-3 in the
 // slope, far below its standard error (about 0.02).
 
-// Each pixel value is the mean of `spp` paths through jittered points of the pixel, as in
-// mcrt::render, but with scrambled streams (independent_stream): with render's consecutive
-// streams the pixels' errors are correlated and the variance v above would be wrong.
-Image render_independent(const Camera& camera, const Scene& scene, int depth, int spp,
-                         std::uint64_t first_sample, std::uint64_t seed) {
-  Image image(camera.width(), camera.height());
-  RayCount count;
-  for (int y = 0; y < camera.height(); ++y) {
-    for (int x = 0; x < camera.width(); ++x) {
-      const std::uint64_t pixel = static_cast<std::uint64_t>(y) * camera.width() + x;
-      Color sum(0.0);
-      for (int s = 0; s < spp; ++s) {
-        Rng rng(seed, mcrt::testing::independent_stream(stream_index(pixel, first_sample + s)));
-        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-        sum += estimate_path_radiance(scene, ray, depth, rng, count);
-      }
-      image.at(x, y) = sum / static_cast<double>(spp);
-    }
-  }
-  return image;
+// An image of `spp` paths per pixel from samples [first_sample, first_sample + spp): the
+// chapter's own render loop, so the check covers it too.
+Image render_image(const Camera& camera, const Scene& scene, int depth, int spp,
+                   std::uint64_t first_sample, std::uint64_t seed) {
+  const RenderSettings settings{spp, first_sample, seed, 1, nullptr};
+  return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
+           return estimate_path_radiance(scene, ray, depth, rng, count);
+         }).image;
 }
 
 MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
@@ -140,8 +128,8 @@ MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
   std::uint64_t first_sample = 0;
   for (int spp : {4, 8, 16, 32, 64}) {
     const auto n = static_cast<std::uint64_t>(spp);
-    const Image a = render_independent(camera, scene, depth, spp, first_sample, seed);
-    const Image b = render_independent(camera, scene, depth, spp, first_sample + n, seed);
+    const Image a = render_image(camera, scene, depth, spp, first_sample, seed);
+    const Image b = render_image(camera, scene, depth, spp, first_sample + n, seed);
     first_sample += 2 * n;
 
     RunningStats d;
@@ -273,11 +261,11 @@ MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_sphe
     for (int i = 0; i < k_samples; ++i) {
       // Streams (2 tile, i) for the path tracer, (2 tile + 1, i) for the reference.
       const auto block = 2 * static_cast<std::uint64_t>(tile);
-      Rng rng(seed, mcrt::testing::independent_stream(stream_index(block, i)));
+      Rng rng(seed, stream_index(block, i));
       const Vec2 u = rng.uniform2();
       const Ray ray = camera.generate_ray(x0 + k_tile_size * u.x, y0 + k_tile_size * u.y);
       ours.add(estimate_path_radiance(scene, ray, k_depth, rng, count));
-      Rng reference_rng(seed, mcrt::testing::independent_stream(stream_index(block + 1, i)));
+      Rng reference_rng(seed, stream_index(block + 1, i));
       const Vec2 v = reference_rng.uniform2();
       const Ray reference_ray =
           camera.generate_ray(x0 + k_tile_size * v.x, y0 + k_tile_size * v.y);
