@@ -1,10 +1,10 @@
 # Every dependency comes from Debian's packages. A missing one stops the configure step with
-# the name of the package that provides it (scripts/setup installs them all).
+# the name of the package that provides it (scripts/test and scripts/run-chapters install them all when run as root).
 
 macro(mcrt_require found package what)
   if(NOT ${found})
     message(FATAL_ERROR "${what} not found: install the Debian package '${package}' "
-                        "(sudo apt-get install ${package}), or run scripts/setup as root.")
+                        "(sudo apt-get install ${package}), or run scripts/test as root.")
   endif()
 endmacro()
 
@@ -27,6 +27,9 @@ if(PCG_INCLUDE_DIR)
   set(PCG_FOUND TRUE)
 endif()
 mcrt_require(PCG_FOUND libpcg-cpp-dev "pcg-cpp (pcg_random.hpp)")
+
+find_package(fmt CONFIG QUIET)
+mcrt_require(fmt_FOUND libfmt-dev "fmt")
 
 find_package(Threads REQUIRED)
 

@@ -9,7 +9,7 @@ cd "$repo_root"
 # Everything the project needs from Debian: build tools, libraries, gnuplot for the plots.
 debian_packages=(
   cmake g++ make pkg-config
-  libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev
+  libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev libboost-math-dev
   gnuplot-nox fonts-dejavu-core
 )

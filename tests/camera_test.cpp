@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "camera.hpp"
-#include "scene.hpp"
+#include "geometry/camera.hpp"
+#include "render/scene.hpp"
 
 using namespace mcrt;
 

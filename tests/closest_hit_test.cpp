@@ -5,10 +5,10 @@
 
 #include <optional>
 
-#include "rng.hpp"
-#include "sampling.hpp"
-#include "scene.hpp"
-#include "sphere_set.hpp"
+#include "core/rng.hpp"
+#include "geometry/sphere_set.hpp"
+#include "render/scene.hpp"
+#include "sampling/sampling.hpp"
 
 using namespace mcrt;
 

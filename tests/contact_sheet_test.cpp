@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "contact_sheet.hpp"
-#include "text.hpp"
+#include "io/contact_sheet.hpp"
+#include "io/text.hpp"
 
 using namespace mcrt;
 

@@ -10,10 +10,10 @@
 
 #include <pcg_random.hpp>
 
-#include "ball.hpp"
 #include "checks/disk_area_procedures.hpp"
-#include "disk_area.hpp"
-#include "pcg32_lanes.hpp"
+#include "core/pcg32_lanes.hpp"
+#include "integration/ball.hpp"
+#include "integration/disk_area.hpp"
 
 using namespace mcrt;
 

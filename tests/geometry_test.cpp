@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "hit.hpp"
-#include "quad.hpp"
-#include "sphere.hpp"
+#include "geometry/hit.hpp"
+#include "geometry/quad.hpp"
+#include "geometry/sphere.hpp"
 
 using namespace mcrt;
 

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image.hpp"
-#include "output.hpp"
+#include "io/image_file.hpp"
+#include "io/output.hpp"
 
 using namespace mcrt;
 namespace fs = std::filesystem;

@@ -10,17 +10,17 @@
 
 #include <gtest/gtest.h>
 
-#include "check.hpp"
 #include "checks/furnace_paths.hpp"
 #include "checks/small_trials.hpp"
-#include "convergence.hpp"
-#include "integrands.hpp"
-#include "log_grid.hpp"
-#include "path_tracer.hpp"
-#include "quadrature.hpp"
-#include "report.hpp"
-#include "sampler_tests.hpp"
-#include "sampling.hpp"
+#include "integration/integrands.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/quadrature.hpp"
+#include "render/path_tracer.hpp"
+#include "sampling/sampling.hpp"
+#include "stats/check.hpp"
+#include "stats/convergence.hpp"
+#include "stats/report.hpp"
+#include "stats/sampler_tests.hpp"
 
 using namespace mcrt;
 using namespace mcrt::stats;

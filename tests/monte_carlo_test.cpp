@@ -3,16 +3,16 @@
 // statistical checks use rejects known-wrong estimators. Its mean and variance against
 // closed forms are statistical checks: tests/checks/monte_carlo_checks.cpp.
 
-#include "monte_carlo.hpp"
+#include "integration/monte_carlo.hpp"
 
 #include <cmath>
 #include <span>
 
 #include <gtest/gtest.h>
 
-#include "hypothesis.hpp"
-#include "integrands.hpp"
-#include "statistics.hpp"
+#include "integration/integrands.hpp"
+#include "integration/statistics.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace {
 

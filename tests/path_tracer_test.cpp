@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "checks/furnace_paths.hpp"
-#include "path_tracer.hpp"
-#include "render.hpp"
-#include "sampling.hpp"
-#include "scene.hpp"
+#include "io/image_file.hpp"
+#include "render/path_tracer.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
+#include "sampling/sampling.hpp"
 
 using namespace mcrt;
 

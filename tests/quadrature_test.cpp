@@ -1,7 +1,7 @@
 // The trapezoid rules: exact where theory says so, O(h^2) on smooth integrands with the
 // constant Euler-Maclaurin predicts, O(h) where the integrand jumps.
 
-#include "quadrature.hpp"
+#include "integration/quadrature.hpp"
 
 #include <cmath>
 #include <span>
@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "integrands.hpp"
-#include "log_grid.hpp"
-#include "statistics.hpp"
+#include "integration/integrands.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/statistics.hpp"
 
 namespace {
 

@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "camera.hpp"
 #include "checks/recursive_furnace.hpp"
-#include "recursive_estimator.hpp"
-#include "render.hpp"
-#include "scene.hpp"
+#include "geometry/camera.hpp"
+#include "render/recursive_estimator.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 namespace mcrt {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "log_grid.hpp"
-#include "parallel.hpp"
-#include "rng.hpp"
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "integration/log_grid.hpp"
 
 using namespace mcrt;
 

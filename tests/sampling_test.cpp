@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sampling.hpp"
+#include "sampling/sampling.hpp"
 
 using namespace mcrt;
 

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "rng.hpp"
-#include "sampling.hpp"
-#include "scene.hpp"
+#include "core/rng.hpp"
+#include "render/scene.hpp"
+#include "sampling/sampling.hpp"
 
 using namespace mcrt;
 

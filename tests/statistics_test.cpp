@@ -13,13 +13,13 @@
 
 #include <gtest/gtest.h>
 
-#include "binning.hpp"
-#include "chi_square.hpp"
-#include "convergence.hpp"
-#include "hypothesis.hpp"
-#include "report.hpp"
-#include "statistics.hpp"
-#include "trials.hpp"
+#include "integration/statistics.hpp"
+#include "stats/binning.hpp"
+#include "stats/chi_square.hpp"
+#include "stats/convergence.hpp"
+#include "stats/hypothesis.hpp"
+#include "stats/report.hpp"
+#include "stats/trials.hpp"
 
 using namespace mcrt;
 using namespace mcrt::stats;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "rng.hpp"
-#include "unit_circle.hpp"
+#include "core/rng.hpp"
+#include "sampling/unit_circle.hpp"
 
 using namespace mcrt;
 

@@ -12,11 +12,12 @@
 #include <cstdio>
 #include <iostream>
 
-#include "cli.hpp"
-#include "output.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "summary.hpp"
+#include "io/cli.hpp"
+#include "io/image_file.hpp"
+#include "io/output.hpp"
+#include "io/summary.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 using namespace mcrt;
 
@@ -104,7 +105,7 @@ int main(int argc, char** argv) {
                "shaded by direct light from a point light (no bounces).",
                "ch01_ray_tracing"};
   Options o;
-  add_common_options(app, o.common, "ch01_ray_tracing");
+  add_common_options(app, o.common, Chapter{"ch01_ray_tracing", ""});
   add_scene_options(app, o.scene);
   add_image_options(app, o.image);
   app.add_option("--spp", o.spp, "Jittered samples per pixel")->check(CLI::Range(1, 1 << 16));

@@ -21,17 +21,17 @@
 #include <string>
 #include <vector>
 
-#include "ball.hpp"
-#include "cli.hpp"
-#include "disk_area.hpp"
-#include "log_grid.hpp"
-#include "output.hpp"
-#include "parallel.hpp"
-#include "plot.hpp"
-#include "progress.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
-#include "summary.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "core/rng.hpp"
+#include "integration/ball.hpp"
+#include "integration/disk_area.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/statistics.hpp"
+#include "io/cli.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "io/summary.hpp"
 
 using namespace mcrt;
 
@@ -401,7 +401,7 @@ int main(int argc, char** argv) {
                "points of the square), its error against N, and the volume of the k-ball.",
                "ch02_disk_area"};
   Options o;
-  add_common_options(app, o.common, "ch02_disk_area");
+  add_common_options(app, o.common, Chapter{"ch02_disk_area", ""});
   app.add_option("--max-n", o.max_n, "Largest N of the 2D error study (N runs from 10)")
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1'000'000'000'000}));
   app.add_option("--trials", o.trials, "Independent estimates per N (2 or more: a variance needs 2)")

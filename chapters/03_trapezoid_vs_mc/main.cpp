@@ -15,18 +15,18 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
-#include "integrands.hpp"
-#include "log_grid.hpp"
-#include "monte_carlo.hpp"
-#include "output.hpp"
-#include "parallel.hpp"
-#include "plot.hpp"
-#include "progress.hpp"
-#include "quadrature.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
-#include "summary.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "core/rng.hpp"
+#include "integration/integrands.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/monte_carlo.hpp"
+#include "integration/quadrature.hpp"
+#include "integration/statistics.hpp"
+#include "io/cli.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "io/summary.hpp"
 
 using namespace mcrt;
 
@@ -451,7 +451,7 @@ int main(int argc, char** argv) {
                "dimensions, and the fitted convergence slopes.",
                "ch03_trapezoid_vs_mc"};
   Options o;
-  add_common_options(app, o.common, "ch03_trapezoid_vs_mc");
+  add_common_options(app, o.common, Chapter{"ch03_trapezoid_vs_mc", ""});
   app.add_option("--trials", o.trials, "Monte Carlo runs per N (the rmse is over these)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--max-evaluations", o.max_evaluations,

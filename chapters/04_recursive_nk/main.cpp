@@ -16,14 +16,15 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
-#include "contact_sheet.hpp"
-#include "output.hpp"
-#include "plot.hpp"
-#include "recursive_estimator.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "summary.hpp"
+#include "io/cli.hpp"
+#include "io/contact_sheet.hpp"
+#include "io/image_file.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "io/summary.hpp"
+#include "render/recursive_estimator.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 using namespace mcrt;
 
@@ -425,7 +426,7 @@ int main(int argc, char** argv) {
                "cutting at k, and compares branching with camera samples at equal cost.",
                "ch04_recursive_nk"};
   Options o;
-  add_common_options(app, o.common, "ch04_recursive_nk");
+  add_common_options(app, o.common, Chapter{"ch04_recursive_nk", ""});
   add_scene_options(app, o.scene);
   add_image_options(app, o.image);
   app.add_option("--spp", o.spp, "Camera samples per pixel in the sweep")

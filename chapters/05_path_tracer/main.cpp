@@ -20,15 +20,16 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
-#include "contact_sheet.hpp"
-#include "output.hpp"
-#include "path_tracer.hpp"
-#include "plot.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "statistics.hpp"
-#include "summary.hpp"
+#include "integration/statistics.hpp"
+#include "io/cli.hpp"
+#include "io/contact_sheet.hpp"
+#include "io/image_file.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "io/summary.hpp"
+#include "render/path_tracer.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 using namespace mcrt;
 
@@ -233,7 +234,7 @@ int main(int argc, char** argv) {
                "from two independent renders.",
                "ch05_path_tracer"};
   Options o;
-  add_common_options(app, o.common, "ch05_path_tracer");
+  add_common_options(app, o.common, Chapter{"ch05_path_tracer", ""});
   add_scene_options(app, o.scene);
   add_image_options(app, o.image);
   app.add_option("--spp", o.spp, "Samples per pixel of each image (a list: 1,4,16)")

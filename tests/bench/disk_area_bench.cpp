@@ -14,9 +14,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "disk_area.hpp"
-#include "parallel.hpp"
-#include "rng.hpp"
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "integration/disk_area.hpp"
 
 namespace {
 

@@ -5,11 +5,11 @@
 #include <optional>
 #include <vector>
 
-#include "camera.hpp"
-#include "hit.hpp"
-#include "rng.hpp"
-#include "sampling.hpp"
-#include "scene.hpp"
+#include "core/rng.hpp"
+#include "geometry/camera.hpp"
+#include "geometry/hit.hpp"
+#include "render/scene.hpp"
+#include "sampling/sampling.hpp"
 
 namespace mcrt::bench {
 

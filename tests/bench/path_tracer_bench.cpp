@@ -12,10 +12,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "path_tracer.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "path_rays.hpp"
+#include "bench/path_rays.hpp"
+#include "render/path_tracer.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 namespace {
 

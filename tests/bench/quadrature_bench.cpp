@@ -13,10 +13,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "integrands.hpp"
-#include "monte_carlo.hpp"
-#include "quadrature.hpp"
-#include "rng.hpp"
+#include "core/rng.hpp"
+#include "integration/integrands.hpp"
+#include "integration/monte_carlo.hpp"
+#include "integration/quadrature.hpp"
 
 namespace {
 

@@ -12,10 +12,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "recursive_estimator.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "path_rays.hpp"
+#include "bench/path_rays.hpp"
+#include "render/recursive_estimator.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image.hpp"
-#include "run_program.hpp"
+#include "chapters/run_program.hpp"
+#include "io/image_file.hpp"
 
 using namespace mcrt::testing;
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "ball.hpp"
-#include "disk_area.hpp"
-#include "run_program.hpp"
+#include "chapters/run_program.hpp"
+#include "integration/ball.hpp"
+#include "integration/disk_area.hpp"
 
 using namespace mcrt::testing;
 

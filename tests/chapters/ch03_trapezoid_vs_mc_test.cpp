@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "integrands.hpp"
-#include "plot.hpp"
-#include "run_program.hpp"
+#include "chapters/run_program.hpp"
+#include "integration/integrands.hpp"
+#include "io/plot.hpp"
 
 using namespace mcrt::testing;
 

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "recursive_estimator.hpp"
-#include "run_program.hpp"
+#include "chapters/run_program.hpp"
+#include "render/recursive_estimator.hpp"
 
 using namespace mcrt::testing;
 

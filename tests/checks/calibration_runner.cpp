@@ -28,15 +28,15 @@
 #include <string>
 #include <vector>
 
-#include "check.hpp"
-#include "cli.hpp"
-#include "hypothesis.hpp"
-#include "output.hpp"
-#include "parallel.hpp"
-#include "plot.hpp"
-#include "progress.hpp"
-#include "report.hpp"
-#include "rng.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "core/rng.hpp"
+#include "io/cli.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "stats/check.hpp"
+#include "stats/hypothesis.hpp"
+#include "stats/report.hpp"
 
 using namespace mcrt;
 using namespace mcrt::stats;
@@ -288,7 +288,7 @@ int main(int argc, char** argv) {
                "its rejection rates and p-values with its design (exit code 3 if they differ).",
                "calibrate_statistical_checks"};
   Options o;
-  add_common_options(app, o.common, "calibration");
+  add_common_options(app, o.common, Chapter{"calibration", ""});
   app.add_option("--seeds", o.seeds, "Most seeds per check")->check(CLI::Range(100, 100000));
   app.add_option("--min-seeds", o.min_seeds, "Fewest seeds per check, whatever the budget")
       ->check(CLI::Range(k_pilot_seeds, 100000));

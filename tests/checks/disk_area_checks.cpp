@@ -5,11 +5,11 @@
 
 #include <cstdint>
 
-#include "ball.hpp"
-#include "check.hpp"
-#include "disk_area.hpp"
-#include "disk_area_procedures.hpp"
-#include "math.hpp"
+#include "checks/disk_area_procedures.hpp"
+#include "core/math.hpp"
+#include "integration/ball.hpp"
+#include "integration/disk_area.hpp"
+#include "stats/check.hpp"
 
 namespace {
 

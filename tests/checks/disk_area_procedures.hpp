@@ -9,10 +9,10 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
-#include "hypothesis.hpp"
-#include "log_grid.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
+#include "core/rng.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/statistics.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::checks {
 

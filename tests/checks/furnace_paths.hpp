@@ -12,11 +12,11 @@
 #include <cmath>
 #include <cstdint>
 
-#include "hypothesis.hpp"
-#include "path_tracer.hpp"
-#include "rng.hpp"
-#include "scene.hpp"
-#include "statistics.hpp"
+#include "core/rng.hpp"
+#include "integration/statistics.hpp"
+#include "render/path_tracer.hpp"
+#include "render/scene.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::testing {
 

@@ -6,13 +6,13 @@
 
 #include <boost/math/special_functions/trigamma.hpp>
 
-#include "check.hpp"
-#include "hypothesis.hpp"
-#include "integrands.hpp"
-#include "log_grid.hpp"
-#include "monte_carlo.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
+#include "core/rng.hpp"
+#include "integration/integrands.hpp"
+#include "integration/log_grid.hpp"
+#include "integration/monte_carlo.hpp"
+#include "integration/statistics.hpp"
+#include "stats/check.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace {
 

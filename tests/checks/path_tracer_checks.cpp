@@ -13,14 +13,14 @@
 #include <optional>
 #include <vector>
 
-#include "camera.hpp"
-#include "check.hpp"
-#include "furnace_paths.hpp"
-#include "hypothesis.hpp"
-#include "path_tracer.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "statistics.hpp"
+#include "checks/furnace_paths.hpp"
+#include "geometry/camera.hpp"
+#include "integration/statistics.hpp"
+#include "render/path_tracer.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
+#include "stats/check.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace {
 

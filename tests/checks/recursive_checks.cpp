@@ -19,8 +19,8 @@
 // fell below 1e-4 (0.36 expected); those two checks, rerun on 3000 fresh seeds each, fell
 // below 1e-4 in none and below 1e-3 in 2 and 3 runs (3 expected).
 
-#include "check.hpp"
-#include "recursive_furnace.hpp"
+#include "checks/recursive_furnace.hpp"
+#include "stats/check.hpp"
 
 namespace {
 

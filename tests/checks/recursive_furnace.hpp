@@ -13,11 +13,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "hypothesis.hpp"
-#include "recursive_estimator.hpp"
-#include "rng.hpp"
-#include "scene.hpp"
-#include "statistics.hpp"
+#include "core/rng.hpp"
+#include "integration/statistics.hpp"
+#include "render/recursive_estimator.hpp"
+#include "render/scene.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::testing {
 

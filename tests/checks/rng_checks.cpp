@@ -1,9 +1,9 @@
 // The generator's uniforms: U ~ Uniform[0,1) has mean 1/2 and variance 1/12.
 
-#include "check.hpp"
-#include "hypothesis.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
+#include "core/rng.hpp"
+#include "integration/statistics.hpp"
+#include "stats/check.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace {
 

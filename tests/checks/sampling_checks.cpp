@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include "check.hpp"
-#include "chi_square.hpp"
-#include "hypothesis.hpp"
-#include "sampler_tests.hpp"
-#include "sampling.hpp"
+#include "sampling/sampling.hpp"
+#include "stats/check.hpp"
+#include "stats/chi_square.hpp"
+#include "stats/hypothesis.hpp"
+#include "stats/sampler_tests.hpp"
 
 using namespace mcrt;
 using namespace mcrt::stats;

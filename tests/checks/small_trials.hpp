@@ -12,10 +12,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "integrands.hpp"
-#include "monte_carlo.hpp"
-#include "rng.hpp"
-#include "trials.hpp"
+#include "core/rng.hpp"
+#include "integration/integrands.hpp"
+#include "integration/monte_carlo.hpp"
+#include "stats/trials.hpp"
 
 namespace mcrt::checks {
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "check.hpp"
+#include "stats/check.hpp"
 
 namespace {
 

@@ -4,11 +4,11 @@
 
 #include <array>
 
-#include "check.hpp"
-#include "hypothesis.hpp"
-#include "rng.hpp"
-#include "small_trials.hpp"
-#include "statistics.hpp"
+#include "checks/small_trials.hpp"
+#include "core/rng.hpp"
+#include "integration/statistics.hpp"
+#include "stats/check.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace {
 

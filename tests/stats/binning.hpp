@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "math.hpp"
+#include "core/math.hpp"
 
 namespace mcrt::stats {
 

@@ -1,4 +1,4 @@
-#include "check.hpp"
+#include "stats/check.hpp"
 
 namespace mcrt::stats {
 

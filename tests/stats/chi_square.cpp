@@ -1,4 +1,4 @@
-#include "chi_square.hpp"
+#include "stats/chi_square.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "hypothesis.hpp"
-#include "output.hpp"
-#include "plot.hpp"
-#include "report.hpp"
+#include "io/output.hpp"
+#include "io/plot.hpp"
+#include "stats/hypothesis.hpp"
+#include "stats/report.hpp"
 
 namespace mcrt::stats {
 

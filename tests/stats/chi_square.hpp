@@ -17,8 +17,8 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "binning.hpp"
-#include "rng.hpp"
+#include "core/rng.hpp"
+#include "stats/binning.hpp"
 
 namespace mcrt::stats {
 

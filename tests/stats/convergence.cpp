@@ -1,4 +1,4 @@
-#include "convergence.hpp"
+#include "stats/convergence.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <span>
 
-#include "hypothesis.hpp"
-#include "statistics.hpp"
+#include "integration/statistics.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::stats {
 

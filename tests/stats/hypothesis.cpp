@@ -1,4 +1,4 @@
-#include "hypothesis.hpp"
+#include "stats/hypothesis.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "report.hpp"
+#include "stats/report.hpp"
 
 #include <atomic>
 #include <cstdlib>

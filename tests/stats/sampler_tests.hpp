@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <string>
 
-#include "binning.hpp"
-#include "chi_square.hpp"
+#include "stats/binning.hpp"
+#include "stats/chi_square.hpp"
 
 namespace mcrt::stats {
 

@@ -1,8 +1,8 @@
-#include "trials.hpp"
+#include "stats/trials.hpp"
 
 #include <array>
 
-#include "hypothesis.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::stats {
 

@@ -7,10 +7,10 @@
 #include <span>
 #include <vector>
 
-#include "hypothesis.hpp"
-#include "parallel.hpp"
-#include "rng.hpp"
-#include "statistics.hpp"
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "integration/statistics.hpp"
+#include "stats/hypothesis.hpp"
 
 namespace mcrt::stats {
 

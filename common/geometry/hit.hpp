@@ -1,0 +1,46 @@
+#pragma once
+/// The record of a ray hitting a surface, and the one place that moves new rays off it.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "geometry/ray.hpp"
+
+namespace mcrt {
+
+struct Hit {
+  double t = 0.0;
+  Vec3 point;
+  Vec3 normal;             ///< unit, facing the incoming ray (the side the ray arrived from)
+  std::uint32_t material = 0;
+};
+
+/// Geometric normal n turned to face against the ray direction d.
+inline Vec3 face_forward(const Vec3& n, const Vec3& d) { return glm::dot(n, d) < 0.0 ? n : -n; }
+
+/// A ray leaving `hit` in `direction`, its origin pushed off the surface along the normal
+/// (to the side the direction goes) so it cannot hit the surface it starts on. The offset is
+/// relative to the coordinates' size: round-off in the hit point grows with them (the walls of
+/// the sphere Cornell box sit 1e5 away from their centres).
+inline Ray spawn_ray(const Hit& hit, const Vec3& direction) {
+  const double scale = 1.0 + std::max({std::abs(hit.point.x), std::abs(hit.point.y),
+                                       std::abs(hit.point.z)});
+  const double offset = 1e-7 * scale;
+  const double side = glm::dot(direction, hit.normal) >= 0.0 ? 1.0 : -1.0;
+  return {hit.point + side * offset * hit.normal, direction};
+}
+
+/// Shadow-ray helper: a ray from `hit` towards `target`, with the distance to it.
+struct SegmentRay {
+  Ray ray;
+  double distance;
+};
+inline SegmentRay spawn_ray_to(const Hit& hit, const Vec3& target) {
+  const Vec3 to = target - hit.point;
+  const double distance = glm::length(to);
+  const Ray ray = spawn_ray(hit, to / distance);
+  return {ray, glm::length(target - ray.origin)};
+}
+
+}  // namespace mcrt

@@ -1,0 +1,47 @@
+#pragma once
+/// The spheres of a scene as a structure of arrays, for the closest-hit loop.
+
+#include <cstddef>
+#include <vector>
+
+#include "geometry/sphere.hpp"
+
+namespace mcrt {
+
+/// Centres and squared radii in separate arrays, padded to whole blocks of k_block spheres
+/// that never hit (r^2 = -infinity), so the nearest-root search runs k_block spheres at a
+/// time with no remainder loop. Each sphere's t is computed with the same operations, in the
+/// same order, as intersect_distance (sphere.hpp), so the answer is the same bit for bit.
+class SphereSet {
+ public:
+  static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
+
+  /// The sphere whose root in `range` is nearest; index == size() if none. Ties go to the
+  /// lowest index, as in a plain loop that keeps the first strictly nearer hit.
+  struct Nearest {
+    std::size_t index;
+    double t;
+  };
+
+  void add(const Sphere& s);
+  std::size_t size() const { return size_; }
+
+  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere.
+  Nearest nearest(const Ray& ray, Interval range) const {
+    return k_has_avx2 ? nearest_avx2(ray, range) : nearest_portable(ray, range);
+  }
+  /// Plain C++, one sphere at a time.
+  Nearest nearest_portable(const Ray& ray, Interval range) const;
+  /// Four spheres per instruction; only call it if has_avx2().
+  Nearest nearest_avx2(const Ray& ray, Interval range) const;
+
+  /// Whether this processor runs AVX2 (checked once, at start-up).
+  static bool has_avx2() { return k_has_avx2; }
+
+ private:
+  static const bool k_has_avx2;
+  std::size_t size_ = 0;
+  std::vector<double> center_x_, center_y_, center_z_, radius_squared_;
+};
+
+}  // namespace mcrt

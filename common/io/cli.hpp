@@ -1,0 +1,76 @@
+#pragma once
+/// Command-line glue shared by every chapter: the common flags, validated image and scene
+/// flags, and one entry point that turns every failure into the right exit code:
+/// 0 success (and --help), 2 bad usage (one line naming the flag), 1 input/output failure.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "render/scene.hpp"
+
+namespace mcrt {
+
+/// A request that parses but cannot be done (too much work, inconsistent flags): exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A chapter's identity, written once: its executable's name, its output folder
+/// (out/<name>) and the "chapter" entry of summary.json.
+struct Chapter {
+  std::string name;         ///< e.g. "ch02_disk_area"
+  std::string description;  ///< the first paragraph of --help
+};
+
+/// --out, --seed, --threads, --quiet.
+struct CommonOptions {
+  std::filesystem::path out;   ///< output folder, default out/<chapter>
+  std::uint64_t seed = 1;      ///< the same seed gives byte-identical outputs
+  int threads = 1;             ///< default: all cores
+  bool quiet = false;          ///< no progress bar, no table
+};
+
+/// --width, --height.
+struct ImageOptions {
+  int width = 320;
+  int height = 240;
+};
+
+/// The largest image any chapter renders: 8192 x 4096 pixels.
+inline constexpr long long k_max_pixels = 8192LL * 4096LL;
+inline constexpr int k_max_image_side = 16384;
+inline constexpr int k_max_threads = 256;
+
+void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& chapter);
+void add_scene_options(CLI::App& app, SceneOptions& options);
+void add_image_options(CLI::App& app, ImageOptions& options);
+
+/// A list flag such as --dims 1,2,4: comma-separated whole numbers in [lowest, highest],
+/// written in decimal. The list is sorted and duplicates are dropped; an empty list or item,
+/// a number out of range or anything else is a usage error naming the flag.
+void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
+                     const std::string& description, int lowest, int highest);
+
+/// The parser behind add_list_option: throws CLI::ValidationError naming `flag`.
+std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
+                                int highest);
+
+/// Throws UsageError if width x height exceeds k_max_pixels.
+void check_image_size(const ImageOptions& options);
+
+/// Every option of `app` with the value it had in this run (given or default), for
+/// summary.json.
+nlohmann::ordered_json flags_json(const CLI::App& app);
+
+/// Parses argv into `app`, then runs `body`; maps errors to exit codes and one-line messages.
+int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
+
+}  // namespace mcrt
