@@ -31,6 +31,7 @@ std::string script_text(const Plot& p) {
     << "if (!exists(\"png_out\")) png_out = " << quote(p.name + ".png") << "\n"
     << "if (!exists(\"svg_out\")) svg_out = " << quote(p.name + ".svg") << "\n"
     << "set datafile separator ','\n"
+    << "set datafile columnheaders\n"  // columns are named: using "n":"rmse"
     << "set title " << quote(p.title) << " noenhanced\n"
     << "set xlabel " << quote(p.x_label) << " noenhanced\n"
     << "set ylabel " << quote(p.y_label) << " noenhanced\n"

@@ -16,7 +16,9 @@ struct Plot {
   bool log_x = false;
   bool log_y = false;
   std::string settings;  ///< extra gnuplot lines before the plot (ranges, keys, labels)
-  std::string plot;      ///< the plot command, e.g. "plot 'data.csv' using 1:2 with lines"
+  /// The plot command. The CSV's first row names the columns, and plots use the names:
+  /// plot 'errors.csv' using "n":"rmse" with lines
+  std::string plot;
   int width = 900;
   int height = 600;
 };
