@@ -1,0 +1,24 @@
+#pragma once
+/// Samplers of plane regions: the square [-1,1]^2 and the unit disk, each beside its pdf
+/// (per unit area). Pure functions of u in [0,1)^2.
+
+#include <cmath>
+
+#include "core/math.hpp"
+#include "sampling/unit_circle.hpp"
+
+namespace mcrt {
+
+/// Uniform on the square [-1,1]^2: x = 2u - 1. pdf = 1/4 per unit area.
+inline Vec2 sample_uniform_square(Vec2 u) { return 2.0 * u - 1.0; }
+inline double uniform_square_pdf() { return 0.25; }
+
+/// Uniform on the unit disk: r = sqrt(u0) (the area inside radius r grows as r^2),
+/// phi = 2 pi u1. pdf = 1/pi per unit area.
+inline Vec2 sample_uniform_disk(Vec2 u) {
+  const double r = std::sqrt(u.x);
+  return r * unit_circle_point(u.y);  // (cos phi, sin phi)
+}
+inline double uniform_disk_pdf() { return k_inv_pi; }
+
+}  // namespace mcrt

@@ -1,0 +1,22 @@
+#pragma once
+/// Uniform directions on the whole unit sphere, beside its pdf per steradian.
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/math.hpp"
+#include "sampling/unit_circle.hpp"
+
+namespace mcrt {
+
+/// Uniform on the unit sphere: z = 1 - 2 u0 (Archimedes: the area of a zone is linear in z),
+/// phi = 2 pi u1. pdf = 1/(4 pi) per steradian.
+inline Vec3 sample_uniform_sphere(Vec2 u) {
+  const double z = 1.0 - 2.0 * u.x;
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const Vec2 phi = unit_circle_point(u.y);  // (cos phi, sin phi)
+  return {r * phi.x, r * phi.y, z};
+}
+inline double uniform_sphere_pdf() { return 0.25 * k_inv_pi; }
+
+}  // namespace mcrt
