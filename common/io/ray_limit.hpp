@@ -1,0 +1,27 @@
+#pragma once
+/// Refusing a run too large to finish, before any work is done: a chapter predicts from its
+/// flags how many rays the run would trace and compares that with a limit.
+
+#include <string_view>
+
+namespace mcrt {
+
+/// The speed quoted when a run is refused (nothing has been measured yet): what
+/// bench_recursive_estimator measured for the Cornell box on one core of the machine these
+/// chapters were written on (2.6-2.9 million rays per second).
+inline constexpr double k_estimated_rays_per_second_per_thread = 2.5e6;
+
+/// What a refused run would have been: its predicted rays (an upper bound, and a double since a
+/// request may exceed 2^64) and, in words, what the prediction counts.
+struct RayWork {
+  double predicted_rays = 0.0;
+  std::string_view counted;  ///< e.g. "2 renders x sum of spp x pixels x (depth + 1)"
+};
+
+/// Throws UsageError (exit code 2) if work.predicted_rays > limit, with one line naming `flags`,
+/// the predicted count, about how long it would take on `threads` threads, the limit and
+/// `remedy` (what to change).
+void check_ray_limit(const RayWork& work, double limit, std::string_view flags, int threads,
+                     std::string_view remedy);
+
+}  // namespace mcrt
