@@ -2,11 +2,12 @@
 // counts, and bad input.
 
 #include <cmath>
-#include <sstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
 #include "io/image_file.hpp"
 
@@ -16,30 +17,6 @@ namespace {
 
 const std::string k_program = "ch05_path_tracer";
 
-struct CsvRow {
-  int spp;
-  double rmse, seconds;
-  long long rays;
-  double rays_per_second;
-};
-
-std::vector<CsvRow> read_rmse_csv(const std::filesystem::path& path, std::string* header) {
-  std::istringstream text(read_text(path));
-  std::getline(text, *header);
-  std::vector<CsvRow> rows;
-  std::string line;
-  while (std::getline(text, line)) {
-    CsvRow r{};
-    char comma;
-    std::istringstream fields(line);
-    fields >> r.spp >> comma >> r.rmse >> comma >> r.seconds >> comma >> r.rays >> comma >>
-        r.rays_per_second;
-    EXPECT_TRUE(fields) << line;
-    rows.push_back(r);
-  }
-  return rows;
-}
-
 TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   const auto dir = fresh_dir("ch05_smoke");
   const ProgramRun run = run_program(
@@ -48,32 +25,35 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
 
-  std::string header;
-  const std::vector<CsvRow> rows = read_rmse_csv(dir / "rmse_vs_spp.csv", &header);
-  EXPECT_EQ(header, "spp,rmse,seconds,rays,rays_per_second");
-  ASSERT_EQ(rows.size(), 3u);
+  const CsvFile csv(dir / "rmse_vs_spp.csv");
+  EXPECT_EQ(csv.header(),
+            (std::vector<std::string>{"spp", "rmse", "seconds", "rays", "rays_per_second"}));
+  ASSERT_EQ(csv.size(), 3u);
+  const std::vector<double> rmse = csv.numbers("rmse");
   const int pixels = 24 * 18, spp[] = {1, 4, 16};
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    EXPECT_EQ(rows[i].spp, spp[i]);
-    EXPECT_GT(rows[i].rmse, 0.0);
+  for (std::size_t i = 0; i < csv.size(); ++i) {
+    EXPECT_EQ(csv.number(i, "spp"), spp[i]);
+    EXPECT_GT(rmse[i], 0.0);
     // Two renders of spp samples per pixel, each path 1 to depth + 1 = 5 closest-hit queries.
-    EXPECT_GE(rows[i].rays, 2LL * pixels * spp[i]);
-    EXPECT_LE(rows[i].rays, 2LL * pixels * spp[i] * 5);
-    EXPECT_GT(rows[i].rays_per_second, 0.0);
+    const double rays = csv.number(i, "rays");
+    EXPECT_GE(rays, 2.0 * pixels * spp[i]);
+    EXPECT_LE(rays, 2.0 * pixels * spp[i] * 5);
+    EXPECT_GT(csv.number(i, "rays_per_second"), 0.0);
   }
   // 16 times the samples: a quarter of the error, here within a factor 2 either way (432
   // pixels give the RMS error to about 10% at these spp; the factor is a coarse bound for a
   // smoke run, the law itself is tested in tests/checks/path_tracer_checks.cpp).
-  EXPECT_GT(rows[2].rmse, rows[0].rmse / 8.0);
-  EXPECT_LT(rows[2].rmse, rows[0].rmse / 2.0);
+  EXPECT_GT(rmse[2], rmse[0] / 8.0);
+  EXPECT_LT(rmse[2], rmse[0] / 2.0);
 
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["non_finite_samples"], 0);
   EXPECT_EQ(summary["scene"], "cornell-spheres");
   EXPECT_EQ(summary["depth"], 4);
-  long long rays = 0;
-  for (const CsvRow& r : rows) rays += r.rays;
-  EXPECT_EQ(summary["rays"].get<long long>(), rays);
+  double rays = 0.0;
+  for (double r : csv.numbers("rays")) rays += r;
+  EXPECT_EQ(summary["rays"].get<double>(), rays);
+  EXPECT_EQ(summary["rmse_vs_spp"].size(), 3u);
   EXPECT_GT(summary["rays_per_second"].get<double>(), 0.0);
   const double slope = summary["rmse_slope"].get<double>();
   EXPECT_LT(slope, -0.2);  // coarse, as above: -1/2 within the noise of 432 pixels
