@@ -1,12 +1,13 @@
 // Hit-or-miss estimators, deterministic properties: exact ball volumes, the theory formulas,
-// the generator lanes against pcg-cpp, the AVX2 path against the portable one, thread-count
-// independence. And the statistical procedures of tests/checks must reject known-wrong
+// the generator lanes against pcg-cpp, the lecture's loop against the 16-lane engine behind
+// it, the AVX2 path against the portable one, thread-count independence. And the statistical procedures of tests/checks must reject known-wrong
 // estimators (a test that cannot fail is no test).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include <pcg_random.hpp>
 
@@ -14,6 +15,7 @@
 #include "core/pcg32_lanes.hpp"
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"
+#include "integration/disk_counter.hpp"
 
 using namespace mcrt;
 
@@ -119,6 +121,50 @@ TEST(CountInDiskTest, FastAndPortablePathsEqualThePlainReference) {
   }
 }
 
+TEST(DiskPointsTest, CoordinatesAreTheLatticeAndTheInsideTestIsExact) {
+  constexpr std::int32_t k_min = -2147483647 - 1;  // -2^31: x = -1
+  EXPECT_EQ((DiskPoint{k_min, 0}.x()), -1.0);
+  EXPECT_EQ((DiskPoint{0, 1 << 30}.y()), 0.5);
+  EXPECT_TRUE(inside_unit_disk({0, 0}));
+  // The only lattice points on the circle are (-1, 0) and (0, -1) (2^62 is a sum of two
+  // squares only as 2^62 + 0); x^2 + y^2 <= 1 counts them in.
+  EXPECT_TRUE(inside_unit_disk({k_min, 0}));
+  EXPECT_TRUE(inside_unit_disk({0, k_min}));
+  EXPECT_FALSE(inside_unit_disk({k_min, 1}));
+  // On the diagonal, 2 i^2 = 2^62 - 6.0e9 is inside and 2 (i + 1)^2 = 2^62 + 7.3e7 is not: a
+  // double's x^2 + y^2 could not tell them apart reliably, the integer test can.
+  EXPECT_TRUE(inside_unit_disk({1518500249, 1518500249}));
+  EXPECT_FALSE(inside_unit_disk({1518500250, 1518500250}));
+  EXPECT_FALSE(inside_unit_disk({1518500250, -1518500250}));
+}
+
+// The lecture's loop (estimate_disk_area) and the engine (count_in_disk) from the same stream:
+// the same M, so the same 4 M / N, and the same generator state afterwards.
+TEST(CountInDiskTest, EngineCountsWhatTheLecturesLoopCounts) {
+  std::vector<std::uint64_t> sizes;
+  for (std::uint64_t n = 0; n <= 64; ++n) sizes.push_back(n);
+  for (std::uint64_t n : {1000, 4099, 65536, 1000003}) sizes.push_back(n);
+  for (std::uint64_t seed : {1, 2, 20261122}) {
+    for (std::uint64_t n : sizes) {
+      Rng plain(seed, n), engine(seed, n), portable(seed, n);
+      const double area = estimate_disk_area(n, plain);
+      const std::uint64_t m = count_in_disk(n, engine);
+      EXPECT_EQ(count_in_disk_portable(n, portable), m) << "seed " << seed << ", n = " << n;
+      const double expected = 4.0 * static_cast<double>(m) / static_cast<double>(n);
+      if (n == 0)
+        EXPECT_TRUE(std::isnan(area));  // 0 / 0: the loop needs a point
+      else
+        EXPECT_EQ(area, expected) << "seed " << seed << ", n = " << n;
+      // Both drew their 16 lanes' seeds (64 numbers) and nothing else from the stream.
+      const std::uint32_t after = plain.next_bits();
+      EXPECT_EQ(engine.next_bits(), after) << "seed " << seed << ", n = " << n;
+      EXPECT_EQ(portable.next_bits(), after) << "seed " << seed << ", n = " << n;
+    }
+  }
+  Rng plain(3, 4), fast(3, 4);
+  EXPECT_EQ(estimate_disk_area(12345, plain), estimate_disk_area_fast(12345, fast));
+}
+
 TEST(CountInDiskTest, ParallelCountIsTheSumOfItsChunksWhateverTheThreads) {
   const std::uint64_t n = 2 * k_disk_chunk + 12345;
   std::uint64_t by_hand = 0;
@@ -189,8 +235,8 @@ TEST(DiskAreaProceduresTest, RejectKnownWrongEstimators) {
 }
 
 TEST(DiskAreaProceduresTest, AcceptTheRightEstimatorAtSmallSizes) {
-  // The same procedures, smaller, on the project's estimator (another seed than the checks):
-  // each passes with probability 1 - 1e-4.
+  // The same procedures, smaller, on the lecture's loop (another seed than the checks, which
+  // run the chapter's engine): each passes with probability 1 - 1e-4.
   const std::uint64_t seed = 77;
   EXPECT_GE(checks::variance_p_value(estimate_disk_area, 4.0, k_disk_hit_probability, 64, 2000,
                                      seed, 4),

@@ -3,9 +3,11 @@
 //   bench_disk_area
 //
 // BM_NaiveDiskArea is the reference a student would write: std::mt19937 with
-// std::uniform_real_distribution<double>, one point at a time. BM_CountInDisk is the project's
-// estimator on one core (16 PCG32 lanes, AVX2 when present), BM_CountInDiskPortable the same
-// lanes without AVX2, BM_CountInDiskParallel the project's estimator on every core. All are
+// std::uniform_real_distribution<double>, one point at a time. BM_LectureLoop is the lecture's
+// loop as the project writes it (estimate_disk_area: one point at a time from the 16 lanes).
+// BM_CountInDisk is the engine behind it on one core (integration/disk_counter.hpp, the same
+// count 16 lanes at a time, AVX2 when present), BM_CountInDiskPortable the same lanes without
+// AVX2, BM_CountInDiskParallel the engine on every core. All are
 // compiled alike (this file, the Release flags); the counter samples_per_second gives the
 // ratios within one run.
 
@@ -17,6 +19,7 @@
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 #include "integration/disk_area.hpp"
+#include "integration/disk_counter.hpp"
 
 namespace {
 
@@ -46,6 +49,17 @@ void BM_NaiveDiskArea(benchmark::State& state) {
   count_rate(state, n);
 }
 BENCHMARK(BM_NaiveDiskArea)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+void BM_LectureLoop(benchmark::State& state) {
+  const std::uint64_t n = std::uint64_t{1} << 22;
+  std::uint64_t stream = 0;
+  for (auto _ : state) {
+    mcrt::Rng rng(1, stream++);
+    benchmark::DoNotOptimize(mcrt::estimate_disk_area(n, rng));
+  }
+  count_rate(state, n);
+}
+BENCHMARK(BM_LectureLoop)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 void BM_CountInDisk(benchmark::State& state) {
   const std::uint64_t n = std::uint64_t{1} << 24;

@@ -1,6 +1,7 @@
 // Hit-or-miss estimators of chapter 02 against their closed forms: the disk estimate 4 M / N
-// (the fast lane kernel the chapter uses) has mean pi, variance 16 p (1 - p) / N and an rms
-// error falling as N^-1/2; the k-ball estimate 2^k M / N has mean V_k. Each check has
+// (the 16-lane engine the chapter runs, integration/disk_counter.hpp, which counts what the
+// lecture's loop counts) has mean pi, variance 16 p (1 - p) / N and an rms error falling as
+// N^-1/2; the k-ball estimate 2^k M / N has mean V_k. Each check has
 // false-failure rate 1e-4 (its alpha).
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include "core/math.hpp"
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"
+#include "integration/disk_counter.hpp"
 #include "stats/check.hpp"
 
 namespace {
@@ -24,22 +26,22 @@ constexpr std::uint64_t k_ball_streams = 0x0203'0000;
 // Pooled over 10 sizes x 3 trials, 1.6e7 points in all: the z-test's standard error is
 // 4 e-4, so a bias above ~2e-3 is found.
 MCRT_STATISTICAL_CHECK(disk_area_mean_is_pi, k_alpha) {
-  return mcrt::checks::pooled_mean_p_value(mcrt::estimate_disk_area, mcrt::k_pi,
+  return mcrt::checks::pooled_mean_p_value(mcrt::estimate_disk_area_fast, mcrt::k_pi,
                                            mcrt::disk_area_theory_std, 3, seed, k_mean_streams);
 }
 
 // 4000 estimates at N = 1000 (not a multiple of the 16 lanes): s^2 has a relative standard
 // error of sqrt(2 / 4000) = 2.2 %, so a variance off by 10 % is found.
 MCRT_STATISTICAL_CHECK(disk_area_variance_is_16pq_over_n, k_alpha) {
-  return mcrt::checks::variance_p_value(mcrt::estimate_disk_area, 4.0,
+  return mcrt::checks::variance_p_value(mcrt::estimate_disk_area_fast, 4.0,
                                         mcrt::k_disk_hit_probability, 1000, 4000, seed,
                                         k_variance_stream);
 }
 
 // 200 trials at each N of a 4-per-decade grid from 10 to 10^5 (17 sizes, 4.6e7 points).
 MCRT_STATISTICAL_CHECK(disk_area_error_slope_is_minus_one_half, k_alpha) {
-  return mcrt::checks::error_slope(mcrt::estimate_disk_area, mcrt::k_pi, 10, 100000, 200, seed,
-                                   k_slope_streams)
+  return mcrt::checks::error_slope(mcrt::estimate_disk_area_fast, mcrt::k_pi, 10, 100000, 200,
+                                   seed, k_slope_streams)
       .p_value;
 }
 
