@@ -1,6 +1,6 @@
 // The plain Monte Carlo estimator, deterministically: where it samples, what it returns for
 // integrands without variance, how its standard error is formed, and that the z-test the
-// statistical checks use rejects known-wrong estimators. Its mean and variance against
+// statistical checks use rejects the known-wrong estimators of tests/known_bugs/. Its mean and variance against
 // closed forms are statistical checks: tests/checks/monte_carlo_checks.cpp.
 
 #include "integration/monte_carlo.hpp"
@@ -12,6 +12,7 @@
 
 #include "integration/integrands.hpp"
 #include "integration/statistics.hpp"
+#include "known_bugs/estimators.hpp"
 #include "stats/hypothesis.hpp"
 
 namespace {
@@ -107,17 +108,14 @@ TEST(MonteCarlo, ZTestRejectsKnownWrongEstimators) {
   const double standard_error = std::sqrt(mcrt::monte_carlo_variance(
       cubic.domain.length(), cubic.reference(), cubic.integral_of_square(), n));
   Rng rng(42, 0), rng_short(42, 1), rng_right(42, 2);
-  // Forgot vol: 1/N sum f(X_i), which estimates I / vol.
-  const double no_volume = mcrt::monte_carlo(cubic, cubic.domain, n, rng).estimate /
-                           cubic.domain.length();
-  EXPECT_LT(mcrt::stats::z_test_p_value(no_volume, cubic.reference(), standard_error), 1e-4);
-  // Samples from a slightly short interval, weighted by the full length.
-  const double short_range =
-      mcrt::monte_carlo(cubic, Segment{0.0, 1.98}, n, rng_short).estimate / 1.98 * 2.0;
-  EXPECT_LT(mcrt::stats::z_test_p_value(short_range, cubic.reference(), standard_error), 1e-4);
+  const auto p = [&](double estimate) {
+    return mcrt::testing::z_test_p_value(estimate, cubic.reference(), standard_error);
+  };
+  EXPECT_LT(p(mcrt::testing::monte_carlo_without_volume(cubic, cubic.domain, n, rng)), 1e-4);
+  EXPECT_LT(p(mcrt::testing::monte_carlo_on_short_interval(cubic, cubic.domain, n, rng_short)),
+            1e-4);
   // The right estimator passes at this seed (its own false-failure rate is 1e-4).
-  const double right = mcrt::monte_carlo(cubic, cubic.domain, n, rng_right).estimate;
-  EXPECT_GE(mcrt::stats::z_test_p_value(right, cubic.reference(), standard_error), 1e-4);
+  EXPECT_GE(p(mcrt::monte_carlo(cubic, cubic.domain, n, rng_right).estimate), 1e-4);
 }
 
 }  // namespace

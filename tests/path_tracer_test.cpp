@@ -1,6 +1,7 @@
-// The path tracer of chapter 05 (common/path_tracer.hpp): where its directions go, that it
-// stays finite on the geometry's edge cases, exact furnace cases, independence of the thread
-// count, and that the furnace z-test of tests/checks/ rejects known-wrong tracers.
+// The path tracer of chapter 05 (common/render/path_tracer.hpp): where its directions go, that
+// it stays finite on the geometry's edge cases, exact furnace cases, independence of the thread
+// count, and that the furnace z-test of the checks rejects the known-wrong tracers of
+// tests/known_bugs/path_tracers.hpp.
 // (Its statistical checks against closed forms are in tests/checks/path_tracer_checks.cpp.)
 
 #include <gtest/gtest.h>
@@ -8,12 +9,15 @@
 #include <cmath>
 #include <vector>
 
-#include "checks/furnace_paths.hpp"
 #include "io/image_file.hpp"
+#include "known_bugs/path_tracers.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
+#include "sampling/sphere.hpp"
+#include "stats/check.hpp"
+#include "support/furnace_paths.hpp"
 
 using namespace mcrt;
 
@@ -27,17 +31,12 @@ Color trace(const Scene& scene, const Ray& ray, std::uint64_t stream, int depth 
   return estimate_path_radiance(scene, ray, depth, rng, count);
 }
 
-Vec3 random_unit(Rng& rng) {
-  const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
-  return rng.uniform() < 0.5 ? local : -local;
-}
-
 TEST(PathTracerTest, BounceDirectionsLieInTheNormalsHemisphere) {
   // The tracer's new direction is Frame(n).to_world(local) with local.z = cos(theta_i).
   Rng rng(1, 0);
   std::vector<Vec3> normals{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0},
                             glm::normalize(Vec3(1e-9, 0, -1))};
-  for (int i = 0; i < 200; ++i) normals.push_back(random_unit(rng));
+  for (int i = 0; i < 200; ++i) normals.push_back(sample_uniform_sphere(rng.uniform2()));
   const std::vector<Vec2> corners{{0, 0}, {0, 0.999999}, {0.999999, 0}, {0.999999, 0.999999}};
   for (const Vec3& n : normals) {
     std::vector<Vec2> us = corners;
@@ -116,7 +115,7 @@ TEST(PathTracerTest, RaysTangentToSpheresStayFinite) {
   // Tangent rays: through a point of the sphere, perpendicular to its normal there.
   Rng rng(4, 0);
   for (int i = 0; i < 200; ++i) {
-    const Vec3 n = random_unit(rng);
+    const Vec3 n = sample_uniform_sphere(rng.uniform2());
     const Vec3 tangent = Frame(n).tangent;
     const Vec3 touch = ball.center + ball.radius * n;
     expect_finite_and_non_negative(scene, {touch - 10.0 * tangent, tangent},
@@ -153,7 +152,7 @@ TEST(PathTracerTest, RaysStartingOnASurfaceStayFinite) {
     for (int i = 0; i < 300; ++i) {
       const auto hit = scene.closest_hit(camera.generate_ray(16 * rng.uniform(), 16 * rng.uniform()));
       if (!hit) continue;  // out through the open front of the box
-      expect_finite_and_non_negative(scene, {hit->point, random_unit(rng)},
+      expect_finite_and_non_negative(scene, {hit->point, sample_uniform_sphere(rng.uniform2())},
                                      static_cast<std::uint64_t>(i));
     }
   }
@@ -200,74 +199,21 @@ TEST(PathTracerTest, ImagesAreIdenticalWithOneAndTwoThreads) {
   EXPECT_GT(mean_radiance(one.image), 0.0);
 }
 
-// Known-wrong tracers: the furnace z-test of the statistical checks (same sample size, same
-// alpha = 1e-4) must reject each of them.
-Color without_cosine(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& count) {
-  Color radiance(0.0), beta(1.0);
-  for (int bounce = 0;; ++bounce) {
-    const auto hit = scene.closest_hit(ray);
-    if (!hit) break;
-    radiance += beta * scene.material(*hit).emission;
-    if (bounce == depth) break;
-    const Vec3 wi = Frame(hit->normal).to_world(sample_uniform_hemisphere(rng.uniform2()));
-    beta *= scene.material(*hit).brdf() / uniform_hemisphere_pdf();  // missing cos(theta_i)
-    ray = spawn_ray(*hit, wi);
-    ++count.rays;
-  }
-  return radiance;
-}
-
-Color pdf_of_the_sphere(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& count) {
-  Color radiance(0.0), beta(1.0);
-  for (int bounce = 0;; ++bounce) {
-    const auto hit = scene.closest_hit(ray);
-    if (!hit) break;
-    radiance += beta * scene.material(*hit).emission;
-    if (bounce == depth) break;
-    const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
-    const Vec3 wi = Frame(hit->normal).to_world(local);
-    beta *= scene.material(*hit).brdf() * local.z / (1.0 / (4.0 * k_pi));  // a factor 2 off
-    ray = spawn_ray(*hit, wi);
-    ++count.rays;
-  }
-  return radiance;
-}
-
-Color cosine_directions_uniform_weights(const Scene& scene, Ray ray, int depth, Rng& rng,
-                                        RayCount& count) {
-  Color radiance(0.0), beta(1.0);
-  for (int bounce = 0;; ++bounce) {
-    const auto hit = scene.closest_hit(ray);
-    if (!hit) break;
-    radiance += beta * scene.material(*hit).emission;
-    if (bounce == depth) break;
-    const Vec3 local = sample_cosine_hemisphere(rng.uniform2());  // sampled with cos/pi ...
-    const Vec3 wi = Frame(hit->normal).to_world(local);
-    beta *= scene.material(*hit).brdf() * local.z / uniform_hemisphere_pdf();  // ... 1/(2pi)
-    ray = spawn_ray(*hit, wi);
-    ++count.rays;
-  }
-  return radiance;
-}
-
+// Known-wrong tracers: the furnace z-test of the check path_tracer_furnace_mean_a05_k4 (same
+// setup, sample size, seed and block of streams, alpha = 1e-4) must reject each of them.
 TEST(PathTracerTest, FurnaceTestRejectsKnownWrongTracers) {
-  const mcrt::testing::FurnaceSetup setup{0.5, 1.0, 4};
-  const std::uint64_t seed = 20261122;
-  const int n = 40000;  // as in tests/checks/path_tracer_checks.cpp
+  using namespace mcrt::testing;
+  const FurnaceSetup setup{0.5, 1.0, 4};
+  const int n = 40000;
+  const auto p = [&](auto tracer) {
+    return furnace_mean_p_value(setup, furnace_samples(setup, n, k_suite_seed, 2, tracer));
+  };
   // The right tracer passes at this seed (its false-failure rate is 1e-4)...
-  EXPECT_GE(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, mcrt::testing::chapter_path_tracer)),
-            1e-4);
+  EXPECT_GE(p(chapter_path_tracer), 1e-4);
   // ... and every wrong one is rejected.
-  EXPECT_LT(mcrt::testing::furnace_mean_p_value(setup,
-                                          mcrt::testing::furnace_samples(setup, n, seed, 1, without_cosine)),
-            1e-4);
-  EXPECT_LT(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, pdf_of_the_sphere)),
-            1e-4);
-  EXPECT_LT(mcrt::testing::furnace_mean_p_value(
-                setup, mcrt::testing::furnace_samples(setup, n, seed, 1, cosine_directions_uniform_weights)),
-            1e-4);
+  EXPECT_LT(p(path_radiance_without_cosine), 1e-4);
+  EXPECT_LT(p(path_radiance_with_sphere_pdf), 1e-4);
+  EXPECT_LT(p(path_radiance_cosine_directions_uniform_pdf), 1e-4);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@
 #include "stats/trials.hpp"
 
 using namespace mcrt;
-using namespace mcrt::stats;
+using namespace mcrt::testing;
 
 namespace {
 

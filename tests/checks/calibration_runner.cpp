@@ -39,7 +39,7 @@
 #include "stats/report.hpp"
 
 using namespace mcrt;
-using namespace mcrt::stats;
+using namespace mcrt::testing;
 
 namespace {
 

@@ -29,7 +29,7 @@ double unbiased_p_value(const Integrand& f, const Domain& domain, double volume,
     estimates.add(mcrt::monte_carlo(f, domain, n, rng).estimate);
   }
   const double v_f_n = mcrt::monte_carlo_variance(volume, f.reference(), f.integral_of_square(), n);
-  return mcrt::stats::z_test_p_value(estimates.mean(), f.reference(), std::sqrt(v_f_n / trials));
+  return mcrt::testing::z_test_p_value(estimates.mean(), f.reference(), std::sqrt(v_f_n / trials));
 }
 
 // The slide's x^3 on [0, 2]: I = 4, J = 2^7/7. 200 trials of N = 1000.
@@ -71,7 +71,7 @@ MCRT_STATISTICAL_CHECK(monte_carlo_variance_matches_closed_form, 1e-4) {
   }
   const double v_f_n =
       mcrt::monte_carlo_variance(f.domain.length(), f.reference(), f.integral_of_square(), n);
-  return mcrt::stats::variance_test_p_value(estimates.variance(), trials, v_f_n);
+  return mcrt::testing::variance_test_p_value(estimates.variance(), trials, v_f_n);
 }
 
 // The rmse slope. At each N of a log grid (30 .. 3000, 10 per decade: 21 points), the
@@ -104,7 +104,7 @@ MCRT_STATISTICAL_CHECK(monte_carlo_rmse_slope_is_minus_one_half, 1e-4) {
   for (double n : n_values) mean_log_n += std::log(n) / static_cast<double>(n_values.size());
   for (double n : n_values) sxx += (std::log(n) - mean_log_n) * (std::log(n) - mean_log_n);
   const double slope_sd = std::sqrt(boost::math::trigamma(trials / 2.0) / 4.0 / sxx);
-  return mcrt::stats::z_test_p_value(fit.slope, -0.5, slope_sd);
+  return mcrt::testing::z_test_p_value(fit.slope, -0.5, slope_sd);
 }
 
 }  // namespace

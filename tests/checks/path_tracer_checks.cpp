@@ -1,4 +1,4 @@
-// The path tracer of chapter 05 (common/path_tracer.hpp) against closed forms and against an
+// The path tracer of chapter 05 (common/render/path_tracer.hpp) against closed forms and against an
 // independent renderer:
 //  - furnace: the mean radiance after k bounces is Le (1 - a^(k+1)) / (1 - a) (z-tests for
 //    several a and k) and its variance is furnace_radiance_variance (z-tests of the sample
@@ -13,7 +13,6 @@
 #include <optional>
 #include <vector>
 
-#include "checks/furnace_paths.hpp"
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
 #include "render/path_tracer.hpp"
@@ -21,6 +20,7 @@
 #include "render/scene.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
+#include "support/furnace_paths.hpp"
 
 namespace {
 
@@ -57,37 +57,16 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a02_k2, 1e-4) {
 
 // ---------------------------------------------------------------------------------------------
 // Furnace: the variance. The samples are not normal, so the chi-square variance test does not
-// apply; the sample variance s^2 of n values has variance (mu4 - sigma^4 (n - 3)/(n - 1)) / n,
-// with mu4 the fourth central moment, estimated here from the same samples (consistent, and
-// the samples are bounded, so every moment exists). At n = 4e4 the sample variance is close
-// to normal (CLT), so a z-test on it holds its false-failure rate.
+// apply; the suite's variance z-test (stats/hypothesis.hpp) takes their kurtosis from the same
+// samples (consistent, and the samples are bounded, so every moment exists). At n = 4e4 the
+// sample variance is close to normal (CLT), so the test holds its false-failure rate.
 
 double furnace_variance_check(std::uint64_t seed, std::uint64_t block,
                               const FurnaceSetup& setup) {
-  std::vector<double> x;
-  x.reserve(k_furnace_paths);
-  mcrt::testing::furnace_samples(setup, k_furnace_paths, seed, block,
-                           [&](const Scene& s, const Ray& ray, int depth, Rng& rng,
-                               RayCount& count) {
-                             const Color c = estimate_path_radiance(s, ray, depth, rng, count);
-                             x.push_back(average(c));
-                             return c;
-                           });
-  const double n = static_cast<double>(x.size());
-  double mean = 0.0;
-  for (double v : x) mean += v;
-  mean /= n;
-  double m2 = 0.0, m4 = 0.0;
-  for (double v : x) {
-    const double d2 = (v - mean) * (v - mean);
-    m2 += d2;
-    m4 += d2 * d2;
-  }
-  const double sample_variance = m2 / (n - 1.0);
-  const double mu4 = m4 / n, sigma2 = m2 / n;
-  const double variance_of_variance = (mu4 - sigma2 * sigma2 * (n - 3.0) / (n - 1.0)) / n;
+  const std::vector<double> values =
+      mcrt::testing::furnace_radiance_values(setup, k_furnace_paths, seed, block);
   const double expected = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
-  return stats::z_test_p_value(sample_variance, expected, std::sqrt(variance_of_variance));
+  return mcrt::testing::variance_z_test_p_value(values, expected);
 }
 
 MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a05_k4, 1e-4) {
@@ -148,7 +127,7 @@ MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
   }
   const double sxx = sum_wxx - sum_wx * sum_wx / sum_w;
   const double mse_slope = (sum_wxy - sum_wx * sum_wy / sum_w) / sxx;
-  return stats::z_test_p_value(mse_slope / 2.0, -0.5, 0.5 / std::sqrt(sxx));
+  return mcrt::testing::z_test_p_value(mse_slope / 2.0, -0.5, 0.5 / std::sqrt(sxx));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -275,7 +254,7 @@ MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_sphe
     const Vec3 d = ours.mean() - reference.mean();
     const glm::dmat3 s = ours.covariance_of_mean() + reference.covariance_of_mean();
     const double chi_square = glm::dot(d, glm::inverse(s) * d);
-    p_min = std::min(p_min, stats::chi_square_upper_tail(chi_square, 3.0));
+    p_min = std::min(p_min, mcrt::testing::chi_square_upper_tail(chi_square, 3.0));
   }
   return -std::expm1(k_tiles * std::log1p(-p_min));  // 1 - (1 - p_min)^tiles, without round-off
 }

@@ -13,7 +13,7 @@
 #include "stats/sampler_tests.hpp"
 
 using namespace mcrt;
-using namespace mcrt::stats;
+using namespace mcrt::testing;
 
 namespace {
 

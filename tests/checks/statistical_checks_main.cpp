@@ -9,23 +9,23 @@ namespace {
 
 class CheckTest : public ::testing::Test {
  public:
-  explicit CheckTest(const mcrt::stats::StatisticalCheck& check) : check_(check) {}
+  explicit CheckTest(const mcrt::testing::StatisticalCheck& check) : check_(check) {}
   void TestBody() override {
-    const double p = check_.p_value(mcrt::stats::k_suite_seed);
+    const double p = check_.p_value(mcrt::testing::k_suite_seed);
     EXPECT_GE(p, check_.alpha) << check_.name << " rejected at seed "
-                               << mcrt::stats::k_suite_seed << ": p = " << p
+                               << mcrt::testing::k_suite_seed << ": p = " << p
                                << " < alpha = " << check_.alpha;
   }
 
  private:
-  const mcrt::stats::StatisticalCheck& check_;
+  const mcrt::testing::StatisticalCheck& check_;
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  for (const auto& check : mcrt::stats::statistical_checks())
+  for (const auto& check : mcrt::testing::statistical_checks())
     ::testing::RegisterTest("StatisticalCheck", check.name.c_str(), nullptr, nullptr, __FILE__,
                             __LINE__, [&check]() -> ::testing::Test* { return new CheckTest(check); });
   return RUN_ALL_TESTS();

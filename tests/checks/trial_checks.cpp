@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "checks/small_trials.hpp"
+#include "support/small_trials.hpp"
 #include "core/rng.hpp"
 #include "integration/statistics.hpp"
 #include "stats/check.hpp"
@@ -15,7 +15,7 @@ namespace {
 // 4000 trials of F_16 for e^(-x^2) on [0, 1]: mean and variance against the closed forms.
 // False-failure rate alpha = 1e-4.
 MCRT_STATISTICAL_CHECK(monte_carlo_trials_unbiased_and_independent_at_n16, 1e-4) {
-  return mcrt::checks::small_trials_p_value(mcrt::checks::gaussian_estimate, seed);
+  return mcrt::testing::small_trials_p_value(mcrt::testing::gaussian_estimate, seed);
 }
 
 }  // namespace
@@ -45,9 +45,9 @@ MCRT_STATISTICAL_CHECK(consecutive_streams_are_independent, 1e-4) {
   }
   std::array<double, k_draws> p{};
   for (int k = 0; k < k_draws; ++k)
-    p[k] = mcrt::stats::variance_test_p_value(group_means[k].variance(), k_groups,
+    p[k] = mcrt::testing::variance_test_p_value(group_means[k].variance(), k_groups,
                                               1.0 / (12.0 * k_group_size));
-  return mcrt::stats::sidak_p_value(p);
+  return mcrt::testing::sidak_p_value(p);
 }
 
 }  // namespace

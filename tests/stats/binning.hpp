@@ -14,7 +14,7 @@
 
 #include "core/math.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// A rectangle of parameters (u, v) cut into u_cells x v_cells equal cells; cell
 /// (i, j) has index j * u_cells + i.
@@ -117,4 +117,4 @@ inline Binning<Vec3> hemisphere_binning(int phi_cells, int cos_theta_cells) {
           &detail::hemisphere_parameters};
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

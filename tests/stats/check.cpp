@@ -1,10 +1,10 @@
 #include "stats/check.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 std::vector<StatisticalCheck>& statistical_checks() {
   static std::vector<StatisticalCheck> checks;
   return checks;
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -11,7 +11,7 @@
 //
 //   MCRT_STATISTICAL_CHECK(disk_area_mean_is_pi, 1e-4) {
 //     ... draw with mcrt::Rng(seed, stream) ...
-//     return mcrt::stats::z_test_p_value(estimate, k_pi, standard_error);
+//     return mcrt::testing::z_test_p_value(estimate, k_pi, standard_error);
 //   }
 
 #include <cstdint>
@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// The seed every check uses in the default test run.
 inline constexpr std::uint64_t k_suite_seed = 20261122;
@@ -39,9 +39,9 @@ struct CheckRegistrar {
   }
 };
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing
 
 #define MCRT_STATISTICAL_CHECK(name, alpha)                                               \
   static double name(std::uint64_t seed);                                                 \
-  static const ::mcrt::stats::CheckRegistrar name##_registrar{#name, alpha, &name};     \
+  static const ::mcrt::testing::CheckRegistrar name##_registrar{#name, alpha, &name};   \
   static double name([[maybe_unused]] std::uint64_t seed)

@@ -13,7 +13,7 @@
 #include "stats/hypothesis.hpp"
 #include "stats/report.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 namespace fs = std::filesystem;
 
@@ -137,4 +137,4 @@ void report_chi_square_failure(const SamplerTest& test, const ChiSquareResult& r
   }
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -20,7 +20,7 @@
 #include "core/rng.hpp"
 #include "stats/binning.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// Below this many expected samples a cell is pooled with the other small cells: the
 /// chi-square approximation of Pearson's statistic needs E_c >= 5 (Cochran's rule).
@@ -148,4 +148,4 @@ double chi_square_sampler_p_value(const Sampler& sample, const Pdf& pdf,
   return result.p_value;
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

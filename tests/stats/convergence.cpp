@@ -5,7 +5,7 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 SlopeEstimate log_log_slope(std::span<const double> n, std::span<const double> error,
                             double level) {
@@ -29,4 +29,4 @@ double slope_p_value(const SlopeEstimate& fit, double expected_slope) {
   return 2.0 * bm::cdf(bm::complement(bm::students_t(fit.dof), t));
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

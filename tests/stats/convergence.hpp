@@ -9,7 +9,7 @@
 #include "integration/statistics.hpp"
 #include "stats/hypothesis.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// A fitted slope with its confidence interval.
 struct SlopeEstimate {
@@ -31,4 +31,4 @@ SlopeEstimate log_log_slope(std::span<const double> n, std::span<const double> e
 /// t = (slope - expected) / standard_error with points - 2 degrees of freedom.
 double slope_p_value(const SlopeEstimate& fit, double expected_slope);
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

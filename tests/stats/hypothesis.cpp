@@ -10,7 +10,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 namespace bm = boost::math;
 
@@ -48,6 +48,27 @@ double variance_z_test_p_value(double sample_variance, std::uint64_t n,
   const double variance_of_s2 =
       (fourth_central_moment - sigma4 * (count - 3.0) / (count - 1.0)) / count;
   return z_test_p_value(sample_variance, expected_variance, std::sqrt(variance_of_s2));
+}
+
+double variance_z_test_p_value(std::span<const double> values, double expected_variance) {
+  const auto n = static_cast<double>(values.size());
+  double mean = 0.0;
+  for (double x : values) mean += x;
+  mean /= n;
+  double m2 = 0.0, m4 = 0.0;  // central moments, divided by n
+  for (double x : values) {
+    const double d2 = (x - mean) * (x - mean);
+    m2 += d2;
+    m4 += d2 * d2;
+  }
+  m2 /= n;
+  m4 /= n;
+  const double sample_variance = m2 * n / (n - 1.0);
+  if (!(m2 > 0.0) || !(expected_variance > 0.0))
+    return sample_variance == expected_variance ? 1.0 : 0.0;
+  const double kurtosis = m4 / (m2 * m2);
+  return variance_z_test_p_value(sample_variance, values.size(), expected_variance,
+                                 kurtosis * expected_variance * expected_variance);
 }
 
 double chi_square_upper_tail(double x, double dof) {
@@ -117,4 +138,4 @@ double ks_p_value(double d, std::uint64_t n) {
   return std::clamp(2.0 * sum, 0.0, 1.0);
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <system_error>
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 namespace fs = std::filesystem;
 
@@ -24,4 +24,4 @@ fs::path failure_report_root() {
 void set_failure_reports(bool enabled) { reports_enabled = enabled; }
 bool failure_reports_enabled() { return reports_enabled; }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// The folder failure reports go to: $MCRT_TEST_REPORT_DIR when set, else `test-reports/`
 /// in the build tree (beside the bin/ folder that holds the running test executable).
@@ -15,4 +15,4 @@ std::filesystem::path failure_report_root();
 void set_failure_reports(bool enabled);
 bool failure_reports_enabled();
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -13,7 +13,7 @@
 #include "stats/binning.hpp"
 #include "stats/chi_square.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// Each sampler's test draws from its own generator stream (with the suite's seed), so the
 /// tests are independent of each other: the disk's (r^2, phi) and the hemisphere's
@@ -62,4 +62,4 @@ double hemisphere_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::ui
                                     {name, k_sampler_samples, stream, k_sampler_alpha});
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

@@ -4,7 +4,7 @@
 
 #include "stats/hypothesis.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 RunningStats summarize(std::span<const double> values) {
   RunningStats stats;
@@ -20,4 +20,4 @@ double trials_p_value(std::span<const double> estimates, double mean, double var
   return sidak_p_value(p);
 }
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing

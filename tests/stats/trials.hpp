@@ -12,7 +12,7 @@
 #include "integration/statistics.hpp"
 #include "stats/hypothesis.hpp"
 
-namespace mcrt::stats {
+namespace mcrt::testing {
 
 /// Runs `trials` independent trials estimate(rng) in parallel; trial t draws from
 /// Rng(seed, t), so the results do not depend on the threads.
@@ -54,5 +54,5 @@ double mean_p_value(const Draw& draw, std::uint64_t count, std::uint64_t seed,
 /// The mean and variance of values, as RunningStats.
 RunningStats summarize(std::span<const double> values);
 
-}  // namespace mcrt::stats
+}  // namespace mcrt::testing
 

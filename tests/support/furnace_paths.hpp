@@ -1,21 +1,22 @@
 #pragma once
-// Path-tracer samples in the furnace, shared by the furnace checks and by the unit tests that
-// show those checks reject known-wrong tracers.
+// Path-tracer samples in the furnace, shared by the furnace checks (tests/checks/) and by the
+// unit tests that show those checks reject the known-wrong tracers of tests/known_bugs/.
 //
 // In the furnace (albedo a, emission Le everywhere) the radiance after at most k bounces is
 // Le (1 - a^(k+1)) / (1 - a) in every direction, with the variance furnace_radiance_variance
-// (common/path_tracer.hpp). The z-test compares the mean of n paths with it, using that
+// (common/render/path_tracer.hpp). The z-test compares the mean of n paths with it, using that
 // closed-form standard error sqrt(Var / n); n is large enough for the central limit theorem
 // (every sample is bounded by Le (1 + 2a + ... + (2a)^k)).
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "integration/statistics.hpp"
 #include "render/path_tracer.hpp"
 #include "render/scene.hpp"
+#include "sampling/sphere.hpp"
 #include "stats/hypothesis.hpp"
 
 namespace mcrt::testing {
@@ -37,9 +38,7 @@ RunningStats furnace_samples(const FurnaceSetup& setup, int n, std::uint64_t see
   RayCount count;
   for (int i = 0; i < n; ++i) {
     Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
-    const Vec2 u = rng.uniform2();
-    const double z = 1.0 - 2.0 * u.x, r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const Ray ray{Vec3(0.0), {r * std::cos(k_two_pi * u.y), r * std::sin(k_two_pi * u.y), z}};
+    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
     samples.add(average(estimate(scene, ray, setup.depth, rng, count)));
   }
   return samples;
@@ -49,8 +48,23 @@ RunningStats furnace_samples(const FurnaceSetup& setup, int n, std::uint64_t see
 inline double furnace_mean_p_value(const FurnaceSetup& setup, const RunningStats& samples) {
   const double expected = furnace_radiance(setup.albedo, setup.emission, setup.depth);
   const double variance = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
-  return stats::z_test_p_value(samples.mean(), expected,
+  return z_test_p_value(samples.mean(), expected,
                                std::sqrt(variance / static_cast<double>(samples.count())));
+}
+
+/// The furnace radiance of n paths of the chapter's tracer, one value (the channel mean) per
+/// path, for the variance test.
+inline std::vector<double> furnace_radiance_values(const FurnaceSetup& setup, int n,
+                                                   std::uint64_t seed, std::uint64_t block) {
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(n));
+  furnace_samples(setup, n, seed, block,
+                  [&](const Scene& scene, const Ray& ray, int depth, Rng& rng, RayCount& count) {
+                    const Color c = estimate_path_radiance(scene, ray, depth, rng, count);
+                    values.push_back(average(c));
+                    return c;
+                  });
+  return values;
 }
 
 /// The path tracer under test, as the callable furnace_samples takes.
