@@ -9,19 +9,24 @@
 // Light reaches a surface only straight from the point light: no bounces, so no colour bleeding
 // and a ceiling lit by nothing but the lamp's own glow.
 
-#include <cstdio>
-#include <iostream>
+#include <fmt/format.h>
 
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
+#include "io/render_summary.hpp"
 #include "io/summary.hpp"
 #include "render/render.hpp"
+#include "render/render_totals.hpp"
 #include "render/scene.hpp"
 
 using namespace mcrt;
 
 namespace {
+
+const Chapter k_chapter{"ch01_ray_tracing",
+                        "Chapter 01: plain ray tracing. One camera ray per sample, the closest "
+                        "hit, shaded by direct light from a point light (no bounces)."};
 
 struct Options {
   CommonOptions common;
@@ -52,6 +57,26 @@ Color trace(const Scene& scene, const Ray& ray, RayCount& count) {
   return hit ? shade(scene, *hit, count) : Color(0.0);
 }
 
+void write_summary(const CLI::App& app, const Options& o, const RenderResult& result) {
+  Json summary = start_summary(k_chapter, o.common);
+  add_render_setup(summary, o.scene, o.image);
+  summary["spp"] = o.spp;
+  add_render_totals(summary, totals_of(result));
+  summary["mean_radiance"] = mean_radiance(result.image);
+  summary["flags"] = flags_json(app);
+  write_json(o.common.out / "summary.json", summary);
+}
+
+void print_summary(const Options& o, const RenderResult& result) {
+  fmt::print("{}  scene {}  {}x{}  {} spp  {} threads\n", k_chapter.name, o.scene.scene,
+             o.image.width, o.image.height, o.spp, o.common.threads);
+  fmt::print("  rays traced      {} (camera + shadow)\n", result.rays);
+  fmt::print("  time             {:.3f} s\n", result.seconds);
+  fmt::print("  rays per second  {:.3g}\n", result.rays_per_second());
+  fmt::print("  mean radiance    {:.4f}\n", mean_radiance(result.image));
+  fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json}}\n", o.common.out.string());
+}
+
 int run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
@@ -68,44 +93,17 @@ int run(const CLI::App& app, const Options& o) {
 
   write_png(o.common.out / "image.png", result.image);
   write_pfm(o.common.out / "image.pfm", result.image);
-  Json summary;
-  summary["chapter"] = "ch01_ray_tracing";
-  summary["scene"] = o.scene.scene;
-  summary["width"] = o.image.width;
-  summary["height"] = o.image.height;
-  summary["spp"] = o.spp;
-  summary["seed"] = o.common.seed;
-  summary["threads"] = o.common.threads;
-  summary["rays"] = result.rays;
-  summary["seconds"] = result.seconds;
-  summary["rays_per_second"] = result.rays_per_second();
-  summary["mean_radiance"] = mean_radiance(result.image);
-  summary["non_finite_samples"] = result.non_finite_samples;
-  summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
-
-  if (!o.common.quiet) {
-    std::printf("ch01_ray_tracing  scene %s  %dx%d  %d spp  %d threads\n", o.scene.scene.c_str(),
-                o.image.width, o.image.height, o.spp, o.common.threads);
-    std::printf("  rays traced      %llu (camera + shadow)\n",
-                static_cast<unsigned long long>(result.rays));
-    std::printf("  time             %.3f s\n", result.seconds);
-    std::printf("  rays per second  %.3g\n", result.rays_per_second());
-    std::printf("  mean radiance    %.4f\n", mean_radiance(result.image));
-    std::printf("  wrote            %s/{image.png,image.pfm,summary.json}\n",
-                o.common.out.string().c_str());
-  }
+  write_summary(app, o, result);
+  if (!o.common.quiet) print_summary(o, result);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Chapter 01: plain ray tracing. One camera ray per sample, the closest hit, "
-               "shaded by direct light from a point light (no bounces).",
-               "ch01_ray_tracing"};
+  CLI::App app{k_chapter.description, k_chapter.name};
   Options o;
-  add_common_options(app, o.common, Chapter{"ch01_ray_tracing", ""});
+  add_common_options(app, o.common, k_chapter);
   add_scene_options(app, o.scene);
   add_image_options(app, o.image);
   app.add_option("--spp", o.spp, "Jittered samples per pixel")->check(CLI::Range(1, 1 << 16));
