@@ -3,13 +3,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
 #include "render/recursive_estimator.hpp"
 
@@ -24,38 +23,10 @@ const std::string k_tiny = "--width 8 --height 6 --spp 1 --branching 2,1 --max-d
                            "--equal-cost-depth 1 --budget 6 --quiet";
 constexpr std::uint64_t k_pixels = 8 * 6;
 
-using Table = std::vector<std::vector<std::string>>;
-
-// The rows of a CSV file, the header row first.
-Table read_csv(const std::filesystem::path& path) {
-  Table rows;
-  std::istringstream lines(read_text(path));
-  for (std::string line; std::getline(lines, line);) {
-    std::vector<std::string> cells;
-    std::istringstream fields(line);
-    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-std::string header(const Table& table) {
+// The header row of a CSV file, as written.
+std::string header(const CsvFile& csv) {
   std::string text;
-  for (const std::string& cell : table.at(0)) text += (text.empty() ? "" : ",") + cell;
-  return text;
-}
-
-// The CSV without the named columns (timings, which no two runs share).
-std::string without_columns(const Table& table, const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& row : table) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      bool dropped = false;
-      for (const std::string& name : names) dropped |= table[0][c] == name;
-      if (!dropped) text += row[c] + ",";
-    }
-    text += "\n";
-  }
+  for (const std::string& name : csv.header()) text += (text.empty() ? "" : ",") + name;
   return text;
 }
 
@@ -65,50 +36,54 @@ TEST(Ch04Test, TinySweepWritesItsTablesPlotsAndSummary) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(run.out.empty());  // --quiet
 
-  const Table rays = read_csv(dir / "rays.csv");
+  const CsvFile rays(dir / "rays.csv");
   EXPECT_EQ(header(rays),
             "branching,depth,rays,predicted_max_rays,seconds,rays_per_second,mean_radiance");
-  ASSERT_EQ(rays.size(), 1u + 2 * 3);  // N = 1, 2 (sorted), k = 0, 1, 2
+  ASSERT_EQ(rays.size(), 2u * 3);  // N = 1, 2 (sorted), k = 0, 1, 2
   double previous_n1_mean = -1.0;
-  for (std::size_t i = 1; i < rays.size(); ++i) {
-    const int n = std::stoi(rays[i][0]), k = std::stoi(rays[i][1]);
-    EXPECT_EQ(n, i <= 3 ? 1 : 2);
-    EXPECT_EQ(k, static_cast<int>((i - 1) % 3));
-    const std::uint64_t traced = std::stoull(rays[i][2]), predicted = std::stoull(rays[i][3]);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const int n = std::stoi(rays.text(i, "branching")), k = std::stoi(rays.text(i, "depth"));
+    EXPECT_EQ(n, i < 3 ? 1 : 2);
+    EXPECT_EQ(k, static_cast<int>(i % 3));
+    const std::uint64_t traced = std::stoull(rays.text(i, "rays"));
+    const std::uint64_t predicted = std::stoull(rays.text(i, "predicted_max_rays"));
     EXPECT_EQ(predicted, k_pixels * mcrt::max_rays_per_sample(n, k));
     EXPECT_LE(traced, predicted);
     if (k == 0) {
       EXPECT_EQ(traced, k_pixels);  // one camera ray per pixel, counted even if it escapes
     }
-    EXPECT_GE(std::stod(rays[i][4]), 0.0);
-    const double mean = std::stod(rays[i][6]);
-    EXPECT_TRUE(std::isfinite(mean) && mean >= 0.0) << rays[i][6];
+    EXPECT_GE(rays.number(i, "seconds"), 0.0);
+    const double mean = rays.number(i, "mean_radiance");
+    EXPECT_TRUE(std::isfinite(mean) && mean >= 0.0) << rays.text(i, "mean_radiance");
     if (n == 1) {  // N = 1: one bounce deeper extends the same paths, so never darker
       EXPECT_GE(mean, previous_n1_mean);
       previous_n1_mean = mean;
     }
   }
 
-  const Table equal_cost = read_csv(dir / "equal_cost.csv");
+  const CsvFile equal_cost(dir / "equal_cost.csv");
   EXPECT_EQ(header(equal_cost),
             "branching,depth,spp,predicted_rays_per_pixel,rays_per_pixel,seconds,mean_radiance,"
             "rms_error,relative_rms_error,rms_error_at_budget");
-  ASSERT_EQ(equal_cost.size(), 3u);
-  for (std::size_t i = 1; i < equal_cost.size(); ++i) {
-    const int n = std::stoi(equal_cost[i][0]), spp = std::stoi(equal_cost[i][2]);
-    EXPECT_EQ(std::stoi(equal_cost[i][1]), 1);
+  ASSERT_EQ(equal_cost.size(), 2u);
+  for (std::size_t i = 0; i < equal_cost.size(); ++i) {
+    const int n = std::stoi(equal_cost.text(i, "branching"));
+    const int spp = std::stoi(equal_cost.text(i, "spp"));
+    EXPECT_EQ(equal_cost.text(i, "depth"), "1");
     EXPECT_EQ(spp, n == 1 ? 3 : 2);  // floor(6 / (1 + N))
-    EXPECT_EQ(std::stoull(equal_cost[i][3]), spp * mcrt::max_rays_per_sample(n, 1));
-    EXPECT_LE(std::stod(equal_cost[i][4]), 6.0);
-    EXPECT_GE(std::stod(equal_cost[i][7]), 0.0);
-    EXPECT_TRUE(std::isfinite(std::stod(equal_cost[i][9])));
+    EXPECT_EQ(std::stoull(equal_cost.text(i, "predicted_rays_per_pixel")),
+              spp * mcrt::max_rays_per_sample(n, 1));
+    EXPECT_LE(equal_cost.number(i, "rays_per_pixel"), 6.0);
+    EXPECT_GE(equal_cost.number(i, "rms_error"), 0.0);
+    EXPECT_TRUE(std::isfinite(equal_cost.number(i, "rms_error_at_budget")));
   }
 
-  const Table missing = read_csv(dir / "missing_light.csv");
+  const CsvFile missing(dir / "missing_light.csv");
   EXPECT_EQ(header(missing), "depth,mean_radiance,limit_mean_radiance,missing_fraction");
-  ASSERT_EQ(missing.size(), 4u);
-  for (std::size_t i = 2; i < missing.size(); ++i)  // less light missing one bounce deeper
-    EXPECT_LE(std::stod(missing[i][3]), std::stod(missing[i - 1][3]));
+  ASSERT_EQ(missing.size(), 3u);
+  const std::vector<double> missing_fraction = missing.numbers("missing_fraction");
+  for (std::size_t i = 1; i < missing_fraction.size(); ++i)  // less missing one bounce deeper
+    EXPECT_LE(missing_fraction[i], missing_fraction[i - 1]);
 
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["chapter"], "ch04_recursive_nk");
@@ -133,9 +108,10 @@ TEST(Ch04Test, FurnaceRayCountsEqualThePrediction) {
   const ProgramRun run = run_program(
       k_program, flags + " --scene furnace --albedo 0.6 --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const Table rays = read_csv(dir / "rays.csv");
-  ASSERT_EQ(rays.size(), 7u);
-  for (std::size_t i = 1; i < rays.size(); ++i) EXPECT_EQ(rays[i][2], rays[i][3]);
+  const CsvFile rays(dir / "rays.csv");
+  ASSERT_EQ(rays.size(), 6u);
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    EXPECT_EQ(rays.text(i, "rays"), rays.text(i, "predicted_max_rays"));
 }
 
 TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
@@ -158,11 +134,11 @@ TEST(Ch04Test, SameSeedSameOutputsWhateverTheThreadCount) {
   const std::string flags = k_tiny + " --seed 12";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
-  const std::vector<std::string> timings{"seconds", "rays_per_second"};
-  for (const char* csv : {"rays.csv", "equal_cost.csv"})
-    EXPECT_EQ(without_columns(read_csv(one / csv), timings),
-              without_columns(read_csv(two / csv), timings))
-        << csv;
+  const std::vector<std::string> rays_timings{"seconds", "rays_per_second"};
+  EXPECT_EQ(CsvFile(one / "rays.csv").without(rays_timings),
+            CsvFile(two / "rays.csv").without(rays_timings));
+  EXPECT_EQ(CsvFile(one / "equal_cost.csv").without({"seconds"}),
+            CsvFile(two / "equal_cost.csv").without({"seconds"}));
   EXPECT_EQ(read_text(one / "missing_light.csv"), read_text(two / "missing_light.csv"));
   EXPECT_EQ(read_text(one / "grid.png"), read_text(two / "grid.png"));
   const auto other = fresh_dir("ch04_seed13");
