@@ -14,7 +14,6 @@
 // (common/integration/disk_counter.hpp): the same count from the same streams, 16 points at
 // a time.
 
-#include <cstdio>
 #include <numeric>
 #include <vector>
 
@@ -143,8 +142,22 @@ Table draw_points(const Options& o, double& estimate) {
   return table;
 }
 
-// The work, refused before any is done: points of the disk study, coordinates of the balls.
-void check_work(double disk_points, double ball_coordinates) {
+// What the run found: every table, the disk's fit and its speed.
+struct Results {
+  Table disk, balls, ball_errors, ball_slopes, points;
+  LineFit disk_fit;
+  double disk_points = 0.0, disk_seconds = 0.0, median_std_ratio = 0.0, picture_estimate = 0.0;
+};
+
+// The work, refused before any is done if it is far too much: points of the disk study,
+// coordinates of the balls.
+Results run_studies(const Options& o) {
+  const std::vector<std::uint64_t> disk_grid = log_grid(10, o.max_n, k_per_decade);
+  const std::vector<std::uint64_t> ball_grid = log_grid(10, o.ball_n, k_per_decade);
+  const double disk_points = o.trials * sum(disk_grid);
+  const double ball_n = static_cast<double>(o.trials) * static_cast<double>(o.ball_n);
+  const double dims_sum = std::accumulate(o.dims.begin(), o.dims.end(), 0.0);
+  const double ball_coordinates = ball_n * dims_sum + (2 + 5 + 10) * o.trials * sum(ball_grid);
   if (disk_points > k_max_disk_points)
     throw UsageError(fmt::format("--max-n x --trials: the disk study would draw {:.3g} points, "
                                  "above the limit of {:.0e}; lower --max-n or --trials",
@@ -152,78 +165,78 @@ void check_work(double disk_points, double ball_coordinates) {
   if (ball_coordinates > k_max_ball_coordinates)
     throw UsageError(fmt::format("--ball-n x --trials x --dims: the ball study would draw {:.3g} "
                                  "coordinates, above the limit of {:.0e}; lower --ball-n, "
-                                 "--trials or --dims",
-                                 ball_coordinates, k_max_ball_coordinates));
-}
-
-int run(const CLI::App& app, const Options& o) {
-  const std::vector<std::uint64_t> disk_grid = log_grid(10, o.max_n, k_per_decade);
-  const std::vector<std::uint64_t> ball_grid = log_grid(10, o.ball_n, k_per_decade);
-  const double disk_points = o.trials * sum(disk_grid);
-  const double ball_n = static_cast<double>(o.trials) * static_cast<double>(o.ball_n);
-  const double ball_points = ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
-  const double dims_sum = std::accumulate(o.dims.begin(), o.dims.end(), 0.0);
-  check_work(disk_points, ball_n * dims_sum + (2 + 5 + 10) * o.trials * sum(ball_grid));
+                                 "--trials or --dims", ball_coordinates, k_max_ball_coordinates));
   prepare_output_dir(o.common.out);
 
+  const double ball_points = ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
   ProgressBar progress("ch02 sampling", static_cast<std::uint64_t>(disk_points + ball_points),
                        o.common.quiet);
   const Stopwatch disk_clock;
-  const Table disk = disk_study(disk_grid, o, progress);
+  Table disk = disk_study(disk_grid, o, progress);
   const double disk_seconds = disk_clock.seconds();
-  const Table balls = ball_study(o, progress);
+  Table balls = ball_study(o, progress);
   Table ball_slopes({integer("k"), real("fitted_slope"), real("fitted_slope_standard_error")});
-  const Table ball_errors = ball_error_study(ball_grid, o, progress, ball_slopes);
+  Table ball_errors = ball_error_study(ball_grid, o, progress, ball_slopes);
   progress.finish();
   double picture_estimate = 0.0;
-  const Table points = draw_points(o, picture_estimate);
+  Table points = draw_points(o, picture_estimate);
 
   const LineFit disk_fit = fit_log_log(disk.numbers("n"), disk.numbers("rmse"));
   std::vector<double> std_ratios = disk.numbers("empirical_std");
   const std::vector<double> theory_std = disk.numbers("theory_std");
   for (std::size_t i = 0; i < std_ratios.size(); ++i) std_ratios[i] /= theory_std[i];
-  const double median_std_ratio = median(std_ratios);
+  return {std::move(disk), std::move(balls), std::move(ball_errors), std::move(ball_slopes),
+          std::move(points), disk_fit, disk_points, disk_seconds, median(std_ratios),
+          picture_estimate};
+}
 
-  write_csv(o.common.out / "disk_area.csv", disk);
-  write_csv(o.common.out / "ball_volume.csv", balls);
-  write_csv(o.common.out / "ball_error_vs_n.csv", ball_errors);
-  write_csv(o.common.out / "points.csv", points);
-  write_plot(o.common.out, error_plot(disk_fit.slope, 4.0 * disk_area_theory_std(1)));
-  write_plot(o.common.out, picture_plot(o.points, picture_estimate));
-  write_plot(o.common.out, ball_error_plot({2, 5, 10}));
-
+Json summary_of(const CLI::App& app, const Options& o, const Results& r) {
   Json summary = start_summary(k_chapter, o.common);
-  summary["disk"] = {{"sizes", disk_grid.size()}, {"trials", o.trials}, {"largest_n", o.max_n},
-                     {"estimate_at_largest_n", disk.numbers("mean_estimate").back()},
-                     {"fitted_slope", disk_fit.slope},
-                     {"fitted_slope_standard_error", disk_fit.slope_standard_error},
-                     {"theory_slope", -0.5}, {"median_empirical_over_theory_std", median_std_ratio},
-                     {"samples", disk_points}, {"seconds", disk_seconds},
-                     {"samples_per_second", disk_points / disk_seconds},
+  summary["disk"] = {{"sizes", r.disk.size()}, {"trials", o.trials}, {"largest_n", o.max_n},
+                     {"estimate_at_largest_n", r.disk.numbers("mean_estimate").back()},
+                     {"fitted_slope", r.disk_fit.slope},
+                     {"fitted_slope_standard_error", r.disk_fit.slope_standard_error},
+                     {"theory_slope", -0.5}, {"median_empirical_over_theory_std", r.median_std_ratio},
+                     {"samples", r.disk_points}, {"seconds", r.disk_seconds},
+                     {"samples_per_second", r.disk_points / r.disk_seconds},
                      {"avx2", disk_count_uses_avx2()}};
-  summary["ball"] = {{"n", o.ball_n}, {"trials", o.trials}, {"volumes", balls.json()},
-                     {"fitted_slopes", ball_slopes.json()}};
-  summary["picture"] = {{"points", o.points}, {"estimate", picture_estimate}};
+  summary["ball"] = {{"n", o.ball_n}, {"trials", o.trials}, {"volumes", r.balls.json()},
+                     {"fitted_slopes", r.ball_slopes.json()}};
+  summary["picture"] = {{"points", o.points}, {"estimate", r.picture_estimate}};
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  return summary;
+}
 
-  if (o.common.quiet) return 0;
+void print_report(const Options& o, const Results& r) {
   fmt::print("{}  N from 10 to {} ({} sizes), {} trials each, seed {}, {} threads\n{}",
-             k_chapter.name, o.max_n, disk_grid.size(), o.trials, o.common.seed,
-             o.common.threads, disk.console({"n", "mean_estimate", "rmse", "theory_std", "empirical_std"}));
-  fmt::print("  slope of log(rmse) against log(N): {:.3f} +- {:.3f}  (theory -0.5)\n",
-             disk_fit.slope, disk_fit.slope_standard_error);
-  fmt::print("  median empirical / theory std: {:.3f}\n", median_std_ratio);
+             k_chapter.name, o.max_n, r.disk.size(), o.trials, o.common.seed, o.common.threads,
+             r.disk.console({"n", "mean_estimate", "rmse", "theory_std", "empirical_std"}));
+  fmt::print("  slope of log(rmse) against log(N): {:.3f} +- {:.3f}  (theory -0.5)\n"
+             "  median empirical / theory std: {:.3f}\n",
+             r.disk_fit.slope, r.disk_fit.slope_standard_error, r.median_std_ratio);
   fmt::print("  samples per second: {:.3g}  ({:.3g} points in {:.2f} s{})\n",
-             disk_points / disk_seconds, disk_points, disk_seconds,
+             r.disk_points / r.disk_seconds, r.disk_points, r.disk_seconds,
              disk_count_uses_avx2() ? ", AVX2" : "");
   fmt::print("  k-ball at N = {}:\n{}  k-ball rmse slopes:\n{}", o.ball_n,
-             balls.console({"k", "exact_volume", "mean_estimate", "empirical_std", "theory_std",
-                            "relative_std"}),
-             ball_slopes.console());
+             r.balls.console({"k", "exact_volume", "mean_estimate", "empirical_std",
+                              "theory_std", "relative_std"}),
+             r.ball_slopes.console());
   fmt::print("  picture: {} points, 4M/N = {:.4f}\n  wrote {}/{{disk_area,ball_volume,"
              "ball_error_vs_n,points}}.csv, plots, summary.json\n",
-             o.points, picture_estimate, o.common.out.string());
+             o.points, r.picture_estimate, o.common.out.string());
+}
+
+int run(const CLI::App& app, const Options& o) {
+  const Results r = run_studies(o);
+  write_csv(o.common.out / "disk_area.csv", r.disk);
+  write_csv(o.common.out / "ball_volume.csv", r.balls);
+  write_csv(o.common.out / "ball_error_vs_n.csv", r.ball_errors);
+  write_csv(o.common.out / "points.csv", r.points);
+  write_plot(o.common.out, error_plot(r.disk_fit.slope, 4.0 * disk_area_theory_std(1)));
+  write_plot(o.common.out, picture_plot(o.points, r.picture_estimate));
+  write_plot(o.common.out, ball_error_plot({2, 5, 10}));
+  write_json(o.common.out / "summary.json", summary_of(app, o, r));
+  if (!o.common.quiet) print_report(o, r);
   return 0;
 }
 

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"
@@ -19,74 +19,64 @@ namespace {
 const std::string k_program = "ch02_disk_area";
 const std::string k_tiny = "--max-n 1000 --trials 20 --dims 2,3,7 --ball-n 1000 --points 50";
 
-// A CSV as its header and rows of numbers.
-struct Csv {
-  std::string header;
-  std::vector<std::vector<double>> rows;
-};
-
-Csv read_csv(const std::filesystem::path& path) {
-  std::istringstream text(read_text(path));
-  Csv csv;
-  std::getline(text, csv.header);
-  for (std::string line; std::getline(text, line);) {
-    std::vector<double>& row = csv.rows.emplace_back();
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
-  }
-  return csv;
-}
-
 TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
   const auto dir = fresh_dir("ch02_smoke");
   const ProgramRun run = run_program(k_program, k_tiny + " --quiet --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(run.out.empty());  // --quiet
 
-  const Csv disk = read_csv(dir / "disk_area.csv");
-  EXPECT_EQ(disk.header, "n,trials,mean_estimate,bias,empirical_std,theory_std,rmse");
+  const auto header = [](const CsvFile& csv) {
+    std::string text;
+    for (const std::string& name : csv.header()) text += (text.empty() ? "" : ",") + name;
+    return text;
+  };
+  const CsvFile disk(dir / "disk_area.csv");
+  EXPECT_EQ(header(disk), "n,trials,mean_estimate,bias,empirical_std,theory_std,rmse");
   // log_grid(10, 1000, 4): 10, 18, 32, 56, 100, 178, 316, 562, 1000.
-  ASSERT_EQ(disk.rows.size(), 9u);
-  EXPECT_EQ(disk.rows.front()[0], 10.0);
-  EXPECT_EQ(disk.rows.back()[0], 1000.0);
-  for (const auto& row : disk.rows) {
-    ASSERT_EQ(row.size(), 7u);
-    EXPECT_EQ(row[1], 20.0);
-    EXPECT_NEAR(row[3], row[2] - mcrt::k_pi, 1e-8);  // bias = mean - pi (10 printed digits)
-    EXPECT_NEAR(row[5], mcrt::disk_area_theory_std(static_cast<std::uint64_t>(row[0])), 1e-9);
+  ASSERT_EQ(disk.size(), 9u);
+  EXPECT_EQ(disk.number(0, "n"), 10.0);
+  EXPECT_EQ(disk.number(8, "n"), 1000.0);
+  for (std::size_t r = 0; r < disk.size(); ++r) {
+    const double mean = disk.number(r, "mean_estimate"), bias = disk.number(r, "bias");
+    const double s = disk.number(r, "empirical_std"), rmse = disk.number(r, "rmse");
+    EXPECT_EQ(disk.number(r, "trials"), 20.0);
+    EXPECT_NEAR(bias, mean - mcrt::k_pi, 1e-8);  // bias = mean - pi (10 printed digits)
+    EXPECT_NEAR(disk.number(r, "theory_std"),
+                mcrt::disk_area_theory_std(static_cast<std::uint64_t>(disk.number(r, "n"))), 1e-9);
     // rmse^2 = (T-1)/T s^2 + bias^2 exactly, up to the printed digits.
-    EXPECT_NEAR(row[6] * row[6], 19.0 / 20.0 * row[4] * row[4] + row[3] * row[3],
-                1e-8 + 1e-8 * row[6] * row[6]);
+    EXPECT_NEAR(rmse * rmse, 19.0 / 20.0 * s * s + bias * bias, 1e-8 + 1e-8 * rmse * rmse);
     // Every estimate 4 M / N lies in [0, 4].
-    EXPECT_GE(row[2], 0.0);
-    EXPECT_LE(row[2], 4.0);
+    EXPECT_GE(mean, 0.0);
+    EXPECT_LE(mean, 4.0);
   }
 
-  const Csv ball = read_csv(dir / "ball_volume.csv");
-  EXPECT_EQ(ball.header,
+  const CsvFile ball(dir / "ball_volume.csv");
+  EXPECT_EQ(header(ball),
             "k,n,trials,exact_volume,mean_estimate,empirical_std,theory_std,relative_std");
-  ASSERT_EQ(ball.rows.size(), 3u);
+  ASSERT_EQ(ball.size(), 3u);
   const int dims[] = {2, 3, 7};
-  for (int i = 0; i < 3; ++i) {
-    const auto& row = ball.rows[i];
-    EXPECT_EQ(row[0], dims[i]);
-    EXPECT_EQ(row[1], 1000.0);
-    EXPECT_NEAR(row[3], mcrt::unit_ball_volume(dims[i]), 1e-8 * row[3]);
-    EXPECT_NEAR(row[6], mcrt::ball_volume_theory_std(dims[i], 1000), 1e-8 * row[6]);
-    EXPECT_NEAR(row[7], row[6] / row[3], 1e-8 * row[7]);
+  for (std::size_t r = 0; r < 3; ++r) {
+    const double exact = ball.number(r, "exact_volume"), theory = ball.number(r, "theory_std");
+    EXPECT_EQ(ball.number(r, "k"), dims[r]);
+    EXPECT_EQ(ball.number(r, "n"), 1000.0);
+    EXPECT_NEAR(exact, mcrt::unit_ball_volume(dims[r]), 1e-8 * exact);
+    EXPECT_NEAR(theory, mcrt::ball_volume_theory_std(dims[r], 1000), 1e-8 * theory);
+    EXPECT_NEAR(ball.number(r, "relative_std"), theory / exact, 1e-8 * theory / exact);
   }
 
-  const Csv ball_error = read_csv(dir / "ball_error_vs_n.csv");
-  EXPECT_EQ(ball_error.header, "k,n,trials,mean_estimate,empirical_std,theory_std,rmse");
-  EXPECT_EQ(ball_error.rows.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
+  const CsvFile ball_error(dir / "ball_error_vs_n.csv");
+  EXPECT_EQ(header(ball_error), "k,n,trials,mean_estimate,empirical_std,theory_std,rmse");
+  EXPECT_EQ(ball_error.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
 
-  const Csv points = read_csv(dir / "points.csv");
-  EXPECT_EQ(points.header, "x,y,inside");
-  ASSERT_EQ(points.rows.size(), 50u);
+  const CsvFile points(dir / "points.csv");
+  EXPECT_EQ(header(points), "x,y,inside");
+  ASSERT_EQ(points.size(), 50u);
   int inside = 0;
-  for (const auto& p : points.rows) {
-    EXPECT_EQ(p[2], p[0] * p[0] + p[1] * p[1] <= 1.0 ? 1.0 : 0.0);  // 6 digits: none on the edge
-    inside += p[2] > 0;
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    const double x = points.number(r, "x"), y = points.number(r, "y");
+    // 6 digits: none on the edge.
+    EXPECT_EQ(points.number(r, "inside"), x * x + y * y <= 1.0 ? 1.0 : 0.0);
+    inside += points.number(r, "inside") > 0;
   }
 
   const auto summary = read_json(dir / "summary.json");
@@ -96,6 +86,8 @@ TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
   EXPECT_GT(summary["disk"]["samples_per_second"].get<double>(), 0.0);
   EXPECT_EQ(summary["disk"]["samples"].get<double>(), 20.0 * (10 + 18 + 32 + 56 + 100 + 178 + 316 + 562 + 1000));
   EXPECT_EQ(summary["ball"]["fitted_slopes"].size(), 3u);
+  EXPECT_EQ(summary["ball"]["volumes"].size(), 3u);
+  EXPECT_EQ(summary["ball"]["volumes"][1]["k"], 3);
   EXPECT_EQ(summary["seed"], 1);
   EXPECT_EQ(summary["flags"]["trials"], "20");
   for (const char* name : {"error_vs_n", "points", "ball_error_vs_n"})
