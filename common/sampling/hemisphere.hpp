@@ -7,7 +7,6 @@
 
 #include "core/math.hpp"
 #include "sampling/plane.hpp"
-#include "sampling/unit_circle.hpp"
 
 namespace mcrt {
 
@@ -16,8 +15,8 @@ namespace mcrt {
 inline Vec3 sample_uniform_hemisphere(Vec2 u) {
   const double cos_theta = u.x;
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  const Vec2 phi = unit_circle_point(u.y);  // (cos phi, sin phi)
-  return {sin_theta * phi.x, sin_theta * phi.y, cos_theta};
+  const double phi = k_two_pi * u.y;
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 inline double uniform_hemisphere_pdf() { return k_inv_two_pi; }
 

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "core/math.hpp"
-#include "sampling/unit_circle.hpp"
 
 namespace mcrt {
 
@@ -17,7 +16,8 @@ inline double uniform_square_pdf() { return 0.25; }
 /// phi = 2 pi u1. pdf = 1/pi per unit area.
 inline Vec2 sample_uniform_disk(Vec2 u) {
   const double r = std::sqrt(u.x);
-  return r * unit_circle_point(u.y);  // (cos phi, sin phi)
+  const double phi = k_two_pi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi)};
 }
 inline double uniform_disk_pdf() { return k_inv_pi; }
 

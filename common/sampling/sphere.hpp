@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "core/math.hpp"
-#include "sampling/unit_circle.hpp"
 
 namespace mcrt {
 
@@ -14,8 +13,8 @@ namespace mcrt {
 inline Vec3 sample_uniform_sphere(Vec2 u) {
   const double z = 1.0 - 2.0 * u.x;
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  const Vec2 phi = unit_circle_point(u.y);  // (cos phi, sin phi)
-  return {r * phi.x, r * phi.y, z};
+  const double phi = k_two_pi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
 }
 inline double uniform_sphere_pdf() { return 0.25 * k_inv_pi; }
 
