@@ -1,6 +1,7 @@
 #include "io/table.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -11,28 +12,36 @@ namespace mcrt {
 
 double Cell::number() const {
   switch (value_.index()) {
-    case 0: return static_cast<double>(std::get<0>(value_));
+    case 0: return std::numeric_limits<double>::quiet_NaN();
     case 1: return static_cast<double>(std::get<1>(value_));
-    case 2: return std::get<2>(value_);
+    case 2: return static_cast<double>(std::get<2>(value_));
+    case 3: return std::get<3>(value_);
     default: throw std::logic_error("Cell::number: the cell holds text");
   }
 }
 
-std::string Cell::csv(int digits) const {
+std::string Cell::csv(int digits, Column::Style style) const {
   switch (value_.index()) {
-    case 0: return fmt::format("{}", std::get<0>(value_));
+    case 0: return {};
     case 1: return fmt::format("{}", std::get<1>(value_));
-    case 2: return fmt::format("{:.{}g}", std::get<2>(value_), digits);
-    default: return std::get<3>(value_);
+    case 2: return fmt::format("{}", std::get<2>(value_));
+    case 3:
+      switch (style) {
+        case Column::fixed: return fmt::format("{:.{}f}", std::get<3>(value_), digits);
+        case Column::scientific: return fmt::format("{:.{}e}", std::get<3>(value_), digits);
+        default: return fmt::format("{:.{}g}", std::get<3>(value_), digits);
+      }
+    default: return std::get<4>(value_);
   }
 }
 
 nlohmann::ordered_json Cell::json() const {
   switch (value_.index()) {
-    case 0: return std::get<0>(value_);
+    case 0: return nullptr;
     case 1: return std::get<1>(value_);
     case 2: return std::get<2>(value_);
-    default: return std::get<3>(value_);
+    case 3: return std::get<3>(value_);
+    default: return std::get<4>(value_);
   }
 }
 
@@ -49,7 +58,8 @@ void Table::add_row(std::vector<Cell> row) {
                                        columns_.size()));
   for (std::size_t i = 0; i < row.size(); ++i) {
     const Column& column = columns_[i];
-    const bool fits = column.kind == Column::integer ? row[i].is_integer()
+    const bool fits = row[i].is_empty()                ? true
+                      : column.kind == Column::integer ? row[i].is_integer()
                       : column.kind == Column::real  ? !row[i].is_text()
                                                      : row[i].is_text();
     if (!fits) throw std::logic_error("Table: a cell of the wrong kind in column '" + column.name + "'");
@@ -82,7 +92,7 @@ std::string Table::csv() const {
   text += '\n';
   for (const std::vector<Cell>& row : rows_) {
     for (std::size_t i = 0; i < row.size(); ++i)
-      text += (i ? "," : "") + row[i].csv(columns_[i].digits);
+      text += (i ? "," : "") + row[i].csv(columns_[i].digits, columns_[i].style);
     text += '\n';
   }
   return text;

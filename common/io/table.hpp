@@ -25,15 +25,21 @@ namespace mcrt {
 /// A column: its name (CSV header and JSON key) and what it holds.
 struct Column {
   enum Kind { integer, real, text };
+  /// How a real is written in the CSV, as printf would: %.{digits}g, %.{digits}f or
+  /// %.{digits}e.
+  enum Style { general, fixed, scientific };
 
   std::string name;
   Kind kind = real;
-  int digits = 9;  ///< significant digits of a real in the CSV (printf's %.{digits}g)
+  int digits = 9;  ///< significant digits (general) or digits after the point (fixed, scientific)
+  Style style = general;
 };
 
-/// One cell: an integer (signed or not), a real or a text. Integer types convert exactly.
+/// One cell: an integer (signed or not), a real, a text, or empty (Cell{}: an empty CSV
+/// field, null in JSON, allowed in any column). Integer types convert exactly.
 class Cell {
  public:
+  Cell() = default;
   template <class T>
     requires std::is_integral_v<T>
   Cell(T value) {  // NOLINT: implicit, so rows read as {n, rmse, "name"}
@@ -46,20 +52,21 @@ class Cell {
   Cell(std::string value) : value_(std::move(value)) {}  // NOLINT
   Cell(const char* value) : value_(std::string(value)) {}  // NOLINT
 
-  bool is_integer() const { return value_.index() <= 1; }
-  bool is_real() const { return value_.index() == 2; }
-  bool is_text() const { return value_.index() == 3; }
+  bool is_integer() const { return value_.index() == 1 || value_.index() == 2; }
+  bool is_real() const { return value_.index() == 3; }
+  bool is_text() const { return value_.index() == 4; }
+  bool is_empty() const { return value_.index() == 0; }
   /// The value as a double (integers converted), for reading a table back in code.
   double number() const;
   const std::string& string() const { return std::get<std::string>(value_); }
 
-  /// The cell as the CSV writes it: integers in full, reals with `digits` significant
-  /// digits, text as it is (a table's text never holds a comma, a quote or a newline).
-  std::string csv(int digits) const;
+  /// The cell as the CSV writes it: integers in full, reals in `style` with `digits`, text
+  /// as it is (a table's text never holds a comma, a quote or a newline), empty as nothing.
+  std::string csv(int digits, Column::Style style = Column::general) const;
   nlohmann::ordered_json json() const;
 
  private:
-  std::variant<std::int64_t, std::uint64_t, double, std::string> value_;
+  std::variant<std::monostate, std::int64_t, std::uint64_t, double, std::string> value_;
 };
 
 class Table {
@@ -75,7 +82,7 @@ class Table {
   bool empty() const { return rows_.empty(); }
   /// The cell of row `row` in the column named `name`; throws std::out_of_range if none.
   const Cell& at(std::size_t row, std::string_view name) const;
-  /// Every value of a numeric column, in row order.
+  /// Every value of a numeric column, in row order (empty cells are NaN).
   std::vector<double> numbers(std::string_view name) const;
 
   /// The CSV text: a header row of the names, then the rows.
