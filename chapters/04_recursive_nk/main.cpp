@@ -24,10 +24,7 @@
 #include <fmt/ranges.h>
 
 #include "io/cli.hpp"
-#include "io/image_file.hpp"
-#include "io/labelled_grid.hpp"
 #include "io/output.hpp"
-#include "io/plot.hpp"
 #include "io/ray_limit.hpp"
 #include "io/render_summary.hpp"
 #include "io/summary.hpp"
@@ -37,6 +34,8 @@
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "render/two_render_error.hpp"
+
+#include "plots.hpp"
 
 using namespace mcrt;
 
@@ -183,55 +182,6 @@ std::string conclusion(const Options& o, const Table& equal, std::size_t best) {
                                   : "Here branching paid off.");
 }
 
-void write_plots(const Options& o, double limit, int limit_depth) {
-  // One line per N, picked out of rays.csv by its branching column.
-  const std::string per_n = fmt::format("Ns = '{}'\nset xtics 1\n", fmt::join(o.branching, " "));
-  const auto of_n = [](const char* column) {
-    return fmt::format("'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
-                       "column(\"{}\") : NaN)", column);
-  };
-  write_plot(o.common.out,
-             {"rays_vs_depth", "Rays traced against depth: N^k grows as a straight line of slope log N",
-              "depth k", "rays traced", false, true, per_n + "set key top left\n",
-              "plot for [i=1:words(Ns)] " + of_n("rays") + " with linespoints pt 7 lw 2 lc i "
-              "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
-              " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
-  write_plot(o.common.out,
-             {"mean_radiance_vs_depth",
-              "Mean radiance against depth: the cut at k drops the light of longer paths",
-              "depth k", "mean radiance of the image", false, false,
-              per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
-                                  "set offsets 0, 0, graph 0.1, 0\n", limit),
-              fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
-                          "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
-                          "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
-                          "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
-                          "'limit (N = 1, k = {}, {} spp)'",
-                          of_n("mean_radiance"), o.spp, k_light_spp, limit_depth, k_light_spp)});
-  write_plot(o.common.out,
-             {"equal_cost",
-              fmt::format("Equal cost: {} rays per pixel at depth {}", o.budget, o.equal_cost_depth),
-              "branching N", "RMS error at the budget", true, true,
-              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [0.8:{}]\n",
-                          fmt::join(o.branching, ", "), 1.25 * o.branching.back()),
-              "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
-              "pt 7 lw 2 title 'RMS error'"});
-}
-
-// Small images are blown up (nearest neighbour, so the noise stays visible) to about 256 wide.
-void write_grid(const Options& o, const std::vector<Image>& images) {
-  std::vector<std::string> labels;  // in the sweep's order
-  for (int n : o.branching)
-    for (int k = 0; k <= o.max_depth; ++k) labels.push_back(fmt::format("N={} k={}", n, k));
-  const int factor = std::clamp(256 / o.image.width, 1, 4);
-  SheetLayout layout;
-  layout.columns = o.max_depth + 1;
-  layout.label_scale = o.image.width * factor >= 120 ? 2 : 1;
-  layout.title = fmt::format("rows: N = {}   columns: depth k = 0..{}   {} spp",
-                             fmt::join(o.branching, ","), o.max_depth, o.spp);
-  write_png(o.common.out / "grid.png", labelled_grid(images, labels, factor, layout));
-}
-
 void write_summary(const CLI::App& app, const Options& o, const Plan& plan,
                    const RecursiveRenderer& work, const Table& rays, const Table& missing,
                    const Table& equal, std::size_t best, const std::string& verdict) {
@@ -290,8 +240,10 @@ int run(const CLI::App& app, const Options& o) {
   write_csv(o.common.out / "rays.csv", rays);
   write_csv(o.common.out / "missing_light.csv", missing);
   write_csv(o.common.out / "equal_cost.csv", equal);
-  write_plots(o, missing.at(0, "limit_mean_radiance").number(), plan.limit_depth);
-  write_grid(o, images);
+  write_plots(o.common.out, o.branching, o.spp, k_light_spp,
+              missing.at(0, "limit_mean_radiance").number(), plan.limit_depth, o.budget,
+              o.equal_cost_depth);
+  write_grid(o.common.out, images, o.branching, o.max_depth, o.spp, o.image.width);
   write_summary(app, o, plan, render_recursive, rays, missing, equal, best, verdict);
   if (!o.common.quiet) print_tables(o, render_recursive.total, rays, missing, equal, verdict);
   return 0;

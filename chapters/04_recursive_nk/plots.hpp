@@ -1,0 +1,74 @@
+#pragma once
+// Chapter 04's figures: gnuplot scripts over its CSV files (columns by name), and the grid of
+// every image of the sweep.
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "io/image_file.hpp"
+#include "io/labelled_grid.hpp"
+#include "io/plot.hpp"
+#include "render/image.hpp"
+
+namespace mcrt {
+
+// rays_vs_depth, mean_radiance_vs_depth and equal_cost, over rays.csv, missing_light.csv and
+// equal_cost.csv; one line per N, picked out by the branching column.
+inline void write_plots(const std::filesystem::path& out, const std::vector<int>& branching,
+                        int spp, int light_spp, double limit, int limit_depth, int budget,
+                        int equal_cost_depth) {
+  const std::string per_n = fmt::format("Ns = '{}'\nset xtics 1\n", fmt::join(branching, " "));
+  const auto of_n = [](const char* column) {
+    return fmt::format("'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
+                       "column(\"{}\") : NaN)", column);
+  };
+  write_plot(out,
+             {"rays_vs_depth", "Rays traced against depth: N^k grows as a straight line of slope log N",
+              "depth k", "rays traced", false, true, per_n + "set key top left\n",
+              "plot for [i=1:words(Ns)] " + of_n("rays") + " with linespoints pt 7 lw 2 lc i "
+              "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
+              " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
+  write_plot(out,
+             {"mean_radiance_vs_depth",
+              "Mean radiance against depth: the cut at k drops the light of longer paths",
+              "depth k", "mean radiance of the image", false, false,
+              per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
+                                  "set offsets 0, 0, graph 0.1, 0\n", limit),
+              fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
+                          "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
+                          "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
+                          "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
+                          "'limit (N = 1, k = {}, {} spp)'",
+                          of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)});
+  write_plot(out,
+             {"equal_cost",
+              fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
+              "branching N", "RMS error at the budget", true, true,
+              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [0.8:{}]\n",
+                          fmt::join(branching, ", "), 1.25 * branching.back()),
+              "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
+              "pt 7 lw 2 title 'RMS error'"});
+}
+
+// grid.png: every image of the sweep, rows N and columns k. Small images are blown up (nearest
+// neighbour, so the noise stays visible) to about 256 wide.
+inline void write_grid(const std::filesystem::path& out, const std::vector<Image>& images,
+                       const std::vector<int>& branching, int max_depth, int spp, int width) {
+  std::vector<std::string> labels;  // in the sweep's order
+  for (int n : branching)
+    for (int k = 0; k <= max_depth; ++k) labels.push_back(fmt::format("N={} k={}", n, k));
+  const int factor = std::clamp(256 / width, 1, 4);
+  SheetLayout layout;
+  layout.columns = max_depth + 1;
+  layout.label_scale = width * factor >= 120 ? 2 : 1;
+  layout.title = fmt::format("rows: N = {}   columns: depth k = 0..{}   {} spp",
+                             fmt::join(branching, ","), max_depth, spp);
+  write_png(out / "grid.png", labelled_grid(images, labels, factor, layout));
+}
+
+}  // namespace mcrt
