@@ -68,7 +68,8 @@ struct KeyPart {
 /// fits in 64 bits; both are checked, and a key that breaks them throws std::out_of_range.
 /// stream_index(a, b) is stream_key({{a, 2^32}, {b, 2^32}}).
 constexpr std::uint64_t stream_key(std::initializer_list<KeyPart> parts) {
-  std::uint64_t key = 0, room = ~std::uint64_t{0};  // room: the largest key still free
+  std::uint64_t key = 0;
+  const std::uint64_t room = ~std::uint64_t{0};  // the largest key
   bool first = true;
   for (const KeyPart& part : parts) {
     if (part.value >= part.count) throw std::out_of_range("stream_key: a part is out of its range");
@@ -76,6 +77,8 @@ constexpr std::uint64_t stream_key(std::initializer_list<KeyPart> parts) {
       if (key > room / part.count) throw std::out_of_range("stream_key: the key needs more than 64 bits");
       key *= part.count;
     }
+    if (part.value > ~std::uint64_t{0} - key)
+      throw std::out_of_range("stream_key: the key needs more than 64 bits");
     key += part.value;
     first = false;
   }
