@@ -3,11 +3,11 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
 #include "integration/integrands.hpp"
 #include "io/plot.hpp"
@@ -19,34 +19,6 @@ namespace {
 const std::string k_program = "ch03_trapezoid_vs_mc";
 // k up to 3, N up to 3000, 4 trials: about 2e5 evaluations, well under a second.
 const std::string k_tiny = "--trials 4 --max-evaluations 3000 --dims 3,1,2 --quiet";
-
-using Row = std::map<std::string, std::string>;
-
-// A CSV with a header row as one map per line (empty fields stay empty strings).
-std::vector<Row> read_csv(const std::filesystem::path& path, std::string* header = nullptr) {
-  std::istringstream text(read_text(path));
-  std::string line;
-  std::getline(text, line);
-  if (header) *header = line;
-  const auto split = [](const std::string& s) {
-    std::vector<std::string> fields;
-    std::string field;
-    std::istringstream stream(s);
-    while (std::getline(stream, field, ',')) fields.push_back(field);
-    if (!s.empty() && s.back() == ',') fields.emplace_back();
-    return fields;
-  };
-  const std::vector<std::string> names = split(line);
-  std::vector<Row> rows;
-  while (std::getline(text, line)) {
-    const std::vector<std::string> fields = split(line);
-    EXPECT_EQ(fields.size(), names.size()) << line;
-    Row row;
-    for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 double closed_form(const std::string& integrand, int dims) {
   if (integrand == "gaussian_1d") return mcrt::Gaussian1D{}.reference();
@@ -63,56 +35,64 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(run.out.empty());  // --quiet
 
-  std::string header;
-  const std::vector<Row> errors = read_csv(dir / "errors.csv", &header);
-  EXPECT_EQ(header, "integrand,dims,method,points_per_axis,evaluations,estimate,reference,"
-                    "abs_error,rmse");
-  ASSERT_FALSE(errors.empty());
+  const CsvFile errors(dir / "errors.csv");
+  EXPECT_EQ(errors.header(), (std::vector<std::string>{"integrand", "dims", "method",
+                                                       "points_per_axis", "evaluations",
+                                                       "estimate", "reference", "abs_error",
+                                                       "rmse"}));
+  ASSERT_GT(errors.size(), 0u);
   std::map<std::string, int> rows_per_study;
-  for (const Row& r : errors) {
-    const int dims = std::stoi(r.at("dims"));
-    const std::uint64_t evaluations = std::stoull(r.at("evaluations"));
-    rows_per_study[r.at("integrand") + "/" + r.at("dims") + "/" + r.at("method")]++;
-    EXPECT_LE(evaluations, 3000u);
+  for (std::size_t r = 0; r < errors.size(); ++r) {
+    ASSERT_EQ(errors.row(r).size(), errors.header().size()) << r;
+    const std::string& integrand = errors.text(r, "integrand");
+    const std::string& method = errors.text(r, "method");
+    const int dims = static_cast<int>(errors.number(r, "dims"));
+    const double evaluations = errors.number(r, "evaluations");
+    rows_per_study[integrand + "/" + errors.text(r, "dims") + "/" + method]++;
+    EXPECT_LE(evaluations, 3000.0);
     // The reference is the closed form, printed to round-trip exactly.
-    EXPECT_EQ(std::stod(r.at("reference")), closed_form(r.at("integrand"), dims));
+    EXPECT_EQ(errors.number(r, "reference"), closed_form(integrand, dims));
     // abs_error = |estimate - reference|, printed to 7 significant digits.
-    const double abs_error = std::abs(std::stod(r.at("estimate")) - std::stod(r.at("reference")));
-    EXPECT_NEAR(std::stod(r.at("abs_error")), abs_error, 1e-6 * abs_error);
-    if (r.at("method") == "trapezoid") {
-      EXPECT_TRUE(r.at("rmse").empty());
-      const double n = std::stod(r.at("points_per_axis"));
-      EXPECT_EQ(static_cast<double>(evaluations), std::pow(n, dims));  // N = n^k
+    const double abs_error = std::abs(errors.number(r, "estimate") - errors.number(r, "reference"));
+    EXPECT_NEAR(errors.number(r, "abs_error"), abs_error, 1e-6 * abs_error);
+    if (method == "trapezoid") {
+      EXPECT_TRUE(errors.text(r, "rmse").empty());
+      const double n = errors.number(r, "points_per_axis");
+      EXPECT_EQ(evaluations, std::pow(n, dims));  // N = n^k
     } else {
-      ASSERT_EQ(r.at("method"), "monte_carlo");
-      EXPECT_TRUE(r.at("points_per_axis").empty());
+      ASSERT_EQ(method, "monte_carlo");
+      EXPECT_TRUE(errors.text(r, "points_per_axis").empty());
       // The rmse over trials is at least the error of their mean (Jensen), up to printing.
-      EXPECT_GE(std::stod(r.at("rmse")) * (1.0 + 1e-5), std::stod(r.at("abs_error")));
+      EXPECT_GE(errors.number(r, "rmse") * (1.0 + 1e-5), errors.number(r, "abs_error"));
     }
   }
   // gaussian_1d, ceil_sin_1d, gaussian_kd at k = 1..3, unit_ball_kd at k = 2..3; two methods.
   EXPECT_EQ(rows_per_study.size(), 14u);
   for (const auto& [study, rows] : rows_per_study) EXPECT_GE(rows, 2) << study;  // a slope needs 2
 
-  const std::vector<Row> slopes = read_csv(dir / "slopes.csv", &header);
-  EXPECT_EQ(header, "integrand,dims,method,fitted_slope,standard_error,theory_slope,points");
+  const CsvFile slopes(dir / "slopes.csv");
+  EXPECT_EQ(slopes.header(), (std::vector<std::string>{"integrand", "dims", "method",
+                                                       "fitted_slope", "standard_error",
+                                                       "theory_slope", "points"}));
   ASSERT_EQ(slopes.size(), 14u);
-  for (const Row& s : slopes) {
-    const int dims = std::stoi(s.at("dims"));
-    const bool smooth = s.at("integrand").find("gaussian") == 0;
-    const double theory = s.at("method") == "monte_carlo" ? -0.5 : (smooth ? -2.0 : -1.0) / dims;
-    EXPECT_NEAR(std::stod(s.at("theory_slope")), theory, 1e-6) << s.at("integrand") << dims;
-    const std::string key = s.at("integrand") + "/" + s.at("dims") + "/" + s.at("method");
-    EXPECT_LE(std::stoi(s.at("points")), rows_per_study[key]);
-    if (s.at("integrand") == "gaussian_1d" && s.at("method") == "trapezoid") {
+  for (std::size_t r = 0; r < slopes.size(); ++r) {
+    const std::string& integrand = slopes.text(r, "integrand");
+    const std::string& method = slopes.text(r, "method");
+    const double dims = slopes.number(r, "dims");
+    const bool smooth = integrand.find("gaussian") == 0;
+    const double theory = method == "monte_carlo" ? -0.5 : (smooth ? -2.0 : -1.0) / dims;
+    EXPECT_NEAR(slopes.number(r, "theory_slope"), theory, 1e-6) << integrand << dims;
+    const std::string key = integrand + "/" + slopes.text(r, "dims") + "/" + method;
+    EXPECT_LE(slopes.number(r, "points"), rows_per_study[key]);
+    if (integrand == "gaussian_1d" && method == "trapezoid") {
       // Deterministic: n = 2..3000. The error is c/(n-1)^2, so against log n the fit is a
       // little steeper than -2 (-2.06 here: the local slope is -2n/(n-1)); 0.15 allows that.
-      EXPECT_NEAR(std::stod(s.at("fitted_slope")), -2.0, 0.15);
+      EXPECT_NEAR(slopes.number(r, "fitted_slope"), -2.0, 0.15);
     }
-    if (s.at("integrand") == "gaussian_1d" && s.at("method") == "monte_carlo") {
+    if (integrand == "gaussian_1d" && method == "monte_carlo") {
       // Random: 4 trials at 14 values of N give the slope a standard deviation near 0.06
       // (log of chi^2_4 / 4 has variance trigamma(2) = 0.64); 0.3 is five of them.
-      EXPECT_NEAR(std::stod(s.at("fitted_slope")), -0.5, 0.3);
+      EXPECT_NEAR(slopes.number(r, "fitted_slope"), -0.5, 0.3);
     }
   }
 
@@ -121,7 +101,9 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   EXPECT_EQ(summary["trials"], 4);
   EXPECT_EQ(summary["dims"], nlohmann::json::parse("[1, 2, 3]"));  // sorted
   EXPECT_EQ(summary["max_evaluations"], 3000);
-  EXPECT_EQ(summary["slopes"].size(), 14u);
+  ASSERT_EQ(summary["slopes"].size(), 14u);  // the same table as slopes.csv
+  EXPECT_EQ(summary["slopes"][0]["integrand"], slopes.text(0, "integrand"));
+  EXPECT_EQ(summary["slopes"][0]["points"], slopes.number(0, "points"));
   EXPECT_EQ(summary["flags"]["max-evaluations"], "3000");
   EXPECT_GT(summary["evaluations"].get<double>(), 0.0);
 
@@ -144,8 +126,9 @@ TEST(Ch03Test, PrintsTheSlopesTableAndHelp) {
   const ProgramRun run = run_program(
       k_program, "--trials 2 --max-evaluations 100 --dims 1 --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("unit_ball_kd     2"), std::string::npos) << run.out;
+  // The slopes table, one line per study and method.
+  EXPECT_NE(run.out.find("fitted_slope"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("unit_ball_kd     2    trapezoid"), std::string::npos) << run.out;
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--trials", "--max-evaluations", "--dims", "--seed", "--threads",

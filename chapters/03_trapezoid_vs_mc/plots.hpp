@@ -1,0 +1,87 @@
+#pragma once
+// Chapter 03's figures, written as gnuplot scripts over errors.csv and slopes.csv (columns
+// by name).
+
+#include <string>
+
+#include <fmt/format.h>
+
+#include "io/plot.hpp"
+
+namespace mcrt {
+
+// One method's fitted slope, its theory, and c of the guide line c N^theory through the
+// centre of its data.
+struct SlopeLine {
+  double fitted_slope;
+  double theory;
+  double constant;
+};
+
+// The errors.csv rows of one integrand, dimension and method: `value` where they match, else
+// 1/0 (gnuplot skips the point).
+inline std::string select_rows(const std::string& integrand, int dims, const char* method,
+                               const char* value) {
+  return fmt::format("(strcol(\"integrand\") eq '{}' && column(\"dims\") == {} && "
+                     "strcol(\"method\") eq '{}' ? column(\"{}\") : 1/0)",
+                     integrand, dims, method, value);
+}
+
+// Error against N for one integrand: the trapezoid's |T - I|, Monte Carlo's rmse, and a line
+// of each method's theoretical slope through the centre of its data.
+inline Plot error_plot(const std::string& name, const std::string& title,
+                       const std::string& integrand, int dims, const SlopeLine& trapezoid,
+                       const SlopeLine& monte_carlo, const std::string& trapezoid_theory_label) {
+  Plot plot;
+  plot.name = name;
+  plot.title = title;
+  plot.x_label = "function evaluations N";
+  plot.y_label = "error";
+  plot.log_x = plot.log_y = true;
+  plot.settings = fmt::format("set key bottom left\nset style data linespoints\n"
+                              "c_trap = {:.17g}\nc_mc = {:.17g}\n",
+                              trapezoid.constant, monte_carlo.constant);
+  plot.plot = fmt::format(
+      "plot 'errors.csv' using \"evaluations\":{} pt 7 lc rgb '#1f77b4' "
+      "title 'trapezoid |T - I| (slope {:.2f})', \\\n"
+      "  '' using \"evaluations\":{} pt 5 lc rgb '#d62728' "
+      "title 'Monte Carlo rmse (slope {:.2f})', \\\n"
+      "  c_trap * x**({:.6g}) with lines dt 2 lc rgb '#1f77b4' title '{}', \\\n"
+      "  c_mc * x**(-0.5) with lines dt 2 lc rgb '#d62728' title 'N^{{-1/2}}'",
+      select_rows(integrand, dims, "trapezoid", "abs_error"), trapezoid.fitted_slope,
+      select_rows(integrand, dims, "monte_carlo", "rmse"), monte_carlo.fitted_slope,
+      trapezoid.theory, trapezoid_theory_label);
+  return plot;
+}
+
+// Fitted slope against k for both k-dimensional integrands and both methods, with the
+// theory: -2/k and -1/k for the trapezoid rule, -1/2 for Monte Carlo.
+inline Plot slopes_plot(int largest_dims) {
+  const auto series = [](const char* integrand, const char* method) {
+    return fmt::format("using \"dims\":(strcol(\"integrand\") eq '{}' && strcol(\"method\") eq "
+                       "'{}' ? column(\"fitted_slope\") : 1/0):\"standard_error\" with yerrorlines",
+                       integrand, method);
+  };
+  Plot plot;
+  plot.name = "slopes_vs_k";
+  plot.title = "Fitted slope of log(error) against log(N), by dimension k";
+  plot.x_label = "dimension k";
+  plot.y_label = "slope";
+  plot.settings = fmt::format("set key bottom right\nset xrange [0.5:{}.5]\nset yrange "
+                              "[-2.2:0.3]\nset xtics 1\nset samples 400\n",
+                              largest_dims);
+  plot.plot = "plot 'slopes.csv' " + series("gaussian_kd", "trapezoid") +
+              " pt 7 lc rgb '#1f77b4' title 'trapezoid, smooth (e^{-|x|^2})', \\\n"
+              "  '' " + series("unit_ball_kd", "trapezoid") +
+              " pt 9 lc rgb '#2ca02c' title 'trapezoid, ball indicator', \\\n"
+              "  '' " + series("gaussian_kd", "monte_carlo") +
+              " pt 5 lc rgb '#d62728' title 'Monte Carlo, smooth', \\\n"
+              "  '' " + series("unit_ball_kd", "monte_carlo") +
+              " pt 11 lc rgb '#ff7f0e' title 'Monte Carlo, ball indicator', \\\n"
+              "  -2.0/x with lines dt 2 lc rgb '#1f77b4' title 'theory -2/k (smooth)', \\\n"
+              "  -1.0/x with lines dt 2 lc rgb '#2ca02c' title 'theory -1/k (jump)', \\\n"
+              "  -0.5 with lines dt 2 lc rgb '#d62728' title 'theory -1/2 (Monte Carlo)'";
+  return plot;
+}
+
+}  // namespace mcrt
