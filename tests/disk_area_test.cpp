@@ -11,11 +11,12 @@
 
 #include <pcg_random.hpp>
 
-#include "checks/disk_area_procedures.hpp"
 #include "core/pcg32_lanes.hpp"
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/disk_counter.hpp"
+#include "known_bugs/disk_area.hpp"
+#include "support/disk_area_procedures.hpp"
 
 using namespace mcrt;
 
@@ -197,39 +198,17 @@ TEST(BallEstimatorTest, SameStreamSameEstimate) {
 
 constexpr double k_alpha = 1e-4;
 
-// A classic slip: y drawn equal to x, so the test is 2 x^2 <= 1 and the estimate is
-// 4 / sqrt(2) = 2.83 instead of pi.
-double same_coordinate_twice(std::uint64_t n, Rng& rng) {
-  std::uint64_t inside = 0;
-  for (std::uint64_t i = 0; i < n; ++i) {
-    const double x = 2.0 * rng.uniform() - 1.0;
-    inside += 2.0 * x * x <= 1.0;
-  }
-  return 4.0 * static_cast<double>(inside) / static_cast<double>(n);
-}
-
-// All 16 lanes seeded alike: every point repeated 16 times. Unbiased, but 16x the variance
-// (for n a multiple of 16).
-double identical_lanes(std::uint64_t n, Rng& rng) {
-  return 4.0 * static_cast<double>(count_in_disk(n / 16, rng)) / static_cast<double>(n / 16);
-}
-
-// A fixed bias of 0.02: the rms error stops falling once sigma is below it.
-double biased(std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) + 0.02; }
-
 TEST(DiskAreaProceduresTest, RejectKnownWrongEstimators) {
   const std::uint64_t seed = 20261122;
-  EXPECT_LT(checks::pooled_mean_p_value(same_coordinate_twice, k_pi, disk_area_theory_std, 1,
+  EXPECT_LT(mcrt::testing::pooled_mean_p_value(mcrt::testing::disk_area_same_coordinate_twice, k_pi, disk_area_theory_std, 1,
                                         seed, 0),
             k_alpha);
-  EXPECT_LT(checks::variance_p_value(identical_lanes, 4.0, k_disk_hit_probability, 1024, 1000,
+  EXPECT_LT(mcrt::testing::variance_p_value(mcrt::testing::disk_area_identical_lanes, 4.0, k_disk_hit_probability, 1024, 1000,
                                      seed, 1),
             k_alpha);
-  EXPECT_LT(checks::error_slope(biased, k_pi, 10, 100000, 50, seed, 2).p_value, k_alpha);
-  // The k-ball estimate scaled by 2^(k-1) instead of 2^k.
-  auto half_scale = [](std::uint64_t n, Rng& rng) { return estimate_ball_volume(3, n, rng) / 2; };
-  EXPECT_LT(checks::pooled_mean_p_value(
-                half_scale, unit_ball_volume(3),
+  EXPECT_LT(mcrt::testing::error_slope(mcrt::testing::disk_area_biased, k_pi, 10, 100000, 50, seed, 2).p_value, k_alpha);
+  EXPECT_LT(mcrt::testing::pooled_mean_p_value(
+                mcrt::testing::ball_volume_half_scale, unit_ball_volume(3),
                 [](std::uint64_t n) { return ball_volume_theory_std(3, n); }, 1, seed, 3),
             k_alpha);
 }
@@ -238,10 +217,10 @@ TEST(DiskAreaProceduresTest, AcceptTheRightEstimatorAtSmallSizes) {
   // The same procedures, smaller, on the lecture's loop (another seed than the checks, which
   // run the chapter's engine): each passes with probability 1 - 1e-4.
   const std::uint64_t seed = 77;
-  EXPECT_GE(checks::variance_p_value(estimate_disk_area, 4.0, k_disk_hit_probability, 64, 2000,
+  EXPECT_GE(mcrt::testing::variance_p_value(estimate_disk_area, 4.0, k_disk_hit_probability, 64, 2000,
                                      seed, 4),
             k_alpha);
-  const auto slope = checks::error_slope(estimate_disk_area, k_pi, 10, 10000, 50, seed, 5);
+  const auto slope = mcrt::testing::error_slope(estimate_disk_area, k_pi, 10, 10000, 50, seed, 5);
   EXPECT_GE(slope.p_value, k_alpha) << "slope " << slope.slope << " +- " << slope.standard_error;
 }
 

@@ -84,9 +84,3 @@ double uniformity_ks_statistic(std::span<const double> values);
 double ks_p_value(double d, std::uint64_t n);
 
 }  // namespace mcrt::testing
-
-// Transitional: the disk-area procedures (tests/checks/disk_area_procedures.hpp) still name
-// this namespace mcrt::stats.
-namespace mcrt {
-namespace stats = testing;
-}

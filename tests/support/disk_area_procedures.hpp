@@ -14,7 +14,7 @@
 #include "integration/statistics.hpp"
 #include "stats/hypothesis.hpp"
 
-namespace mcrt::checks {
+namespace mcrt::testing {
 
 /// Sample sizes for the pooled mean test: tiny ones (where 4 M / N takes a handful of values),
 /// sizes that are not multiples of the 16 generator lanes, and a few large ones.
@@ -39,7 +39,7 @@ double pooled_mean_p_value(Estimate&& estimate, double exact, TheoryStd&& theory
       weighted_variance += n_d * n_d * sigma * sigma;
     }
   }
-  return stats::z_test_p_value(weighted_sum / total_n, exact,
+  return z_test_p_value(weighted_sum / total_n, exact,
                                std::sqrt(weighted_variance) / total_n);
 }
 
@@ -56,11 +56,10 @@ double variance_p_value(Estimate&& estimate, double box_volume, double p, std::u
     Rng rng(seed, stream_index(stream, static_cast<std::uint64_t>(t)));
     stats.add(estimate(n, rng));
   }
-  const double n_d = static_cast<double>(n), q = 1.0 - p, T = trials;
+  const double n_d = static_cast<double>(n), q = 1.0 - p;
   const double sigma2 = box_volume * box_volume * p * q / n_d;
   const double mu4 = std::pow(box_volume / n_d, 4.0) * n_d * p * q * (1.0 + 3.0 * (n_d - 2.0) * p * q);
-  const double var_of_var = (mu4 - sigma2 * sigma2 * (T - 3.0) / (T - 1.0)) / T;
-  return stats::z_test_p_value(stats.variance(), sigma2, std::sqrt(var_of_var));
+  return variance_z_test_p_value(stats.variance(), static_cast<std::uint64_t>(trials), sigma2, mu4);
 }
 
 /// The least-squares slope of log(rmse) against log(N), rmse over `trials` estimates at each
@@ -103,4 +102,4 @@ SlopeResult error_slope(Estimate&& estimate, double exact, std::uint64_t first, 
   return {fit.slope, fit.slope_standard_error, p};
 }
 
-}  // namespace mcrt::checks
+}  // namespace mcrt::testing
