@@ -21,6 +21,7 @@ double square_pdf(const Vec2&) { return uniform_square_pdf(); }
 double disk_pdf(const Vec2&) { return uniform_disk_pdf(); }
 double uniform_hemisphere_pdf_at(const Vec3&) { return uniform_hemisphere_pdf(); }
 double cosine_hemisphere_pdf_at(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
+double uniform_sphere_pdf_at(const Vec3&) { return uniform_sphere_pdf(); }
 
 MCRT_STATISTICAL_CHECK(uniform_square_sampler_matches_its_pdf, k_sampler_alpha) {
   return square_sampler_p_value(sample_uniform_square, square_pdf, seed, k_square_stream,
@@ -36,6 +37,11 @@ MCRT_STATISTICAL_CHECK(uniform_hemisphere_sampler_matches_its_pdf, k_sampler_alp
   return hemisphere_sampler_p_value(sample_uniform_hemisphere, uniform_hemisphere_pdf_at, seed,
                                     k_uniform_hemisphere_stream,
                                     "uniform_hemisphere_sampler_matches_its_pdf");
+}
+
+MCRT_STATISTICAL_CHECK(uniform_sphere_sampler_matches_its_pdf, k_sampler_alpha) {
+  return sphere_sampler_p_value(sample_uniform_sphere, uniform_sphere_pdf_at, seed,
+                                k_uniform_sphere_stream, "uniform_sphere_sampler_matches_its_pdf");
 }
 
 MCRT_STATISTICAL_CHECK(cosine_hemisphere_sampler_matches_its_pdf, k_sampler_alpha) {
@@ -106,6 +112,11 @@ TEST(SamplerPdfTest, UniformSquarePdfIntegratesToOne) {
 
 TEST(SamplerPdfTest, UniformDiskPdfIntegratesToOne) {
   EXPECT_NEAR(pdf_integral(disk_pdf, sampler_disk_binning()), 1.0, k_pdf_integral_tolerance);
+}
+
+TEST(SamplerPdfTest, UniformSpherePdfIntegratesToOne) {
+  EXPECT_NEAR(pdf_integral(uniform_sphere_pdf_at, sphere_binning(21, 21)), 1.0,
+              k_pdf_integral_tolerance);
 }
 
 TEST(SamplerPdfTest, UniformHemispherePdfIntegratesToOne) {

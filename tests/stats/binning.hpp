@@ -87,6 +87,11 @@ inline std::optional<Vec2> hemisphere_parameters(const Vec3& w) {
   if (!(std::abs(length - 1.0) <= k_domain_slack && w.z >= -k_domain_slack)) return std::nullopt;
   return Vec2(wrap_angle(std::atan2(w.y, w.x)), w.z);
 }
+inline std::optional<Vec2> sphere_parameters(const Vec3& w) {
+  const double length = glm::length(w);
+  if (!(std::abs(length - 1.0) <= k_domain_slack)) return std::nullopt;
+  return Vec2(wrap_angle(std::atan2(w.y, w.x)), w.z);
+}
 
 }  // namespace detail
 
@@ -115,6 +120,13 @@ inline Binning<Vec3> hemisphere_binning(int phi_cells, int cos_theta_cells) {
            phi_cells, cos_theta_cells, 1.0},
           &detail::hemisphere_point,
           &detail::hemisphere_parameters};
+}
+
+/// The whole sphere on (phi, z) cells: equal solid angles (Archimedes), odd counts as above.
+inline Binning<Vec3> sphere_binning(int phi_cells, int z_cells) {
+  return {{"sphere (phi, z)", "phi (rad)", "z", 0.0, k_two_pi, -1.0, 1.0, phi_cells, z_cells, 1.0},
+          &detail::hemisphere_point,  // (sin theta cos phi, sin theta sin phi, z) for any z
+          &detail::sphere_parameters};
 }
 
 }  // namespace mcrt::testing

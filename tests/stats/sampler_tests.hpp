@@ -23,6 +23,7 @@ inline constexpr std::uint64_t k_square_stream = 1;
 inline constexpr std::uint64_t k_disk_stream = 2;
 inline constexpr std::uint64_t k_uniform_hemisphere_stream = 3;
 inline constexpr std::uint64_t k_cosine_hemisphere_stream = 4;
+inline constexpr std::uint64_t k_uniform_sphere_stream = 5;
 
 /// Designed false-failure rate of one sampler test.
 inline constexpr double k_sampler_alpha = 1e-4;
@@ -59,6 +60,14 @@ template <class Sampler, class Pdf>
 double hemisphere_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::uint64_t seed,
                                   std::uint64_t stream, const std::string& name) {
   return chi_square_sampler_p_value(sample, pdf, sampler_hemisphere_binning(), seed,
+                                    {name, k_sampler_samples, stream, k_sampler_alpha});
+}
+
+/// The same for a sampler of directions on the whole sphere, 21 phi by 21 z cells.
+template <class Sampler, class Pdf>
+double sphere_sampler_p_value(const Sampler& sample, const Pdf& pdf, std::uint64_t seed,
+                              std::uint64_t stream, const std::string& name) {
+  return chi_square_sampler_p_value(sample, pdf, sphere_binning(21, 21), seed,
                                     {name, k_sampler_samples, stream, k_sampler_alpha});
 }
 
