@@ -243,9 +243,8 @@ int run(const CLI::App& app, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{k_chapter.description, k_chapter.name};
   Options o;
-  add_common_options(app, o.common, k_chapter);
+  ChapterApp app(k_chapter, o.common);
   app.add_option("--max-n", o.max_n, "Largest N of the 2D error study (N runs from 10)")
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1'000'000'000'000}));
   app.add_option("--trials", o.trials, "Independent estimates per N (2 or more: a variance needs 2)")
@@ -256,5 +255,5 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1'000'000'000}));
   app.add_option("--points", o.points, "Points drawn in the picture")
       ->check(CLI::Range(1, 100'000));
-  return run_chapter(app, argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { return run(app, o); });
 }

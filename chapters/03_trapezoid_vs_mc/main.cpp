@@ -192,9 +192,8 @@ int run(const CLI::App& app, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{k_chapter.description, k_chapter.name};
   Options o;
-  add_common_options(app, o.common, k_chapter);
+  ChapterApp app(k_chapter, o.common);
   app.add_option("--trials", o.trials, "Monte Carlo runs per N (the rmse is over these)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--max-evaluations", o.max_evaluations,
@@ -203,5 +202,5 @@ int main(int argc, char** argv) {
   add_list_option(app, "--dims", o.dims,
                   "Dimensions k of the k-dimensional integrands, e.g. 1,2,4,8 (the ball at "
                   "k >= 2, and always at k = 2)", 1, k_max_dims);
-  return run_chapter(app, argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { return run(app, o); });
 }

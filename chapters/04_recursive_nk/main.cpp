@@ -252,11 +252,9 @@ int run(const CLI::App& app, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{k_chapter.description, k_chapter.name};
   Options o;
-  add_common_options(app, o.common, k_chapter);
-  add_scene_options(app, o.scene);
-  add_image_options(app, o.image);
+  ChapterApp app(k_chapter, o.common);
+  add_render_options(app, o.scene, o.image);
   app.add_option("--spp", o.spp, "Camera samples per pixel in the sweep")
       ->check(CLI::Range(1, 1 << 16));
   add_list_option(app, "--branching", o.branching,
@@ -270,5 +268,5 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 64));
   app.add_option("--budget", o.budget, "Rays per pixel of each equal-cost render")
       ->check(CLI::Range(1, 1 << 20));
-  return run_chapter(app, argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { return run(app, o); });
 }

@@ -181,14 +181,12 @@ int run(const CLI::App& app, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{k_chapter.description, k_chapter.name};
   Options o;
-  add_common_options(app, o.common, k_chapter);
-  add_scene_options(app, o.scene);
-  add_image_options(app, o.image);
+  ChapterApp app(k_chapter, o.common);
+  add_render_options(app, o.scene, o.image);
   add_list_option(app, "--spp", o.spp, "Samples per pixel of each image (a list: 1,4,16)", 1,
                   1 << 16);
   app.add_option("--depth", o.depth, "Bounces after the first hit (0: emitted light only)")
       ->check(CLI::Range(0, 1000));
-  return run_chapter(app, argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { return run(app, o); });
 }

@@ -131,4 +131,18 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
   }
 }
 
+ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)
+    : CLI::App(chapter.description, chapter.name) {
+  add_common_options(*this, common, chapter);
+}
+
+int ChapterApp::run(int argc, char** argv, const std::function<int()>& body) {
+  return run_chapter(*this, argc, argv, body);
+}
+
+void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image) {
+  add_scene_options(app, scene);
+  add_image_options(app, image);
+}
+
 }  // namespace mcrt

@@ -73,4 +73,21 @@ nlohmann::ordered_json flags_json(const CLI::App& app);
 /// Parses argv into `app`, then runs `body`; maps errors to exit codes and one-line messages.
 int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 
+/// A chapter program's command line: CLI11's App named and described by the chapter, with
+/// --out, --seed, --threads and --quiet already added.
+///
+///   Options o;
+///   ChapterApp app(k_chapter, o.common);
+///   add_render_options(app, o.scene, o.image);
+///   return app.run(argc, argv, [&] { return run(app, o); });
+class ChapterApp : public CLI::App {
+ public:
+  ChapterApp(const Chapter& chapter, CommonOptions& common);
+  /// run_chapter on this app.
+  int run(int argc, char** argv, const std::function<int()>& body);
+};
+
+/// --scene, --albedo, --emission, --width and --height: what every renderer takes.
+void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image);
+
 }  // namespace mcrt
