@@ -27,8 +27,10 @@
 #include "integration/log_grid.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"
+#include "io/work_limit.hpp"
 #include "io/summary.hpp"
 #include "plots.hpp"
+#include "report.hpp"
 
 using namespace mcrt;
 
@@ -129,14 +131,15 @@ Table ball_error_study(const std::vector<std::uint64_t>& grid, const Options& o,
 
 // 3. The picture: --points points, inside or not, and their estimate 4 M / N.
 Table draw_points(const Options& o, double& estimate) {
-  Table table({{"x", Column::text}, {"y", Column::text}, integer("inside")});
+  Table table({{"x", Column::real, 6, Column::fixed}, {"y", Column::real, 6, Column::fixed},
+               integer("inside")});
   Rng rng(o.common.seed, stream_key({{picture, k_parts}, {0, k_indices}, {0, k_trials}}));
   int inside = 0;
   for (int i = 0; i < o.points; ++i) {
     const double point[2] = {2.0 * rng.uniform() - 1.0, 2.0 * rng.uniform() - 1.0};
     const bool in = inside_unit_ball(point);
     inside += in;
-    table.add_row({fmt::format("{:.6f}", point[0]), fmt::format("{:.6f}", point[1]), in ? 1 : 0});
+    table.add_row({point[0], point[1], in ? 1 : 0});
   }
   estimate = 4.0 * inside / o.points;
   return table;
@@ -158,14 +161,11 @@ Results run_studies(const Options& o) {
   const double ball_n = static_cast<double>(o.trials) * static_cast<double>(o.ball_n);
   const double dims_sum = std::accumulate(o.dims.begin(), o.dims.end(), 0.0);
   const double ball_coordinates = ball_n * dims_sum + (2 + 5 + 10) * o.trials * sum(ball_grid);
-  if (disk_points > k_max_disk_points)
-    throw UsageError(fmt::format("--max-n x --trials: the disk study would draw {:.3g} points, "
-                                 "above the limit of {:.0e}; lower --max-n or --trials",
-                                 disk_points, k_max_disk_points));
-  if (ball_coordinates > k_max_ball_coordinates)
-    throw UsageError(fmt::format("--ball-n x --trials x --dims: the ball study would draw {:.3g} "
-                                 "coordinates, above the limit of {:.0e}; lower --ball-n, "
-                                 "--trials or --dims", ball_coordinates, k_max_ball_coordinates));
+  check_work_limit({disk_points, "points", "--trials x the sizes of the N grid"}, k_max_disk_points,
+                   "--max-n x --trials", "lower --max-n or --trials");
+  check_work_limit({ball_coordinates, "coordinates", "--trials x N x k over the ball studies"},
+                   k_max_ball_coordinates, "--ball-n x --trials x --dims",
+                   "lower --ball-n, --trials or --dims");
   prepare_output_dir(o.common.out);
 
   const double ball_points = ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
@@ -190,42 +190,6 @@ Results run_studies(const Options& o) {
           picture_estimate};
 }
 
-Json summary_of(const CLI::App& app, const Options& o, const Results& r) {
-  Json summary = start_summary(k_chapter, o.common);
-  summary["disk"] = {{"sizes", r.disk.size()}, {"trials", o.trials}, {"largest_n", o.max_n},
-                     {"estimate_at_largest_n", r.disk.numbers("mean_estimate").back()},
-                     {"fitted_slope", r.disk_fit.slope},
-                     {"fitted_slope_standard_error", r.disk_fit.slope_standard_error},
-                     {"theory_slope", -0.5}, {"median_empirical_over_theory_std", r.median_std_ratio},
-                     {"samples", r.disk_points}, {"seconds", r.disk_seconds},
-                     {"samples_per_second", r.disk_points / r.disk_seconds},
-                     {"avx2", disk_count_uses_avx2()}};
-  summary["ball"] = {{"n", o.ball_n}, {"trials", o.trials}, {"volumes", r.balls.json()},
-                     {"fitted_slopes", r.ball_slopes.json()}};
-  summary["picture"] = {{"points", o.points}, {"estimate", r.picture_estimate}};
-  summary["flags"] = flags_json(app);
-  return summary;
-}
-
-void print_report(const Options& o, const Results& r) {
-  fmt::print("{}  N from 10 to {} ({} sizes), {} trials each, seed {}, {} threads\n{}",
-             k_chapter.name, o.max_n, r.disk.size(), o.trials, o.common.seed, o.common.threads,
-             r.disk.console({"n", "mean_estimate", "rmse", "theory_std", "empirical_std"}));
-  fmt::print("  slope of log(rmse) against log(N): {:.3f} +- {:.3f}  (theory -0.5)\n"
-             "  median empirical / theory std: {:.3f}\n",
-             r.disk_fit.slope, r.disk_fit.slope_standard_error, r.median_std_ratio);
-  fmt::print("  samples per second: {:.3g}  ({:.3g} points in {:.2f} s{})\n",
-             r.disk_points / r.disk_seconds, r.disk_points, r.disk_seconds,
-             disk_count_uses_avx2() ? ", AVX2" : "");
-  fmt::print("  k-ball at N = {}:\n{}  k-ball rmse slopes:\n{}", o.ball_n,
-             r.balls.console({"k", "exact_volume", "mean_estimate", "empirical_std",
-                              "theory_std", "relative_std"}),
-             r.ball_slopes.console());
-  fmt::print("  picture: {} points, 4M/N = {:.4f}\n  wrote {}/{{disk_area,ball_volume,"
-             "ball_error_vs_n,points}}.csv, plots, summary.json\n",
-             o.points, r.picture_estimate, o.common.out.string());
-}
-
 int run(const CLI::App& app, const Options& o) {
   const Results r = run_studies(o);
   write_csv(o.common.out / "disk_area.csv", r.disk);
@@ -235,8 +199,8 @@ int run(const CLI::App& app, const Options& o) {
   write_plot(o.common.out, error_plot(r.disk_fit.slope, 4.0 * disk_area_theory_std(1)));
   write_plot(o.common.out, picture_plot(o.points, r.picture_estimate));
   write_plot(o.common.out, ball_error_plot({2, 5, 10}));
-  write_json(o.common.out / "summary.json", summary_of(app, o, r));
-  if (!o.common.quiet) print_report(o, r);
+  write_json(o.common.out / "summary.json", summary_of(k_chapter, app, o, r));
+  if (!o.common.quiet) print_report(k_chapter, o, r);
   return 0;
 }
 

@@ -1,0 +1,16 @@
+#include "io/work_limit.hpp"
+
+#include <fmt/format.h>
+
+#include "io/cli.hpp"
+
+namespace mcrt {
+
+void check_work_limit(const Work& work, double limit, std::string_view flags,
+                      std::string_view remedy) {
+  if (work.amount <= limit) return;
+  throw UsageError(fmt::format("{}: this run would draw {:.3g} {} ({}), above the limit of {:.3g}; {}",
+                               flags, work.amount, work.unit, work.counted, limit, remedy));
+}
+
+}  // namespace mcrt
