@@ -1,0 +1,455 @@
+// Chapter 06: Russian roulette, a stopping rule without bias.
+//
+//   for each sample:
+//     shoot a ray into the scene
+//     repeat until the path leaves the scene or is stopped:
+//       find the closest intersection
+//       add its emitted light, times the path weight
+//       once the path has --min-depth bounces:
+//         go on with probability q, else stop       (q fixed, or the path weight's largest part)
+//         divide the path weight by q               (the survivors carry what the stopped lost)
+//       pick one new direction uniformly on the hemisphere
+//       multiply the weight by f_r cos(theta) / pdf
+//     set the sample colour to the sum
+//
+// There is no depth cut, so the estimate is unbiased for the whole series (common/render/
+// russian_roulette.hpp). The furnace, where E[L] = Le / (1 - a), makes every claim a number:
+//   bias:         the depth cut at k against roulette after k bounces, k = 0..--depth
+//   efficiency:   for each q of --q: variance, rays per path, seconds, 1 / (variance x time)
+//   path length:  the rays of each path at --fixed-q against the geometric law
+// and the chosen --scene is rendered both ways at --spp.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/stopwatch.hpp"
+#include "integration/statistics.hpp"
+#include "io/cli.hpp"
+#include "io/image_file.hpp"
+#include "io/output.hpp"
+#include "io/ray_limit.hpp"
+#include "io/render_summary.hpp"
+#include "io/summary.hpp"
+#include "io/table.hpp"
+#include "render/path_tracer.hpp"
+#include "render/render.hpp"
+#include "render/render_totals.hpp"
+#include "render/russian_roulette.hpp"
+#include "render/scene.hpp"
+
+#include "plots.hpp"
+
+using namespace mcrt;
+
+namespace {
+
+const Chapter k_chapter{"ch06_russian_roulette",
+                        "Chapter 06: Russian roulette. Chapter 05's path tracer without a depth "
+                        "cut: after --min-depth bounces a path goes on with probability q and its "
+                        "weight is divided by q. In the furnace: the depth cut's bias against "
+                        "roulette's, the variance, rays and time of each q, and the path lengths; "
+                        "then the scene rendered both ways."};
+
+// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
+constexpr double k_max_rays = 1e11;
+// The survival per bounce assumed when predicting the throughput policy's rays outside the
+// furnace (an expectation, not a bound: the Cornell boxes keep at most 0.73 per bounce).
+constexpr double k_typical_survival = 0.8;
+// bias.csv's intervals are mean +- 3.29 standard errors (99.9%): over 11 rows, some row's
+// interval misses the truth in about 1% of runs.
+constexpr double k_ci_z = 3.2905267;
+// Stream blocks of the furnace studies: each study draws its own paths. The bias study uses
+// one block for every k, so its rows share their paths and the curve is smooth.
+constexpr std::uint64_t k_cut_block = 1, k_roulette_block = 2, k_length_block = 3;
+constexpr std::uint64_t k_efficiency_block = 16;  // + the row
+
+struct Options {
+  CommonOptions common;
+  SceneOptions scene;
+  ImageOptions image{256, 192};
+  int spp = 64;    // samples per pixel of both images
+  int depth = 10;  // the depth cut of depth_cut.png, and the largest k of bias.csv
+  Roulette roulette{3, RoulettePolicy::throughput, 0.7, 0.05};  // --min-depth --policy --fixed-q --floor
+  std::vector<double> q{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};  // the efficiency sweep
+  int paths = 200000;  // furnace paths per row of every study
+};
+
+// Every q a flag takes: 0 would stop every path at once, 1 never (the furnace is closed).
+constexpr double k_lowest_q = 0.001, k_highest_q = 0.999;
+
+// --q: a comma-separated list of probabilities, sorted, duplicates dropped; anything else is a
+// usage error naming the flag.
+void add_probability_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
+                                 const std::string& description) {
+  const std::string accepted =
+      fmt::format("{}: give a comma-separated list of numbers from {} to {}", flag, k_lowest_q,
+                  k_highest_q);
+  app.add_option_function<std::string>(
+         flag,
+         [&values, accepted](const std::string& text) {
+           values.clear();
+           for (std::size_t start = 0; start <= text.size();) {
+             const std::size_t end = std::min(text.find(',', start), text.size());
+             const std::string item = text.substr(start, end - start);
+             std::size_t used = 0;
+             double q = std::nan("");
+             try { q = std::stod(item, &used); } catch (const std::exception&) { used = 0; }
+             if (item.empty() || used != item.size() || !(q >= k_lowest_q && q <= k_highest_q))
+               throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
+             values.push_back(q);
+             start = end + 1;
+           }
+           std::sort(values.begin(), values.end());
+           values.erase(std::unique(values.begin(), values.end()), values.end());
+         },
+         description)
+      ->default_str(fmt::format("{}", fmt::join(values, ",")));
+}
+
+// The expected rays of a roulette path (d + 1/(1 - q)), at a survival of `q`.
+double roulette_rays(int min_depth, double q) { return min_depth + 1.0 / (1.0 - q); }
+
+// The rays the run is expected to trace: exact bounds for the depth cut, expectations for
+// roulette (its paths have no longest length).
+RayWork predicted_work(const Options& o) {
+  const double a = o.scene.params.furnace_albedo;
+  const double q_throughput = std::max(a, k_typical_survival);
+  const double q_render = o.roulette.policy == RoulettePolicy::fixed ? o.roulette.q : q_throughput;
+  const double pixels = static_cast<double>(o.image.width) * o.image.height;
+  double rays = pixels * o.spp * (o.depth + 1.0 + roulette_rays(o.roulette.min_depth, q_render));
+  double furnace = roulette_rays(o.roulette.min_depth, o.roulette.q);  // path lengths
+  for (int k = 0; k <= o.depth; ++k) furnace += k + 1.0 + roulette_rays(k, q_render);
+  for (double q : o.q) furnace += roulette_rays(o.roulette.min_depth, q);
+  furnace += roulette_rays(o.roulette.min_depth, q_throughput);
+  rays += furnace * o.paths;
+  return {rays, "renders + furnace studies, expected rays for roulette"};
+}
+
+void check_request(const Options& o) {
+  check_image_size(o.image);
+  if (o.scene.params.furnace_albedo >= 1.0)
+    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
+                     "is infinite");
+  check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --spp, --depth",
+                  o.common.threads, "lower one of them, or the image size");
+}
+
+// The furnace of --albedo and --emission, and its paths.
+struct Furnace {
+  Scene scene;
+  double albedo, emission;
+  const Options& o;
+
+  template <class Estimator>
+  std::vector<FurnacePath> trace(std::uint64_t block, Estimator&& estimate) const {
+    return trace_furnace_paths(static_cast<std::uint64_t>(o.paths), o.common.seed, block,
+                               o.common.threads, estimate);
+  }
+  auto depth_cut(int k) const {
+    return [this, k](const Ray& ray, Rng& rng, RayCount& count) {
+      return estimate_path_radiance(scene, ray, k, rng, count);
+    };
+  }
+  auto roulette(const Roulette& r) const {
+    return [this, r](const Ray& ray, Rng& rng, RayCount& count) {
+      return estimate_path_radiance_roulette(scene, ray, r, rng, count);
+    };
+  }
+};
+
+struct PathStats {
+  RunningStats radiance, rays;
+  double seconds = 0.0;
+};
+
+template <class Estimator>
+PathStats measure(const Furnace& furnace, std::uint64_t block, Estimator&& estimate) {
+  const Stopwatch clock;
+  const std::vector<FurnacePath> paths = furnace.trace(block, estimate);
+  PathStats stats;
+  stats.seconds = clock.seconds();
+  for (const FurnacePath& path : paths) {
+    stats.radiance.add(path.radiance);
+    stats.rays.add(static_cast<double>(path.rays));
+  }
+  return stats;
+}
+
+// bias.csv: the depth cut at k and roulette after k bounces, against Le / (1 - a).
+Table bias_study(const Furnace& f) {
+  Table bias({{"k", Column::integer}, {"cut_mean", Column::real}, {"cut_bias", Column::real},
+              {"cut_ci", Column::real}, {"cut_bias_theory", Column::real},
+              {"roulette_mean", Column::real}, {"roulette_bias", Column::real},
+              {"roulette_ci", Column::real}, {"roulette_rays_per_path", Column::real, 6}});
+  const double exact = furnace_radiance_untruncated(f.albedo, f.emission);
+  for (int k = 0; k <= f.o.depth; ++k) {
+    const PathStats cut = measure(f, k_cut_block, f.depth_cut(k));
+    Roulette after_k = f.o.roulette;
+    after_k.min_depth = k;
+    const PathStats roulette = measure(f, k_roulette_block, f.roulette(after_k));
+    bias.add_row({k, cut.radiance.mean(), cut.radiance.mean() - exact,
+                  k_ci_z * cut.radiance.standard_error(),
+                  furnace_depth_cut_bias(f.albedo, f.emission, k), roulette.radiance.mean(),
+                  roulette.radiance.mean() - exact, k_ci_z * roulette.radiance.standard_error(),
+                  roulette.rays.mean()});
+  }
+  return bias;
+}
+
+// efficiency.csv: one row per fixed q, then the throughput policy; efficiency = 1 / (variance x
+// seconds per path), and its closed form at the sweep's mean seconds per ray.
+Table efficiency_study(const Furnace& f) {
+  const Options& o = f.o;
+  std::vector<PathStats> rows;
+  for (std::size_t i = 0; i < o.q.size(); ++i) {
+    const Roulette fixed{o.roulette.min_depth, RoulettePolicy::fixed, o.q[i], o.roulette.floor};
+    rows.push_back(measure(f, k_efficiency_block + i, f.roulette(fixed)));
+  }
+  Roulette throughput = o.roulette;
+  throughput.policy = RoulettePolicy::throughput;
+  rows.push_back(measure(f, k_efficiency_block + o.q.size(), f.roulette(throughput)));
+
+  double seconds = 0.0, rays = 0.0;
+  for (const PathStats& r : rows) seconds += r.seconds, rays += r.rays.mean() * o.paths;
+  const double seconds_per_ray = seconds / rays;
+  const auto efficiency = [&](const PathStats& r) {
+    return 1.0 / (r.radiance.variance() * r.seconds / o.paths);
+  };
+  // The best q: the most efficient of those with a finite variance (q > 4a^2/3), whose
+  // sample variance means something; of all of them if none has.
+  const double b = furnace_roulette_variance_threshold(f.albedo);
+  const bool any_finite = o.q.back() > b;
+  std::size_t best = o.q.size();
+  for (std::size_t i = 0; i < o.q.size(); ++i)
+    if ((o.q[i] > b || !any_finite) &&
+        (best == o.q.size() || efficiency(rows[i]) > efficiency(rows[best])))
+      best = i;
+
+  Table table({{"policy", Column::text}, {"q", Column::real, 4}, {"mean", Column::real},
+               {"variance", Column::real}, {"variance_theory", Column::real},
+               {"rays_per_path", Column::real, 6}, {"rays_per_path_theory", Column::real, 6},
+               {"seconds", Column::real, 4}, {"efficiency", Column::real, 6},
+               {"efficiency_theory", Column::real, 6}, {"best", Column::integer}});
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PathStats& r = rows[i];
+    const bool fixed = i < o.q.size();
+    const double var = fixed ? furnace_roulette_variance(f.albedo, f.emission,
+                                                         o.roulette.min_depth, o.q[i])
+                             : std::nan("");
+    const double length = fixed ? furnace_roulette_mean_rays(o.roulette.min_depth, o.q[i])
+                                : std::nan("");
+    const auto known = [](double x) { return std::isfinite(x) ? Cell(x) : Cell(); };
+    table.add_row({fixed ? "fixed" : "throughput", fixed ? Cell(o.q[i]) : Cell(),
+                   r.radiance.mean(), r.radiance.variance(), known(var), r.rays.mean(),
+                   known(length), r.seconds, efficiency(r),
+                   known(1.0 / (var * length * seconds_per_ray)), fixed && i == best ? 1 : 0});
+  }
+  return table;
+}
+
+// path_length.csv: how many of the paths at --fixed-q traced r rays, against the geometric law
+// P(R = r) = q^(r - d - 1) (1 - q), r >= d + 1. Rows stop where the law's tail falls below 1e-4.
+Table path_length_study(const Furnace& f, PathStats& stats) {
+  const Roulette& r = f.o.roulette;
+  const Roulette fixed{r.min_depth, RoulettePolicy::fixed, r.q, r.floor};
+  const std::vector<FurnacePath> paths = f.trace(k_length_block, f.roulette(fixed));
+  const int longest = r.min_depth + 1 + static_cast<int>(std::ceil(std::log(1e-4) / std::log(r.q)));
+  std::vector<std::uint64_t> count(static_cast<std::size_t>(longest) + 1, 0);
+  for (const FurnacePath& path : paths) {
+    stats.radiance.add(path.radiance);
+    stats.rays.add(static_cast<double>(path.rays));
+    if (path.rays <= static_cast<std::uint64_t>(longest)) ++count[path.rays];
+  }
+  Table table({{"rays", Column::integer}, {"paths", Column::integer}, {"fraction", Column::real},
+               {"probability", Column::real}, {"expected", Column::real, 6}});
+  for (int rays = 1; rays <= longest; ++rays) {
+    const double p = furnace_roulette_length_probability(r.min_depth, r.q, rays);
+    const auto n = count[static_cast<std::size_t>(rays)];
+    table.add_row({rays, n, static_cast<double>(n) / f.o.paths, p, p * f.o.paths});
+  }
+  return table;
+}
+
+template <class Estimator>
+RenderResult render_image(const Camera& camera, const Options& o, const char* label,
+                          Estimator&& estimate) {
+  ProgressBar progress(fmt::format("ch06 {}", label), static_cast<std::uint64_t>(o.image.height),
+                       o.common.quiet);
+  RenderResult result = render(camera, {o.spp, 0, o.common.seed, o.common.threads, &progress},
+                               estimate);
+  progress.finish();
+  write_png(o.common.out / (std::string(label) + ".png"), result.image);
+  write_pfm(o.common.out / (std::string(label) + ".pfm"), result.image);
+  return result;
+}
+
+Table renders_table() {
+  return Table({{"estimator", Column::text}, {"spp", Column::integer},
+                {"mean_radiance", Column::real}, {"rays", Column::integer},
+                {"rays_per_sample", Column::real, 6}, {"seconds", Column::real, 4},
+                {"rays_per_second", Column::real, 4}});
+}
+
+void add_render_row(Table& table, const char* estimator, const RenderResult& r, const Options& o) {
+  const double samples = static_cast<double>(o.image.width) * o.image.height * o.spp;
+  table.add_row({estimator, o.spp, mean_radiance(r.image), r.rays,
+                 static_cast<double>(r.rays) / samples, r.seconds, r.rays_per_second()});
+}
+
+// The q of efficiency.csv's best row (the most efficient fixed q).
+double best_q(const Table& efficiency) {
+  for (std::size_t i = 0; i < efficiency.size(); ++i)
+    if (efficiency.at(i, "best").number() == 1.0) return efficiency.at(i, "q").number();
+  return std::nan("");
+}
+
+// How many rows of bias.csv have 0 inside roulette's interval (all of them, but 1% of runs).
+int rows_with_zero_in_ci(const Table& bias) {
+  int rows = 0;
+  for (std::size_t i = 0; i < bias.size(); ++i)
+    rows += std::abs(bias.at(i, "roulette_bias").number()) <= bias.at(i, "roulette_ci").number();
+  return rows;
+}
+
+// What the plots draw beside the CSV files; the closed-form efficiency uses the sweep's mean
+// seconds per ray.
+PlotSetup plot_setup(const Options& o, const Table& efficiency) {
+  double seconds = 0.0, rays = 0.0;
+  for (std::size_t i = 0; i < efficiency.size(); ++i) {
+    seconds += efficiency.at(i, "seconds").number();
+    rays += efficiency.at(i, "rays_per_path").number() * o.paths;
+  }
+  return {o.scene.params.furnace_albedo, o.scene.params.furnace_emission, o.depth,
+          o.roulette.min_depth, o.roulette.q, seconds / rays};
+}
+
+struct Results {
+  Table bias, efficiency, lengths, renders;
+  PathStats fixed_paths;
+  RenderTotals total;
+};
+
+void write_summary(const CLI::App& app, const Options& o, const Results& r) {
+  const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
+  const int d = o.roulette.min_depth;
+  Json summary = start_summary(k_chapter, o.common);
+  add_render_setup(summary, o.scene, o.image);
+  summary["spp"] = o.spp;
+  summary["depth"] = o.depth;
+  summary["min_depth"] = d;
+  summary["policy"] = o.roulette.policy == RoulettePolicy::fixed ? "fixed" : "throughput";
+  add_render_totals(summary, r.total);
+  const std::size_t last = r.efficiency.size() - 1;  // the throughput row
+  const double variance = furnace_roulette_variance(a, le, d, o.roulette.q);
+  const auto finite = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+  summary["furnace"] = {
+      {"albedo", a}, {"emission", le}, {"paths", o.paths},
+      {"radiance_theory", furnace_radiance_untruncated(a, le)},
+      {"variance_threshold_q", furnace_roulette_variance_threshold(a)},
+      {"fixed_q", {{"q", o.roulette.q}, {"mean", r.fixed_paths.radiance.mean()},
+                   {"standard_error", r.fixed_paths.radiance.standard_error()},
+                   {"variance", r.fixed_paths.radiance.variance()}, {"variance_theory", finite(variance)},
+                   {"mean_path_length", r.fixed_paths.rays.mean()},
+                   {"mean_path_length_theory", furnace_roulette_mean_rays(d, o.roulette.q)}}},
+      {"throughput", {{"floor", o.roulette.floor}, {"mean", r.efficiency.at(last, "mean").number()},
+                      {"standard_error", std::sqrt(r.efficiency.at(last, "variance").number() / o.paths)},
+                      {"mean_path_length", r.efficiency.at(last, "rays_per_path").number()}}}};
+  summary["mean_path_length"] = r.fixed_paths.rays.mean();
+  summary["mean_path_length_theory"] = furnace_roulette_mean_rays(d, o.roulette.q);
+  summary["best_q"] = best_q(r.efficiency);
+  summary["bias_rows_with_zero_in_roulette_ci"] = rows_with_zero_in_ci(r.bias);
+  summary["bias"] = r.bias.json();
+  summary["efficiency"] = r.efficiency.json();
+  summary["path_length"] = r.lengths.json();
+  summary["renders"] = r.renders.json();
+  summary["flags"] = flags_json(app);
+  write_json(o.common.out / "summary.json", summary);
+}
+
+void print_tables(const Options& o, const Results& r) {
+  const double a = o.scene.params.furnace_albedo;
+  fmt::print("{}  furnace a = {}, Le = {}: E[L] = Le / (1 - a) = {:.6g}   {} paths per row\n",
+             k_chapter.name, a, o.scene.params.furnace_emission,
+             furnace_radiance_untruncated(a, o.scene.params.furnace_emission), o.paths);
+  fmt::print("bias: the depth cut at k against roulette after k bounces (ci: 99.9%)\n{}",
+             r.bias.console({"k", "cut_bias", "cut_bias_theory", "cut_ci", "roulette_bias",
+                             "roulette_ci"}));
+  fmt::print("efficiency = 1 / (variance x seconds per path); fixed q <= 4a^2/3 = {:.4g} has "
+             "infinite variance\n{}", furnace_roulette_variance_threshold(a),
+             r.efficiency.console({"policy", "q", "mean", "variance", "variance_theory",
+                                   "rays_per_path", "efficiency", "best"}));
+  fmt::print("path length at q = {}: mean {:.4f} rays, theory d + 1/(1 - q) = {:.4f}\n",
+             o.roulette.q, r.fixed_paths.rays.mean(),
+             furnace_roulette_mean_rays(o.roulette.min_depth, o.roulette.q));
+  fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
+             r.renders.console());
+  fmt::print("wrote {}/{{bias,efficiency,path_length,renders}}.csv and plots, "
+             "{{depth_cut,roulette}}.png/.pfm, summary.json\n", o.common.out.string());
+}
+
+int run(const CLI::App& app, const Options& o) {
+  check_request(o);
+  const Scene scene = make_scene(o.scene.scene, o.scene.params);
+  const Camera camera(scene.camera, o.image.width, o.image.height);
+  const SceneParams& p = o.scene.params;
+  const Furnace furnace{make_furnace(p.furnace_albedo, p.furnace_emission), p.furnace_albedo,
+                        p.furnace_emission, o};
+  prepare_output_dir(o.common.out);
+
+  Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(), {}, {}};
+  r.lengths = path_length_study(furnace, r.fixed_paths);
+  const RenderResult cut =
+      render_image(camera, o, "depth_cut", [&](const Ray& ray, Rng& rng, RayCount& count) {
+        return estimate_path_radiance(scene, ray, o.depth, rng, count);
+      });
+  const RenderResult roulette =
+      render_image(camera, o, "roulette", [&](const Ray& ray, Rng& rng, RayCount& count) {
+        return estimate_path_radiance_roulette(scene, ray, o.roulette, rng, count);
+      });
+  add_render_row(r.renders, "depth_cut", cut, o);
+  add_render_row(r.renders, "roulette", roulette, o);
+  r.total.add(cut);
+  r.total.add(roulette);
+
+  write_csv(o.common.out / "bias.csv", r.bias);
+  write_csv(o.common.out / "efficiency.csv", r.efficiency);
+  write_csv(o.common.out / "path_length.csv", r.lengths);
+  write_csv(o.common.out / "renders.csv", r.renders);
+  write_plots(o.common.out, plot_setup(o, r.efficiency), r.efficiency);
+  write_summary(app, o, r);
+  if (!o.common.quiet) print_tables(o, r);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  ChapterApp app(k_chapter, o.common);
+  add_render_options(app, o.scene, o.image);
+  app.add_option("--spp", o.spp, "Samples per pixel of both images")->check(CLI::Range(1, 1 << 16));
+  app.add_option("--depth", o.depth, "Bounces of the depth cut (depth_cut.png; bias.csv's largest k)")
+      ->check(CLI::Range(0, 1000));
+  app.add_option("--min-depth", o.roulette.min_depth, "Bounces before roulette starts")
+      ->check(CLI::Range(0, 1000));
+  const std::map<std::string, RoulettePolicy> policies{{"fixed", RoulettePolicy::fixed},
+                                                       {"throughput", RoulettePolicy::throughput}};
+  app.add_option("--policy", o.roulette.policy, "Roulette of the image and bias.csv: fixed "
+                 "(--fixed-q) or throughput (q = the path weight's largest part, >= --floor)")
+      ->transform(CLI::CheckedTransformer(policies));
+  app.add_option("--fixed-q", o.roulette.q, "q of --policy fixed and of path_length.csv")
+      ->check(CLI::Range(k_lowest_q, k_highest_q));
+  app.add_option("--floor", o.roulette.floor, "Least q of the throughput policy")
+      ->check(CLI::Range(k_lowest_q, k_highest_q));
+  add_probability_list_option(app, "--q", o.q, "The fixed q of the efficiency sweep (a list)");
+  app.add_option("--paths", o.paths, "Furnace paths per row of every study")
+      ->check(CLI::Range(100, 100000000));
+  return app.run(argc, argv, [&] { return run(app, o); });
+}

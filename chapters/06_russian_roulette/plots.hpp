@@ -1,0 +1,106 @@
+#pragma once
+// Chapter 06's figures: gnuplot scripts over bias.csv, efficiency.csv and path_length.csv,
+// columns by name; the closed forms of common/render/russian_roulette.hpp drawn beside them.
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "io/plot.hpp"
+#include "io/table.hpp"
+
+namespace mcrt {
+
+/// What the plots need besides the CSV files.
+struct PlotSetup {
+  double albedo = 0.5;
+  double emission = 1.0;
+  int depth = 10;        ///< bias.csv's largest k
+  int min_depth = 3;     ///< d of the efficiency sweep and the path lengths
+  double fixed_q = 0.7;  ///< q of path_length.csv
+  double seconds_per_ray = 0.0;  ///< the sweep's, for the efficiency's closed form
+};
+
+// bias.png: the depth cut's bias against k with its closed form, roulette's beside it at 0.
+inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s) {
+  write_plot(out,
+             {"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
+                      "k loses nothing",
+              "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
+              fmt::format("set key bottom right\nset xrange [-0.5:{}]\n{}", s.depth + 0.5,
+                          s.depth <= 20 ? "set xtics 1\n" : ""),
+              "plot 0 with lines lc 'gray' notitle, "
+              "'bias.csv' using \"k\":\"cut_bias_theory\" with lines dt 2 lw 2 lc 'black' "
+              "title 'depth cut, closed form -Le a^{k+1}/(1-a)', "
+              "'' using \"k\":\"cut_bias\":\"cut_ci\" with yerrorbars pt 7 lc 1 "
+              "title 'depth cut at k (99.9% interval)', "
+              "'' using (column(\"k\") + 0.15):\"roulette_bias\":\"roulette_ci\" with yerrorbars "
+              "pt 5 lc 2 title 'roulette after k bounces (99.9% interval)'"});
+}
+
+// efficiency.png: measured 1 / (variance x seconds per path) of each fixed q, the closed form
+// as a curve, the best q ringed, the throughput policy as a line, and the q <= 4a^2/3 band
+// where the variance is infinite shaded.
+inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSetup& s,
+                                  const Table& efficiency) {
+  double best_q = std::nan(""), best = 0.0, throughput = 0.0, highest = 0.0;
+  for (std::size_t i = 0; i < efficiency.size(); ++i) {
+    highest = std::max(highest, efficiency.at(i, "efficiency").number());
+    if (efficiency.at(i, "best").number() == 1.0) {
+      best_q = efficiency.at(i, "q").number();
+      best = efficiency.at(i, "efficiency").number();
+    }
+    if (efficiency.at(i, "policy").string() == "throughput")
+      throughput = efficiency.at(i, "efficiency").number();
+  }
+  const std::string settings = fmt::format(
+      "a = {:.9g}; Le = {:.9g}; d = {}; tray = {:.9g}\n"
+      "b = 4.0 * a**2 / 3\n"
+      "S(q) = (1 - b**(d + 1)) / (1 - b) + b**(d + 1) / (q - b)\n"
+      "V(q) = Le**2 * ((1 + a) / (1 - a) * S(q) - 1 / (1 - a)**2)\n"
+      "eff(q) = q > b ? 1 / (V(q) * (d + 1 / (1 - q)) * tray) : NaN\n"
+      "set samples 500\nset xrange [0:1]\nset yrange [0:{:.9g}]\nset key top right\n"
+      "if (b < 1) set object 1 rect from first 0, graph 0 to first b, graph 1 "
+      "fc rgb '#e0e0e0' fs solid noborder behind\n"
+      "if (b < 1) set label 2 'q <= 4a^2/3: infinite variance' at first b / 2, graph 0.45 "
+      "center rotate by 90 noenhanced\n"
+      "{}",
+      s.albedo, s.emission, s.min_depth, s.seconds_per_ray, 1.35 * highest,
+      std::isfinite(best_q)
+          ? fmt::format("set label 1 'best q = {:g}' at first {:.9g}, first {:.9g} point pt 6 "
+                        "ps 3 lw 2 offset 1.5, 1.5\n", best_q, best_q, best)
+          : std::string());
+  write_plot(out,
+             {"efficiency", "Efficiency of fixed-q roulette: 1 / (variance x seconds per path)",
+              "q (probability of going on)", "efficiency (1/s)", false, false, settings,
+              fmt::format("plot 'efficiency.csv' using \"q\":\"efficiency\" with linespoints pt 7 "
+                          "lw 2 lc 1 title 'measured', eff(x) with lines dt 2 lw 2 lc 'black' "
+                          "title 'closed form, at the mean seconds per ray', {:.9g} with lines "
+                          "dt 3 lw 2 lc 2 title 'throughput policy (measured)'", throughput)});
+}
+
+// path_length.png: the fraction of paths that traced r rays against the geometric law.
+inline void write_path_length_plot(const std::filesystem::path& out, const PlotSetup& s) {
+  write_plot(out,
+             {"path_length",
+              fmt::format("Path lengths at q = {:g}, d = {}: geometric after d + 1 rays",
+                          s.fixed_q, s.min_depth),
+              "rays traced by the path", "fraction of paths", false, true,
+              "set key top right\nset style fill solid 0.4\n",
+              fmt::format("plot 'path_length.csv' using \"rays\":\"fraction\" with points pt 7 "
+                          "ps 1.2 lc 1 title 'measured', '' using \"rays\":\"probability\" with "
+                          "lines lw 2 lc 'black' title 'q^{{r-d-1}} (1-q), q = {:g}'",
+                          s.fixed_q)});
+}
+
+inline void write_plots(const std::filesystem::path& out, const PlotSetup& setup,
+                        const Table& efficiency) {
+  write_bias_plot(out, setup);
+  write_efficiency_plot(out, setup, efficiency);
+  write_path_length_plot(out, setup);
+}
+
+}  // namespace mcrt
