@@ -35,7 +35,9 @@
 #include "render/scene.hpp"
 #include "render/two_render_error.hpp"
 
+#include "plan.hpp"
 #include "plots.hpp"
+#include "report.hpp"
 
 using namespace mcrt;
 
@@ -67,48 +69,6 @@ struct Options {
   int equal_cost_depth = 3;                // k of the equal-cost comparison
   int budget = 600;                        // rays per pixel of each equal-cost render
 };
-
-// Every render of the run and its predicted ray count (no escapes), known before any work.
-struct Plan {
-  std::uint64_t pixels = 0;
-  int limit_depth = 0;
-  std::vector<int> equal_cost_spp;  // per N: budget / rays per sample; 0 when one is over
-  double predicted_rays = 0.0;      // a double: the request may exceed 2^64
-};
-
-Plan make_plan(const Options& o) {
-  Plan plan;
-  plan.pixels = static_cast<std::uint64_t>(o.image.width) * o.image.height;
-  plan.limit_depth = std::max(k_limit_depth, 2 * o.max_depth);
-  const auto rays = [&](int n, int k, int spp) {
-    return static_cast<double>(plan.pixels) * spp * static_cast<double>(max_rays_per_sample(n, k));
-  };
-  for (int n : o.branching)
-    for (int k = 0; k <= o.max_depth; ++k) plan.predicted_rays += rays(n, k, o.spp);
-  for (int k = 0; k <= o.max_depth; ++k) plan.predicted_rays += rays(1, k, k_light_spp);
-  plan.predicted_rays += rays(1, plan.limit_depth, k_light_spp);
-  for (int n : o.branching) {
-    const std::uint64_t per_sample = max_rays_per_sample(n, o.equal_cost_depth);
-    const auto spp = static_cast<int>(static_cast<std::uint64_t>(o.budget) / per_sample);
-    plan.equal_cost_spp.push_back(spp);
-    plan.predicted_rays += 2.0 * rays(n, o.equal_cost_depth, spp);  // two independent renders
-  }
-  return plan;
-}
-
-// Refuses impossible work before any is done: exit code 2, naming the flag.
-void check_plan(const Options& o, const Plan& plan) {
-  const int cheapest = o.branching.front();  // sorted: the smallest N
-  const std::uint64_t cheapest_sample = max_rays_per_sample(cheapest, o.equal_cost_depth);
-  if (static_cast<std::uint64_t>(o.budget) < cheapest_sample)
-    throw UsageError(fmt::format("--budget: {} rays per pixel cannot pay for one sample at "
-                                 "--equal-cost-depth {} (N = {} needs {}); give at least that",
-                                 o.budget, o.equal_cost_depth, cheapest, cheapest_sample));
-  check_ray_limit({plan.predicted_rays, "sweep, missing-light and equal-cost renders"},
-                  o.max_rays, "--max-rays", o.common.threads,
-                  "lower --max-depth, --branching, --spp, --budget or the image size, or raise "
-                  "--max-rays");
-}
 
 // 1. The explosion, and 3. the images: every N, every k (rays.csv, grid.png).
 Table sweep(RecursiveRenderer& render_recursive, const Options& o, std::vector<Image>& images) {
@@ -182,45 +142,9 @@ std::string conclusion(const Options& o, const Table& equal, std::size_t best) {
                                   : "Here branching paid off.");
 }
 
-void write_summary(const CLI::App& app, const Options& o, const Plan& plan,
-                   const RecursiveRenderer& work, const Table& rays, const Table& missing,
-                   const Table& equal, std::size_t best, const std::string& verdict) {
-  Json summary = start_summary(k_chapter, o.common);
-  add_render_setup(summary, o.scene, o.image);
-  summary["spp"] = o.spp;
-  summary["branching"] = o.branching;
-  summary["max_depth"] = o.max_depth;
-  summary["predicted_max_rays"] = plan.predicted_rays;
-  add_render_totals(summary, work.total);
-  summary["sweep"] = rays.json();
-  summary["limit"] = {{"branching", 1}, {"depth", plan.limit_depth}, {"spp", k_light_spp},
-                      {"mean_radiance", missing.at(0, "limit_mean_radiance").number()}};
-  summary["missing_light"] = missing.json();
-  summary["equal_cost"] = {{"budget_rays_per_pixel", o.budget}, {"depth", o.equal_cost_depth},
-                           {"best_branching", equal.at(best, "branching").json()},
-                           {"rows", equal.json()}, {"conclusion", verdict}};
-  summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
-}
-
-void print_tables(const Options& o, const RenderTotals& total, const Table& rays,
-                  const Table& missing, const Table& equal, const std::string& verdict) {
-  fmt::print("{}  scene {}  {}x{}  {} spp  {} threads\n{}", k_chapter.name, o.scene.scene,
-             o.image.width, o.image.height, o.spp, o.common.threads, rays.console());
-  fmt::print("missing light: 1 - mean L(k) / limit, both with N = 1 and {} spp\n{}", k_light_spp,
-             missing.console());
-  fmt::print("equal cost: {} rays per pixel, depth {}\n{}", o.budget, o.equal_cost_depth,
-             equal.console({"branching", "spp", "rays_per_pixel", "rms_error",
-                            "rms_error_at_budget", "relative_rms_error"}));
-  fmt::print("{}\ntotal: {} rays in {:.2f} s ({:.3g} rays/s)\n", verdict, total.rays,
-             total.seconds, total.rays_per_second());
-  fmt::print("wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json\n",
-             o.common.out.string());
-}
-
 int run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
-  const Plan plan = make_plan(o);
+  const Plan plan = make_plan(o, k_limit_depth, k_light_spp);
   check_plan(o, plan);
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
@@ -244,8 +168,10 @@ int run(const CLI::App& app, const Options& o) {
               missing.at(0, "limit_mean_radiance").number(), plan.limit_depth, o.budget,
               o.equal_cost_depth);
   write_grid(o.common.out, images, o.branching, o.max_depth, o.spp, o.image.width);
-  write_summary(app, o, plan, render_recursive, rays, missing, equal, best, verdict);
-  if (!o.common.quiet) print_tables(o, render_recursive.total, rays, missing, equal, verdict);
+  write_summary(k_chapter, app, o, plan, render_recursive, rays, missing, equal, best, verdict,
+                k_light_spp);
+  if (!o.common.quiet)
+    print_tables(k_chapter, o, render_recursive.total, rays, missing, equal, verdict, k_light_spp);
   return 0;
 }
 

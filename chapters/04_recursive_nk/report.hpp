@@ -1,0 +1,57 @@
+#pragma once
+// Chapter 04's report: summary.json and the console tables, from the run's Tables.
+
+#include <string>
+
+#include <fmt/format.h>
+
+#include "io/cli.hpp"
+#include "io/render_summary.hpp"
+#include "io/summary.hpp"
+#include "io/table.hpp"
+#include "plan.hpp"
+#include "render/recursive_render.hpp"
+
+namespace mcrt {
+
+// summary.json: the setup, the totals, every table and the equal-cost verdict.
+inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
+                          const Plan& plan, const RecursiveRenderer& work, const Table& rays,
+                          const Table& missing, const Table& equal, std::size_t best,
+                          const std::string& verdict, int light_spp) {
+  Json summary = start_summary(chapter, o.common);
+  add_render_setup(summary, o.scene, o.image);
+  summary["spp"] = o.spp;
+  summary["branching"] = o.branching;
+  summary["max_depth"] = o.max_depth;
+  summary["predicted_max_rays"] = plan.predicted_rays;
+  add_render_totals(summary, work.total);
+  summary["sweep"] = rays.json();
+  summary["limit"] = {{"branching", 1}, {"depth", plan.limit_depth}, {"spp", light_spp},
+                      {"mean_radiance", missing.at(0, "limit_mean_radiance").number()}};
+  summary["missing_light"] = missing.json();
+  summary["equal_cost"] = {{"budget_rays_per_pixel", o.budget}, {"depth", o.equal_cost_depth},
+                           {"best_branching", equal.at(best, "branching").json()},
+                           {"rows", equal.json()}, {"conclusion", verdict}};
+  summary["flags"] = flags_json(app);
+  write_json(o.common.out / "summary.json", summary);
+}
+
+// The console: the sweep, the missing light, the equal-cost table and the verdict.
+inline void print_tables(const Chapter& chapter, const auto& o, const RenderTotals& total,
+                         const Table& rays, const Table& missing, const Table& equal,
+                         const std::string& verdict, int light_spp) {
+  fmt::print("{}  scene {}  {}x{}  {} spp  {} threads\n{}", chapter.name, o.scene.scene,
+             o.image.width, o.image.height, o.spp, o.common.threads, rays.console());
+  fmt::print("missing light: 1 - mean L(k) / limit, both with N = 1 and {} spp\n{}", light_spp,
+             missing.console());
+  fmt::print("equal cost: {} rays per pixel, depth {}\n{}", o.budget, o.equal_cost_depth,
+             equal.console({"branching", "spp", "rays_per_pixel", "rms_error",
+                            "rms_error_at_budget", "relative_rms_error"}));
+  fmt::print("{}\ntotal: {} rays in {:.2f} s ({:.3g} rays/s)\n", verdict, total.rays,
+             total.seconds, total.rays_per_second());
+  fmt::print("wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json\n",
+             o.common.out.string());
+}
+
+}  // namespace mcrt
