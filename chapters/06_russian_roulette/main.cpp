@@ -17,19 +17,17 @@
 //   bias:         the depth cut at k against roulette after k bounces, k = 0..--depth
 //   efficiency:   for each q of --q: variance, rays per path, seconds, 1 / (variance x time)
 //   path length:  the rays of each path at --fixed-q against the geometric law
-// and the chosen --scene is rendered both ways at --spp.
+// (furnace_studies.hpp), and the chosen --scene is rendered both ways at --spp.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "core/stopwatch.hpp"
 #include "integration/statistics.hpp"
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
@@ -44,6 +42,7 @@
 #include "render/russian_roulette.hpp"
 #include "render/scene.hpp"
 
+#include "furnace_studies.hpp"
 #include "plots.hpp"
 
 using namespace mcrt;
@@ -62,13 +61,6 @@ constexpr double k_max_rays = 1e11;
 // The survival per bounce assumed when predicting the throughput policy's rays outside the
 // furnace (an expectation, not a bound: the Cornell boxes keep at most 0.73 per bounce).
 constexpr double k_typical_survival = 0.8;
-// bias.csv's intervals are mean +- 3.29 standard errors (99.9%): over 11 rows, some row's
-// interval misses the truth in about 1% of runs.
-constexpr double k_ci_z = 3.2905267;
-// Stream blocks of the furnace studies: each study draws its own paths. The bias study uses
-// one block for every k, so its rows share their paths and the curve is smooth.
-constexpr std::uint64_t k_cut_block = 1, k_roulette_block = 2, k_length_block = 3;
-constexpr std::uint64_t k_efficiency_block = 16;  // + the row
 
 struct Options {
   CommonOptions common;
@@ -141,141 +133,6 @@ void check_request(const Options& o) {
                   o.common.threads, "lower one of them, or the image size");
 }
 
-// The furnace of --albedo and --emission, and its paths.
-struct Furnace {
-  Scene scene;
-  double albedo, emission;
-  const Options& o;
-
-  template <class Estimator>
-  std::vector<FurnacePath> trace(std::uint64_t block, Estimator&& estimate) const {
-    return trace_furnace_paths(static_cast<std::uint64_t>(o.paths), o.common.seed, block,
-                               o.common.threads, estimate);
-  }
-  auto depth_cut(int k) const {
-    return [this, k](const Ray& ray, Rng& rng, RayCount& count) {
-      return estimate_path_radiance(scene, ray, k, rng, count);
-    };
-  }
-  auto roulette(const Roulette& r) const {
-    return [this, r](const Ray& ray, Rng& rng, RayCount& count) {
-      return estimate_path_radiance_roulette(scene, ray, r, rng, count);
-    };
-  }
-};
-
-struct PathStats {
-  RunningStats radiance, rays;
-  double seconds = 0.0;
-};
-
-template <class Estimator>
-PathStats measure(const Furnace& furnace, std::uint64_t block, Estimator&& estimate) {
-  const Stopwatch clock;
-  const std::vector<FurnacePath> paths = furnace.trace(block, estimate);
-  PathStats stats;
-  stats.seconds = clock.seconds();
-  for (const FurnacePath& path : paths) {
-    stats.radiance.add(path.radiance);
-    stats.rays.add(static_cast<double>(path.rays));
-  }
-  return stats;
-}
-
-// bias.csv: the depth cut at k and roulette after k bounces, against Le / (1 - a).
-Table bias_study(const Furnace& f) {
-  Table bias({{"k", Column::integer}, {"cut_mean", Column::real}, {"cut_bias", Column::real},
-              {"cut_ci", Column::real}, {"cut_bias_theory", Column::real},
-              {"roulette_mean", Column::real}, {"roulette_bias", Column::real},
-              {"roulette_ci", Column::real}, {"roulette_rays_per_path", Column::real, 6}});
-  const double exact = furnace_radiance_untruncated(f.albedo, f.emission);
-  for (int k = 0; k <= f.o.depth; ++k) {
-    const PathStats cut = measure(f, k_cut_block, f.depth_cut(k));
-    Roulette after_k = f.o.roulette;
-    after_k.min_depth = k;
-    const PathStats roulette = measure(f, k_roulette_block, f.roulette(after_k));
-    bias.add_row({k, cut.radiance.mean(), cut.radiance.mean() - exact,
-                  k_ci_z * cut.radiance.standard_error(),
-                  furnace_depth_cut_bias(f.albedo, f.emission, k), roulette.radiance.mean(),
-                  roulette.radiance.mean() - exact, k_ci_z * roulette.radiance.standard_error(),
-                  roulette.rays.mean()});
-  }
-  return bias;
-}
-
-// efficiency.csv: one row per fixed q, then the throughput policy; efficiency = 1 / (variance x
-// seconds per path), and its closed form at the sweep's mean seconds per ray.
-Table efficiency_study(const Furnace& f) {
-  const Options& o = f.o;
-  std::vector<PathStats> rows;
-  for (std::size_t i = 0; i < o.q.size(); ++i) {
-    const Roulette fixed{o.roulette.min_depth, RoulettePolicy::fixed, o.q[i], o.roulette.floor};
-    rows.push_back(measure(f, k_efficiency_block + i, f.roulette(fixed)));
-  }
-  Roulette throughput = o.roulette;
-  throughput.policy = RoulettePolicy::throughput;
-  rows.push_back(measure(f, k_efficiency_block + o.q.size(), f.roulette(throughput)));
-
-  double seconds = 0.0, rays = 0.0;
-  for (const PathStats& r : rows) seconds += r.seconds, rays += r.rays.mean() * o.paths;
-  const double seconds_per_ray = seconds / rays;
-  const auto efficiency = [&](const PathStats& r) {
-    return 1.0 / (r.radiance.variance() * r.seconds / o.paths);
-  };
-  // The best q: the most efficient of those with a finite variance (q > 4a^2/3), whose
-  // sample variance means something; of all of them if none has.
-  const double b = furnace_roulette_variance_threshold(f.albedo);
-  const bool any_finite = o.q.back() > b;
-  std::size_t best = o.q.size();
-  for (std::size_t i = 0; i < o.q.size(); ++i)
-    if ((o.q[i] > b || !any_finite) &&
-        (best == o.q.size() || efficiency(rows[i]) > efficiency(rows[best])))
-      best = i;
-
-  Table table({{"policy", Column::text}, {"q", Column::real, 4}, {"mean", Column::real},
-               {"variance", Column::real}, {"variance_theory", Column::real},
-               {"rays_per_path", Column::real, 6}, {"rays_per_path_theory", Column::real, 6},
-               {"seconds", Column::real, 4}, {"efficiency", Column::real, 6},
-               {"efficiency_theory", Column::real, 6}, {"best", Column::integer}});
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const PathStats& r = rows[i];
-    const bool fixed = i < o.q.size();
-    const double var = fixed ? furnace_roulette_variance(f.albedo, f.emission,
-                                                         o.roulette.min_depth, o.q[i])
-                             : std::nan("");
-    const double length = fixed ? furnace_roulette_mean_rays(o.roulette.min_depth, o.q[i])
-                                : std::nan("");
-    const auto known = [](double x) { return std::isfinite(x) ? Cell(x) : Cell(); };
-    table.add_row({fixed ? "fixed" : "throughput", fixed ? Cell(o.q[i]) : Cell(),
-                   r.radiance.mean(), r.radiance.variance(), known(var), r.rays.mean(),
-                   known(length), r.seconds, efficiency(r),
-                   known(1.0 / (var * length * seconds_per_ray)), fixed && i == best ? 1 : 0});
-  }
-  return table;
-}
-
-// path_length.csv: how many of the paths at --fixed-q traced r rays, against the geometric law
-// P(R = r) = q^(r - d - 1) (1 - q), r >= d + 1. Rows stop where the law's tail falls below 1e-4.
-Table path_length_study(const Furnace& f, PathStats& stats) {
-  const Roulette& r = f.o.roulette;
-  const Roulette fixed{r.min_depth, RoulettePolicy::fixed, r.q, r.floor};
-  const std::vector<FurnacePath> paths = f.trace(k_length_block, f.roulette(fixed));
-  const int longest = r.min_depth + 1 + static_cast<int>(std::ceil(std::log(1e-4) / std::log(r.q)));
-  std::vector<std::uint64_t> count(static_cast<std::size_t>(longest) + 1, 0);
-  for (const FurnacePath& path : paths) {
-    stats.radiance.add(path.radiance);
-    stats.rays.add(static_cast<double>(path.rays));
-    if (path.rays <= static_cast<std::uint64_t>(longest)) ++count[path.rays];
-  }
-  Table table({{"rays", Column::integer}, {"paths", Column::integer}, {"fraction", Column::real},
-               {"probability", Column::real}, {"expected", Column::real, 6}});
-  for (int rays = 1; rays <= longest; ++rays) {
-    const double p = furnace_roulette_length_probability(r.min_depth, r.q, rays);
-    const auto n = count[static_cast<std::size_t>(rays)];
-    table.add_row({rays, n, static_cast<double>(n) / f.o.paths, p, p * f.o.paths});
-  }
-  return table;
-}
 
 template <class Estimator>
 RenderResult render_image(const Camera& camera, const Options& o, const char* label,
@@ -400,7 +257,8 @@ int run(const CLI::App& app, const Options& o) {
   const Camera camera(scene.camera, o.image.width, o.image.height);
   const SceneParams& p = o.scene.params;
   const Furnace furnace{make_furnace(p.furnace_albedo, p.furnace_emission), p.furnace_albedo,
-                        p.furnace_emission, o};
+                        p.furnace_emission, o.paths, o.common.seed, o.common.threads, o.depth,
+                        o.roulette, o.q};
   prepare_output_dir(o.common.out);
 
   Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(), {}, {}};
@@ -439,11 +297,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1000));
   app.add_option("--min-depth", o.roulette.min_depth, "Bounces before roulette starts")
       ->check(CLI::Range(0, 1000));
-  const std::map<std::string, RoulettePolicy> policies{{"fixed", RoulettePolicy::fixed},
-                                                       {"throughput", RoulettePolicy::throughput}};
-  app.add_option("--policy", o.roulette.policy, "Roulette of the image and bias.csv: fixed "
-                 "(--fixed-q) or throughput (q = the path weight's largest part, >= --floor)")
-      ->transform(CLI::CheckedTransformer(policies));
+  app.add_option_function<std::string>(
+         "--policy",
+         [&](const std::string& name) {
+           o.roulette.policy = name == "fixed" ? RoulettePolicy::fixed : RoulettePolicy::throughput;
+         },
+         "Roulette of the image and bias.csv: fixed (--fixed-q) or throughput (q = the path "
+         "weight's largest part, at least --floor)")
+      ->check(CLI::IsMember({"fixed", "throughput"}))
+      ->default_str("throughput");
   app.add_option("--fixed-q", o.roulette.q, "q of --policy fixed and of path_length.csv")
       ->check(CLI::Range(k_lowest_q, k_highest_q));
   app.add_option("--floor", o.roulette.floor, "Least q of the throughput policy")
