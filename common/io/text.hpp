@@ -1,7 +1,9 @@
 #pragma once
-/// Text on images: a built-in 5x7 bitmap font (with one descender row) for labels on contact
-/// sheets and figures. Printable ASCII only; any other character draws as '?'.
+/// Text on images: labels on contact sheets and figures, drawn with stb_easy_font (libstb-dev),
+/// a small segment font of printable ASCII. Any other character draws as '?', a multi-byte
+/// UTF-8 character as one '?'.
 
+#include <string>
 #include <string_view>
 
 #include "core/math.hpp"
@@ -9,25 +11,23 @@
 
 namespace mcrt {
 
-/// Font geometry in font pixels: a glyph is 5 wide and 8 tall (7 rows above the baseline plus
-/// one descender row); glyphs advance by 6, leaving one blank column between characters.
-inline constexpr int k_glyph_width = 5;
-inline constexpr int k_glyph_height = 8;
-inline constexpr int k_glyph_advance = k_glyph_width + 1;
+/// The text as the font draws it: printable ASCII kept, every other character (a multi-byte
+/// UTF-8 character counts once) replaced by '?'.
+std::string printable_text(std::string_view text);
 
-/// Number of glyphs `text` draws as: one per byte, except that a multi-byte UTF-8 character
-/// counts once (it draws as a single '?').
+/// Number of glyphs `text` draws as.
 int glyph_count(std::string_view text);
 
-/// Width and height in image pixels of `text` drawn with the built-in font at `scale`.
-/// Width = (6 n - 1) scale for n glyphs (no blank column after the last), 0 for empty text;
-/// height = 8 scale. Throws std::invalid_argument if scale < 1 or the size overflows int.
+/// Width and height in image pixels of `text` drawn at `scale` (each font unit a scale x scale
+/// block). The width is the font's advance summed over the glyphs (0 for empty text); the
+/// height covers every glyph from its top to the bottom of its descender. Throws
+/// std::invalid_argument if scale < 1 or the size overflows int.
 int text_width(std::string_view text, int scale = 2);
 int text_height(int scale = 2);
 
-/// Draws `text` with its top-left corner at (x, y); each font pixel is a scale x scale block
-/// of `color`; pixels outside the image are skipped. Characters the font lacks draw as '?'.
-/// Only the glyphs' set pixels are written: the background shows through.
+/// Draws `text` with its top-left corner at (x, y) in `color`; pixels outside the image are
+/// skipped and only the glyphs' strokes are written: the background shows through. Every
+/// written pixel lies inside the text_width x text_height box at (x, y).
 /// Throws std::invalid_argument if scale < 1.
 void draw_text(Image& image, int x, int y, std::string_view text, Color color, int scale = 2);
 
