@@ -4,9 +4,12 @@
 ///
 ///   sampling/plane.hpp       the square [-1,1]^2 and the unit disk (per unit area)
 ///   sampling/hemisphere.hpp  uniform and cosine-weighted directions (per steradian)
+///   sampling/cosine_power.hpp  the family p ~ cos^m(theta), and a pdf that favours grazing
+///                            directions (chapter 07)
 ///   sampling/sphere.hpp      uniform directions on the whole sphere
 ///   sampling/frame.hpp       local directions (normal = +z) to world directions
 
+#include "sampling/cosine_power.hpp"
 #include "sampling/frame.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/plane.hpp"
