@@ -76,4 +76,27 @@ TEST(AddListOptionTest, TheOptionParsesIntoTheVectorAndKeepsItsDefault) {
   EXPECT_THROW(app.parse(std::vector<std::string>{"13", "--dims"}), CLI::ValidationError);
 }
 
+// A list of reals such as --q: parsed, sorted and deduplicated, or rejected naming the flag.
+std::string real_rejection(const std::string& text) {
+  try {
+    mcrt::parse_real_list(text, "--q", 0.001, 0.999);
+  } catch (const CLI::ValidationError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ParseRealListTest, SortsAndDropsDuplicates) {
+  using Reals = std::vector<double>;
+  EXPECT_EQ(mcrt::parse_real_list("0.9,0.5,0.5,5e-1,0.7", "--q", 0.001, 0.999),
+            (Reals{0.5, 0.7, 0.9}));
+  EXPECT_EQ(mcrt::parse_real_list("0.001,0.999", "--q", 0.001, 0.999), (Reals{0.001, 0.999}));
+}
+
+TEST(ParseRealListTest, RejectsWhatIsNotAFiniteDecimalInRange) {
+  for (const char* text : {"", "0.5,,0.7", "nan", "inf", "0x1p-1", " 0.5", "0.5 ", "1", "0",
+                           "-0.5", "0.5.5", "abc", "1e999"})
+    EXPECT_NE(real_rejection(text).find("--q"), std::string::npos) << "'" << text << "'";
+}
+
 }  // namespace

@@ -1,10 +1,12 @@
 #include "io/cli.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/parallel.hpp"
 #include "io/output.hpp"
@@ -40,42 +42,95 @@ void add_image_options(CLI::App& app, ImageOptions& options) {
       ->check(CLI::Range(1, k_max_image_side));
 }
 
-std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
-                                int highest) {
-  const std::string accepted = fmt::format(
-      "{}: give a comma-separated list of whole numbers from {} to {}", flag, lowest, highest);
-  std::vector<int> values;
+namespace {
+
+// The comma-separated items of a list flag; an empty list or item is a usage error.
+std::vector<std::string> list_items(const std::string& text, const std::string& accepted) {
+  std::vector<std::string> items;
   std::size_t start = 0;
   while (true) {
     const std::size_t end = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, end - start);
-    // Decimal digits only: no sign, no spaces, no octal or hex prefixes.
-    const bool digits = !item.empty() && item.size() <= 9 &&
-                        std::all_of(item.begin(), item.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (!digits) throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
-    const int value = std::stoi(item);
-    if (value < lowest || value > highest)
-      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", value));
-    values.push_back(value);
-    if (end == text.size()) break;
+    items.push_back(text.substr(start, end - start));
+    if (items.back().empty()) throw CLI::ValidationError(accepted + " (an item is empty)");
+    if (end == text.size()) return items;
     start = end + 1;
   }
+}
+
+template <class T>
+std::vector<T> sorted_unique(std::vector<T> values) {
   std::sort(values.begin(), values.end());
   values.erase(std::unique(values.begin(), values.end()), values.end());
   return values;
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+}  // namespace
+
+std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
+                                int highest) {
+  const std::string accepted = fmt::format(
+      "{}: give a comma-separated list of whole numbers from {} to {}", flag, lowest, highest);
+  std::vector<int> values;
+  for (const std::string& item : list_items(text, accepted)) {
+    // Decimal digits only: no sign, no spaces, no octal or hex prefixes.
+    if (item.size() > 9 || !std::all_of(item.begin(), item.end(), is_digit))
+      throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
+    const int value = std::stoi(item);
+    if (value < lowest || value > highest)
+      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", value));
+    values.push_back(value);
+  }
+  return sorted_unique(std::move(values));
+}
+
+std::vector<double> parse_real_list(const std::string& text, const std::string& flag,
+                                    double lowest, double highest) {
+  const std::string accepted = fmt::format(
+      "{}: give a comma-separated list of numbers from {} to {}", flag, lowest, highest);
+  std::vector<double> values;
+  for (const std::string& item : list_items(text, accepted)) {
+    // Decimal notation only (digits, one point, an exponent): no hex floats, nan or inf.
+    const bool decimal = std::all_of(item.begin(), item.end(), [](char c) {
+      return is_digit(c) || c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+';
+    });
+    double value = 0.0;
+    std::size_t used = 0;
+    try {
+      if (decimal) value = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (!decimal || used != item.size() || !std::isfinite(value))
+      throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
+    if (value < lowest || value > highest)
+      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", item));
+    values.push_back(value);
+  }
+  return sorted_unique(std::move(values));
+}
+
 void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
                      const std::string& description, int lowest, int highest) {
-  std::string defaults;
-  for (int v : values) defaults += (defaults.empty() ? "" : ",") + std::to_string(v);
   app.add_option_function<std::string>(
          flag,
          [&values, flag, lowest, highest](const std::string& text) {
            values = parse_int_list(text, flag, lowest, highest);
          },
          description)
-      ->default_str(defaults);
+      ->default_str(fmt::format("{}", fmt::join(values, ",")));
+}
+
+void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
+                     const std::string& description, double lowest, double highest) {
+  app.add_option_function<std::string>(
+         flag,
+         [&values, flag, lowest, highest](const std::string& text) {
+           values = parse_real_list(text, flag, lowest, highest);
+         },
+         description)
+      ->default_str(fmt::format("{}", fmt::join(values, ",")));
 }
 
 void check_image_size(const ImageOptions& options) {

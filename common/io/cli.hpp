@@ -59,9 +59,16 @@ void add_image_options(CLI::App& app, ImageOptions& options);
 void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
                      const std::string& description, int lowest, int highest);
 
-/// The parser behind add_list_option: throws CLI::ValidationError naming `flag`.
+/// The same for a list of real numbers in [lowest, highest], such as --q 0.5,0.7: decimal
+/// numbers (an exponent is allowed), finite, sorted, duplicates dropped.
+void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
+                     const std::string& description, double lowest, double highest);
+
+/// The parsers behind add_list_option: throw CLI::ValidationError naming `flag`.
 std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
                                 int highest);
+std::vector<double> parse_real_list(const std::string& text, const std::string& flag,
+                                    double lowest, double highest);
 
 /// Throws UsageError if width x height exceeds k_max_pixels.
 void check_image_size(const ImageOptions& options);
