@@ -20,21 +20,16 @@
 // (furnace_studies.hpp), and the chosen --scene is rendered both ways at --spp.
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
-#include "integration/statistics.hpp"
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
 #include "io/ray_limit.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
 #include "io/table.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
@@ -44,6 +39,7 @@
 
 #include "furnace_studies.hpp"
 #include "plots.hpp"
+#include "report.hpp"
 
 using namespace mcrt;
 
@@ -76,35 +72,6 @@ struct Options {
 // Every q a flag takes: 0 would stop every path at once, 1 never (the furnace is closed).
 constexpr double k_lowest_q = 0.001, k_highest_q = 0.999;
 
-// --q: a comma-separated list of probabilities, sorted, duplicates dropped; anything else is a
-// usage error naming the flag.
-void add_probability_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
-                                 const std::string& description) {
-  const std::string accepted =
-      fmt::format("{}: give a comma-separated list of numbers from {} to {}", flag, k_lowest_q,
-                  k_highest_q);
-  app.add_option_function<std::string>(
-         flag,
-         [&values, accepted](const std::string& text) {
-           values.clear();
-           for (std::size_t start = 0; start <= text.size();) {
-             const std::size_t end = std::min(text.find(',', start), text.size());
-             const std::string item = text.substr(start, end - start);
-             std::size_t used = 0;
-             double q = std::nan("");
-             try { q = std::stod(item, &used); } catch (const std::exception&) { used = 0; }
-             if (item.empty() || used != item.size() || !(q >= k_lowest_q && q <= k_highest_q))
-               throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
-             values.push_back(q);
-             start = end + 1;
-           }
-           std::sort(values.begin(), values.end());
-           values.erase(std::unique(values.begin(), values.end()), values.end());
-         },
-         description)
-      ->default_str(fmt::format("{}", fmt::join(values, ",")));
-}
-
 // The expected rays of a roulette path (d + 1/(1 - q)), at a survival of `q`.
 double roulette_rays(int min_depth, double q) { return min_depth + 1.0 / (1.0 - q); }
 
@@ -133,7 +100,6 @@ void check_request(const Options& o) {
                   o.common.threads, "lower one of them, or the image size");
 }
 
-
 template <class Estimator>
 RenderResult render_image(const Camera& camera, const Options& o, const char* label,
                           Estimator&& estimate) {
@@ -160,96 +126,11 @@ void add_render_row(Table& table, const char* estimator, const RenderResult& r, 
                  static_cast<double>(r.rays) / samples, r.seconds, r.rays_per_second()});
 }
 
-// The q of efficiency.csv's best row (the most efficient fixed q).
-double best_q(const Table& efficiency) {
-  for (std::size_t i = 0; i < efficiency.size(); ++i)
-    if (efficiency.at(i, "best").number() == 1.0) return efficiency.at(i, "q").number();
-  return std::nan("");
-}
-
-// How many rows of bias.csv have 0 inside roulette's interval (all of them, but 1% of runs).
-int rows_with_zero_in_ci(const Table& bias) {
-  int rows = 0;
-  for (std::size_t i = 0; i < bias.size(); ++i)
-    rows += std::abs(bias.at(i, "roulette_bias").number()) <= bias.at(i, "roulette_ci").number();
-  return rows;
-}
-
-// What the plots draw beside the CSV files; the closed-form efficiency uses the sweep's mean
-// seconds per ray.
-PlotSetup plot_setup(const Options& o, const Table& efficiency) {
-  double seconds = 0.0, rays = 0.0;
-  for (std::size_t i = 0; i < efficiency.size(); ++i) {
-    seconds += efficiency.at(i, "seconds").number();
-    rays += efficiency.at(i, "rays_per_path").number() * o.paths;
-  }
-  return {o.scene.params.furnace_albedo, o.scene.params.furnace_emission, o.depth,
-          o.roulette.min_depth, o.roulette.q, seconds / rays};
-}
-
 struct Results {
   Table bias, efficiency, lengths, renders;
   PathStats fixed_paths;
   RenderTotals total;
 };
-
-void write_summary(const CLI::App& app, const Options& o, const Results& r) {
-  const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
-  const int d = o.roulette.min_depth;
-  Json summary = start_summary(k_chapter, o.common);
-  add_render_setup(summary, o.scene, o.image);
-  summary["spp"] = o.spp;
-  summary["depth"] = o.depth;
-  summary["min_depth"] = d;
-  summary["policy"] = o.roulette.policy == RoulettePolicy::fixed ? "fixed" : "throughput";
-  add_render_totals(summary, r.total);
-  const std::size_t last = r.efficiency.size() - 1;  // the throughput row
-  const double variance = furnace_roulette_variance(a, le, d, o.roulette.q);
-  const auto finite = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
-  summary["furnace"] = {
-      {"albedo", a}, {"emission", le}, {"paths", o.paths},
-      {"radiance_theory", furnace_radiance_untruncated(a, le)},
-      {"variance_threshold_q", furnace_roulette_variance_threshold(a)},
-      {"fixed_q", {{"q", o.roulette.q}, {"mean", r.fixed_paths.radiance.mean()},
-                   {"standard_error", r.fixed_paths.radiance.standard_error()},
-                   {"variance", r.fixed_paths.radiance.variance()}, {"variance_theory", finite(variance)},
-                   {"mean_path_length", r.fixed_paths.rays.mean()},
-                   {"mean_path_length_theory", furnace_roulette_mean_rays(d, o.roulette.q)}}},
-      {"throughput", {{"floor", o.roulette.floor}, {"mean", r.efficiency.at(last, "mean").number()},
-                      {"standard_error", std::sqrt(r.efficiency.at(last, "variance").number() / o.paths)},
-                      {"mean_path_length", r.efficiency.at(last, "rays_per_path").number()}}}};
-  summary["mean_path_length"] = r.fixed_paths.rays.mean();
-  summary["mean_path_length_theory"] = furnace_roulette_mean_rays(d, o.roulette.q);
-  summary["best_q"] = best_q(r.efficiency);
-  summary["bias_rows_with_zero_in_roulette_ci"] = rows_with_zero_in_ci(r.bias);
-  summary["bias"] = r.bias.json();
-  summary["efficiency"] = r.efficiency.json();
-  summary["path_length"] = r.lengths.json();
-  summary["renders"] = r.renders.json();
-  summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
-}
-
-void print_tables(const Options& o, const Results& r) {
-  const double a = o.scene.params.furnace_albedo;
-  fmt::print("{}  furnace a = {}, Le = {}: E[L] = Le / (1 - a) = {:.6g}   {} paths per row\n",
-             k_chapter.name, a, o.scene.params.furnace_emission,
-             furnace_radiance_untruncated(a, o.scene.params.furnace_emission), o.paths);
-  fmt::print("bias: the depth cut at k against roulette after k bounces (ci: 99.9%)\n{}",
-             r.bias.console({"k", "cut_bias", "cut_bias_theory", "cut_ci", "roulette_bias",
-                             "roulette_ci"}));
-  fmt::print("efficiency = 1 / (variance x seconds per path); fixed q <= 4a^2/3 = {:.4g} has "
-             "infinite variance\n{}", furnace_roulette_variance_threshold(a),
-             r.efficiency.console({"policy", "q", "mean", "variance", "variance_theory",
-                                   "rays_per_path", "efficiency", "best"}));
-  fmt::print("path length at q = {}: mean {:.4f} rays, theory d + 1/(1 - q) = {:.4f}\n",
-             o.roulette.q, r.fixed_paths.rays.mean(),
-             furnace_roulette_mean_rays(o.roulette.min_depth, o.roulette.q));
-  fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
-             r.renders.console());
-  fmt::print("wrote {}/{{bias,efficiency,path_length,renders}}.csv and plots, "
-             "{{depth_cut,roulette}}.png/.pfm, summary.json\n", o.common.out.string());
-}
 
 int run(const CLI::App& app, const Options& o) {
   check_request(o);
@@ -280,9 +161,9 @@ int run(const CLI::App& app, const Options& o) {
   write_csv(o.common.out / "efficiency.csv", r.efficiency);
   write_csv(o.common.out / "path_length.csv", r.lengths);
   write_csv(o.common.out / "renders.csv", r.renders);
-  write_plots(o.common.out, plot_setup(o, r.efficiency), r.efficiency);
-  write_summary(app, o, r);
-  if (!o.common.quiet) print_tables(o, r);
+  write_plots(o.common.out, o, r.efficiency);
+  write_summary(k_chapter, app, o, r);
+  if (!o.common.quiet) print_tables(k_chapter, o, r);
   return 0;
 }
 
@@ -310,7 +191,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(k_lowest_q, k_highest_q));
   app.add_option("--floor", o.roulette.floor, "Least q of the throughput policy")
       ->check(CLI::Range(k_lowest_q, k_highest_q));
-  add_probability_list_option(app, "--q", o.q, "The fixed q of the efficiency sweep (a list)");
+  add_list_option(app, "--q", o.q, "The fixed q of the efficiency sweep (a list)", k_lowest_q,
+                  k_highest_q);
   app.add_option("--paths", o.paths, "Furnace paths per row of every study")
       ->check(CLI::Range(100, 100000000));
   return app.run(argc, argv, [&] { return run(app, o); });

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -96,8 +97,21 @@ inline void write_path_length_plot(const std::filesystem::path& out, const PlotS
                           s.fixed_q)});
 }
 
-inline void write_plots(const std::filesystem::path& out, const PlotSetup& setup,
-                        const Table& efficiency) {
+// What the plots draw beside the CSV files, from the Options; the closed-form efficiency uses
+// the sweep's mean seconds per ray.
+inline PlotSetup plot_setup(const auto& o, const Table& efficiency) {
+  double seconds = 0.0, rays = 0.0;
+  for (std::size_t i = 0; i < efficiency.size(); ++i) {
+    seconds += efficiency.at(i, "seconds").number();
+    rays += efficiency.at(i, "rays_per_path").number() * o.paths;
+  }
+  return {o.scene.params.furnace_albedo, o.scene.params.furnace_emission, o.depth,
+          o.roulette.min_depth, o.roulette.q, seconds / rays};
+}
+
+// bias.png, efficiency.png and path_length.png into `out`, for the run's Options `o`.
+inline void write_plots(const std::filesystem::path& out, const auto& o, const Table& efficiency) {
+  const PlotSetup setup = plot_setup(o, efficiency);
   write_bias_plot(out, setup);
   write_efficiency_plot(out, setup, efficiency);
   write_path_length_plot(out, setup);
