@@ -1,13 +1,20 @@
 #pragma once
-// Chapter 07's figure: the variance of one sample for each pdf, in the furnace and in the
-// scene, over variance_vs_m.csv (columns by name).
+// Chapter 07's figures: the variance of one sample for each pdf, in the furnace and in the
+// scene, over variance_vs_m.csv (columns by name); the images and the noise strip.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "io/image_file.hpp"
+#include "io/labelled_grid.hpp"
 #include "io/plot.hpp"
+#include "render/image.hpp"
+#include "render/render.hpp"
+#include "sampling/cosine_power.hpp"
 
 namespace mcrt {
 
@@ -35,6 +42,32 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
                           "lc 'black' title 'furnace, closed form', "
                           "'' using 0:{} with linespoints pt 5 ps 1.5 lw 2 title '{}, measured'",
                           clamp("furnace_variance"), clamp("scene_variance"), scene)});
+}
+
+// The compared images (uniform, cosine, cosine at equal time, reference) as PNG and PFM, and
+// the noise strip: the centre of each pdf's
+// scene render (in the order of pdfs) beside the reference's.
+inline void write_images(const std::filesystem::path& out, const std::vector<HemispherePdf>& pdfs,
+                         const std::vector<RenderResult>& scene, const Image& cosine_equal_time,
+                         const Image& reference, int spp) {
+  const auto write = [&](const std::string& stem, const Image& image) {
+    write_png(out / (stem + ".png"), image);
+    write_pfm(out / (stem + ".pfm"), image);
+  };
+  write("uniform", scene[0].image);  // the pdfs start with m = 0, 1
+  write("cosine", scene[1].image);
+  write("cosine_equal_time", cosine_equal_time);
+  write("reference", reference);
+  std::vector<Image> strip;
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < pdfs.size(); ++i) {
+    strip.push_back(scene[i].image);
+    labels.push_back(pdf_name(pdfs[i]));
+  }
+  strip.push_back(reference);
+  labels.push_back("reference");
+  write_png(out / "noise_strip.png",
+            centre_detail_strip(strip, labels, fmt::format("at {} spp per pdf", spp)));
 }
 
 }  // namespace mcrt
