@@ -88,12 +88,8 @@ inline double furnace_radiance_variance(const HemispherePdf& pdf, double albedo,
   if (max_depth == 0 || emission == 0.0) return 0.0;
   const double b = furnace_bounce_second_moment(pdf, albedo);
   if (std::isinf(b)) return b;
-  double second_moment = 0.0, b_j = 1.0;
-  for (int j = 0; j <= max_depth; ++j, b_j *= b) {
-    double tail = 0.0, a_l = albedo;  // sum_{l=1..k-j} a^l
-    for (int l = 1; l <= max_depth - j; ++l, a_l *= albedo) tail += a_l;
-    second_moment += b_j * (1.0 + 2.0 * tail);
-  }
+  return furnace_radiance_variance_from_moments(albedo, b, emission, max_depth);
+}
   const double mean = furnace_radiance(albedo, 1.0, max_depth);
   return emission * emission * std::max(0.0, second_moment - mean * mean);
 }

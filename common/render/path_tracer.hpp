@@ -61,9 +61,10 @@ inline double furnace_radiance(double albedo, double emission, int max_depth) {
   return emission * sum;
 }
 
-/// Var[L] in the furnace for uniform hemisphere sampling (see the top of this file).
-inline double furnace_radiance_variance(double albedo, double emission, int max_depth) {
-  const double b = 4.0 * albedo * albedo / 3.0;
+/// Var[L] in the furnace for any direction pdf whose bounce weight w has E[w] = a and
+/// E[w^2] = b (independent bounces): E[L^2] = Le^2 sum_j b^j (1 + 2 sum_{l=1..k-j} a^l).
+inline double furnace_radiance_variance_from_moments(double albedo, double b, double emission,
+                                                     int max_depth) {
   double second_moment = 0.0, b_j = 1.0;
   for (int j = 0; j <= max_depth; ++j, b_j *= b) {
     double tail = 0.0, a_l = albedo;  // sum_{l=1..k-j} a^l
@@ -72,6 +73,13 @@ inline double furnace_radiance_variance(double albedo, double emission, int max_
   }
   const double mean = furnace_radiance(albedo, 1.0, max_depth);
   return emission * emission * std::max(0.0, second_moment - mean * mean);
+}
+
+/// Var[L] in the furnace for uniform hemisphere sampling (see the top of this file):
+/// b = E[(2 a cos)^2] = 4 a^2 / 3.
+inline double furnace_radiance_variance(double albedo, double emission, int max_depth) {
+  return furnace_radiance_variance_from_moments(albedo, 4.0 * albedo * albedo / 3.0, emission,
+                                                max_depth);
 }
 
 }  // namespace mcrt
