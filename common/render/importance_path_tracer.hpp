@@ -90,8 +90,5 @@ inline double furnace_radiance_variance(const HemispherePdf& pdf, double albedo,
   if (std::isinf(b)) return b;
   return furnace_radiance_variance_from_moments(albedo, b, emission, max_depth);
 }
-  const double mean = furnace_radiance(albedo, 1.0, max_depth);
-  return emission * emission * std::max(0.0, second_moment - mean * mean);
-}
 
 }  // namespace mcrt
