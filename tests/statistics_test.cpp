@@ -1,4 +1,4 @@
-// The statistics the tests rest on: common/statistics.hpp (running moments, least squares)
+// The statistics the tests rest on: common/integration/statistics.hpp (running moments, least squares)
 // and the test toolkit of tests/stats/ (hypothesis tests, binnings, chi-square, slopes),
 // checked on fixed inputs against values worked out by hand or tabulated.
 
@@ -29,7 +29,7 @@ namespace {
 // Tabulated quantiles are given to 6-7 digits; 1e-5 is the precision of the tables.
 constexpr double k_table_tol = 1e-5;
 
-// ---- common/statistics.hpp ----------------------------------------------------------------
+// ---- common/integration/statistics.hpp ----------------------------------------------------------------
 
 TEST(RunningStatsTest, MeanAndVarianceOfAKnownSample) {
   RunningStats s;

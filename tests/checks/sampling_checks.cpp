@@ -1,4 +1,4 @@
-// Every sampler of common/sampling.hpp against its own pdf: a chi-square goodness-of-fit test
+// Every sampler of common/sampling/ against its own pdf: a chi-square goodness-of-fit test
 // of 1e5 samples on equal-measure cells (false-failure rate 1e-4 each), and the pdf's integral
 // over its domain, which must be 1.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The chi-square tests every sampler of common/sampling.hpp is held to. The statistical checks
+// The chi-square tests every sampler of common/sampling/ is held to. The statistical checks
 // (tests/checks/sampling_checks.cpp) run them on the real samplers and the known-bug tests
 // (tests/known_bugs_test.cpp) on deliberately wrong ones: the same test, the same seed.
 //
