@@ -14,6 +14,7 @@
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
+#include "io/ray_limit.hpp"
 #include "io/render_summary.hpp"
 #include "io/summary.hpp"
 #include "render/render.hpp"
@@ -28,12 +29,20 @@ const Chapter k_chapter{"ch01_ray_tracing",
                         "Chapter 01: plain ray tracing. One camera ray per sample, the closest "
                         "hit, shaded by direct light from a point light (no bounces)."};
 
+// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
+constexpr double k_max_rays = 1e11;
+
 struct Options {
   CommonOptions common;
   SceneOptions scene;
   ImageOptions image{640, 480};
   int spp = 4;  // jittered samples per pixel (anti-aliasing only: there is nothing else to sample)
 };
+
+// At most one camera ray and one shadow ray per sample.
+RayWork predicted_work(const Options& o) {
+  return {2.0 * o.spp * o.image.width * o.image.height, "2 rays (camera + shadow) x spp x pixels"};
+}
 
 // Direct light at a hit x from an isotropic point light of intensity I at distance r:
 //   L = Le(x) + f_r * I * cos(theta) / r^2   if the shadow ray reaches the light, else Le(x).
@@ -79,6 +88,8 @@ void print_summary(const Options& o, const RenderResult& result) {
 
 int run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
+  check_ray_limit(predicted_work(o), k_max_rays, "--spp, --width, --height", o.common.threads,
+                  "lower one of them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   prepare_output_dir(o.common.out);
@@ -104,6 +115,6 @@ int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
   add_render_options(app, o.scene, o.image);
-  app.add_option("--spp", o.spp, "Jittered samples per pixel")->check(CLI::Range(1, 1 << 16));
+  add_number_option(app, "--spp", o.spp, "Jittered samples per pixel", 1, 1 << 16);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

@@ -209,15 +209,15 @@ int run(const CLI::App& app, const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  app.add_option("--max-n", o.max_n, "Largest N of the 2D error study (N runs from 10)")
-      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1'000'000'000'000}));
-  app.add_option("--trials", o.trials, "Independent estimates per N (2 or more: a variance needs 2)")
-      ->check(CLI::Range(2, 100'000));
+  add_number_option(app, "--max-n", o.max_n, "Largest N of the 2D error study (N runs from 10)",
+                    std::uint64_t{100}, std::uint64_t{1'000'000'000'000});
+  add_number_option(app, "--trials", o.trials,
+                    "Independent estimates per N (2 or more: a variance needs 2)", 2, 100'000);
   add_list_option(app, "--dims", o.dims, "Dimensions k of the ball table, e.g. 1,2,3", 1,
                   k_max_ball_dims);
-  app.add_option("--ball-n", o.ball_n, "N of the ball table (and largest N of its error study)")
-      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{1'000'000'000}));
-  app.add_option("--points", o.points, "Points drawn in the picture")
-      ->check(CLI::Range(1, 100'000));
+  add_number_option(app, "--ball-n", o.ball_n,
+                    "N of the ball table (and largest N of its error study)", std::uint64_t{100},
+                    std::uint64_t{1'000'000'000});
+  add_number_option(app, "--points", o.points, "Points drawn in the picture", 1, 100'000);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

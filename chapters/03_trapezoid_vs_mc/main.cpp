@@ -194,11 +194,11 @@ int run(const CLI::App& app, const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  app.add_option("--trials", o.trials, "Monte Carlo runs per N (the rmse is over these)")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--max-evaluations", o.max_evaluations,
-                 "Function evaluations at the largest point of every study")
-      ->check(CLI::Range(std::uint64_t{1}, k_max_budget));
+  add_number_option(app, "--trials", o.trials, "Monte Carlo runs per N (the rmse is over these)", 1,
+                    100000);
+  add_number_option(app, "--max-evaluations", o.max_evaluations,
+                    "Function evaluations at the largest point of every study", std::uint64_t{1},
+                    k_max_budget);
   add_list_option(app, "--dims", o.dims,
                   "Dimensions k of the k-dimensional integrands, e.g. 1,2,4,8 (the ball at "
                   "k >= 2, and always at k = 2)", 1, k_max_dims);

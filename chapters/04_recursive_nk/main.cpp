@@ -181,18 +181,16 @@ int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
   add_render_options(app, o.scene, o.image);
-  app.add_option("--spp", o.spp, "Camera samples per pixel in the sweep")
-      ->check(CLI::Range(1, 1 << 16));
+  add_number_option(app, "--spp", o.spp, "Camera samples per pixel in the sweep", 1, 1 << 16);
   add_list_option(app, "--branching", o.branching,
                   "Branching factors N, comma separated (each >= 1)", 1, 1 << 16);
-  app.add_option("--max-depth", o.max_depth, "Largest depth k of the sweep (0 = emission only)")
-      ->check(CLI::Range(0, 64));
-  app.add_option("--max-rays", o.max_rays,
-                 "Refuse runs predicted to trace more rays than this (e.g. 2e9)")
-      ->check(CLI::Range(1.0, 1e15));
-  app.add_option("--equal-cost-depth", o.equal_cost_depth, "Depth k of the equal-cost comparison")
-      ->check(CLI::Range(0, 64));
-  app.add_option("--budget", o.budget, "Rays per pixel of each equal-cost render")
-      ->check(CLI::Range(1, 1 << 20));
+  add_number_option(app, "--max-depth", o.max_depth,
+                    "Largest depth k of the sweep (0 = emission only)", 0, 64);
+  add_number_option(app, "--max-rays", o.max_rays,
+                    "Refuse runs predicted to trace more rays than this (e.g. 2e9)", 1.0, 1e15);
+  add_number_option(app, "--equal-cost-depth", o.equal_cost_depth,
+                    "Depth k of the equal-cost comparison", 0, 64);
+  add_number_option(app, "--budget", o.budget, "Rays per pixel of each equal-cost render", 1,
+                    1 << 20);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

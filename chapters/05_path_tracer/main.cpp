@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
   add_render_options(app, o.scene, o.image);
   add_list_option(app, "--spp", o.spp, "Samples per pixel of each image (a list: 1,4,16)", 1,
                   1 << 16);
-  app.add_option("--depth", o.depth, "Bounces after the first hit (0: emitted light only)")
-      ->check(CLI::Range(0, 1000));
+  add_number_option(app, "--depth", o.depth, "Bounces after the first hit (0: emitted light only)",
+                    0, 1000);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

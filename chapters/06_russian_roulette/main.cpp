@@ -173,11 +173,11 @@ int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
   add_render_options(app, o.scene, o.image);
-  app.add_option("--spp", o.spp, "Samples per pixel of both images")->check(CLI::Range(1, 1 << 16));
-  app.add_option("--depth", o.depth, "Bounces of the depth cut (depth_cut.png; bias.csv's largest k)")
-      ->check(CLI::Range(0, 1000));
-  app.add_option("--min-depth", o.roulette.min_depth, "Bounces before roulette starts")
-      ->check(CLI::Range(0, 1000));
+  add_number_option(app, "--spp", o.spp, "Samples per pixel of both images", 1, 1 << 16);
+  add_number_option(app, "--depth", o.depth,
+                    "Bounces of the depth cut (depth_cut.png; bias.csv's largest k)", 0, 1000);
+  add_number_option(app, "--min-depth", o.roulette.min_depth, "Bounces before roulette starts", 0,
+                    1000);
   app.add_option_function<std::string>(
          "--policy",
          [&](const std::string& name) {
@@ -187,13 +187,13 @@ int main(int argc, char** argv) {
          "weight's largest part, at least --floor)")
       ->check(CLI::IsMember({"fixed", "throughput"}))
       ->default_str("throughput");
-  app.add_option("--fixed-q", o.roulette.q, "q of --policy fixed and of path_length.csv")
-      ->check(CLI::Range(k_lowest_q, k_highest_q));
-  app.add_option("--floor", o.roulette.floor, "Least q of the throughput policy")
-      ->check(CLI::Range(k_lowest_q, k_highest_q));
+  add_number_option(app, "--fixed-q", o.roulette.q, "q of --policy fixed and of path_length.csv",
+                    k_lowest_q, k_highest_q);
+  add_number_option(app, "--floor", o.roulette.floor, "Least q of the throughput policy",
+                    k_lowest_q, k_highest_q);
   add_list_option(app, "--q", o.q, "The fixed q of the efficiency sweep (a list)", k_lowest_q,
                   k_highest_q);
-  app.add_option("--paths", o.paths, "Furnace paths per row of every study")
-      ->check(CLI::Range(100, 100000000));
+  add_number_option(app, "--paths", o.paths, "Furnace paths per row of every study", 100,
+                    100000000);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

@@ -129,15 +129,15 @@ int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
   add_render_options(app, o.scene, o.image);
-  app.add_option("--spp", o.spp, "Samples per pixel of every image of the study")
-      ->check(CLI::Range(1, 1 << 16));
-  app.add_option("--depth", o.depth, "Bounces after the first hit (0: emitted light only)")
-      ->check(CLI::Range(0, 1000));
+  add_number_option(app, "--spp", o.spp, "Samples per pixel of every image of the study", 1,
+                    1 << 16);
+  add_number_option(app, "--depth", o.depth, "Bounces after the first hit (0: emitted light only)",
+                    0, 1000);
   add_list_option(app, "--powers", o.powers,
                   "The powers m of p ~ cos^m(theta) to compare (a list: 0,1,2,4,8; 0 uniform "
                   "and 1 cosine are always in)", 0, 64);
-  app.add_option("--reference-spp", o.reference_spp,
-                 "Samples per pixel of the cosine reference image (not used in the furnace)")
-      ->check(CLI::Range(1, 1 << 16));
+  add_number_option(app, "--reference-spp", o.reference_spp,
+                    "Samples per pixel of the cosine reference image (not used in the furnace)", 1,
+                    1 << 16);
   return app.run(argc, argv, [&] { return run(app, o); });
 }

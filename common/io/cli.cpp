@@ -1,14 +1,18 @@
 #include "io/cli.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "core/parallel.hpp"
+#include "io/numbers.hpp"
 #include "io/output.hpp"
 
 namespace mcrt {
@@ -18,28 +22,26 @@ void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& ch
   options.out = std::filesystem::path("out") / chapter.name;
   options.threads = hardware_threads();
   app.add_option("--out", options.out, "Output folder");
-  app.add_option("--seed", options.seed, "Random seed (a non-negative integer)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--threads", options.threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, k_max_threads));
+  add_number_option(app, "--seed", options.seed, "Random seed (a non-negative integer)", 0,
+                    UINT64_MAX);
+  add_number_option(app, "--threads", options.threads, "Worker threads (default: all cores)", 1,
+                    k_max_threads);
   app.add_flag("--quiet", options.quiet, "No progress bar and no table on stdout");
 }
 
 void add_scene_options(CLI::App& app, SceneOptions& options) {
   app.add_option("--scene", options.scene, "Scene to render")
       ->check(CLI::IsMember(scene_names()));
-  app.add_option("--albedo", options.params.furnace_albedo, "Furnace scene: albedo everywhere")
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--emission", options.params.furnace_emission,
-                 "Furnace scene: emitted radiance everywhere")
-      ->check(CLI::Range(0.0, 1e6));
+  add_number_option(app, "--albedo", options.params.furnace_albedo,
+                    "Furnace scene: albedo everywhere", 0.0, 1.0);
+  add_number_option(app, "--emission", options.params.furnace_emission,
+                    "Furnace scene: emitted radiance everywhere", 0.0, 1e6);
 }
 
 void add_image_options(CLI::App& app, ImageOptions& options) {
-  app.add_option("--width", options.width, "Image width in pixels")
-      ->check(CLI::Range(1, k_max_image_side));
-  app.add_option("--height", options.height, "Image height in pixels")
-      ->check(CLI::Range(1, k_max_image_side));
+  add_number_option(app, "--width", options.width, "Image width in pixels", 1, k_max_image_side);
+  add_number_option(app, "--height", options.height, "Image height in pixels", 1,
+                    k_max_image_side);
 }
 
 namespace {
@@ -64,9 +66,52 @@ std::vector<T> sorted_unique(std::vector<T> values) {
   return values;
 }
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+// A numeric option: the text as given is read by `parse`. --help shows what CLI11 shows for
+// an option of type T with a range check: "--width INT:INT in [1 - 16384]=640".
+template <class T, class Parse>
+CLI::Option* add_parsed_option(CLI::App& app, const std::string& flag, T& value,
+                               const std::string& description, const std::string& range,
+                               Parse parse) {
+  const std::string type = CLI::detail::type_name<T>();
+  return app
+      .add_option_function<std::string>(
+          flag, [&value, parse](const std::string& text) { value = parse(text); }, description)
+      ->type_name(type)
+      ->check(CLI::Validator(type + " in [" + range + "]"))  // shown in --help, checks nothing
+      ->default_str(CLI::detail::to_string(value));
+}
 
 }  // namespace
+
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, int& value,
+                               const std::string& description, int lowest, int highest) {
+  if (lowest < 0 || highest < lowest)
+    throw std::invalid_argument("add_number_option " + flag + ": needs 0 <= lowest <= highest");
+  const auto low = static_cast<std::uint64_t>(lowest), high = static_cast<std::uint64_t>(highest);
+  return add_parsed_option(app, flag, value, description, fmt::format("{} - {}", low, high),
+                           [flag, low, high](const std::string& text) {
+                             return static_cast<int>(parse_whole_number(text, flag, low, high));
+                           });
+}
+
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::uint64_t& value,
+                               const std::string& description, std::uint64_t lowest,
+                               std::uint64_t highest) {
+  return add_parsed_option(app, flag, value, description,
+                           fmt::format("{} - {}", lowest, highest),
+                           [flag, lowest, highest](const std::string& text) {
+                             return parse_whole_number(text, flag, lowest, highest);
+                           });
+}
+
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& value,
+                               const std::string& description, double lowest, double highest) {
+  return add_parsed_option(app, flag, value, description,
+                           plain_number(lowest) + " - " + plain_number(highest),
+                           [flag, lowest, highest](const std::string& text) {
+                             return parse_real_number(text, flag, lowest, highest);
+                           });
+}
 
 std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
                                 int highest) {
@@ -75,12 +120,14 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& flag
   std::vector<int> values;
   for (const std::string& item : list_items(text, accepted)) {
     // Decimal digits only: no sign, no spaces, no octal or hex prefixes.
-    if (item.size() > 9 || !std::all_of(item.begin(), item.end(), is_digit))
-      throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
-    const int value = std::stoi(item);
-    if (value < lowest || value > highest)
-      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", value));
-    values.push_back(value);
+    const std::optional<std::uint64_t> value = read_whole_number(item);
+    if (!value)
+      throw CLI::ValidationError(
+          accepted + fmt::format(" ('{}' is not one)", quoted_for_message(item)));
+    const bool below = lowest > 0 && *value < static_cast<std::uint64_t>(lowest);
+    if (below || highest < 0 || *value > static_cast<std::uint64_t>(highest))
+      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", *value));
+    values.push_back(static_cast<int>(*value));
   }
   return sorted_unique(std::move(values));
 }
@@ -92,21 +139,14 @@ std::vector<double> parse_real_list(const std::string& text, const std::string& 
   std::vector<double> values;
   for (const std::string& item : list_items(text, accepted)) {
     // Decimal notation only (digits, one point, an exponent): no hex floats, nan or inf.
-    const bool decimal = std::all_of(item.begin(), item.end(), [](char c) {
-      return is_digit(c) || c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+';
-    });
-    double value = 0.0;
-    std::size_t used = 0;
-    try {
-      if (decimal) value = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (!decimal || used != item.size() || !std::isfinite(value))
-      throw CLI::ValidationError(accepted + fmt::format(" ('{}' is not one)", item));
-    if (value < lowest || value > highest)
-      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", item));
-    values.push_back(value);
+    const std::optional<double> value = read_real_number(item);
+    if (!value)
+      throw CLI::ValidationError(
+          accepted + fmt::format(" ('{}' is not one)", quoted_for_message(item)));
+    if (*value < lowest || *value > highest)
+      throw CLI::ValidationError(
+          accepted + fmt::format(" ({} is out of range)", quoted_for_message(item)));
+    values.push_back(*value);
   }
   return sorted_unique(std::move(values));
 }
@@ -158,8 +198,27 @@ nlohmann::ordered_json flags_json(const CLI::App& app) {
   return flags;
 }
 
-int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
-  const std::string program = app.get_name().empty() ? "chapter" : app.get_name();
+namespace {
+
+// Flushes stdout. If anything written to it was lost (a full disk, /dev/full, a closed pipe),
+// says so in one line and turns a successful exit code into 1.
+int checked_stdout(const std::string& program, int exit_code) {
+  // std::cout writes through stdout's buffer (synced with stdio), so this one flush sends
+  // both, and errno then holds the reason of a failure.
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int reason = errno;
+  std::cout.flush();
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return exit_code;
+  if (exit_code != 0) return exit_code;  // already failed, and already said why
+  std::cerr << program << ": error: cannot write to stdout: "
+            << (flushed ? "a write failed" : std::strerror(reason)) << '\n';
+  return 1;
+}
+
+// Parses argv, then runs body; every failure becomes its exit code and one line.
+int parse_and_run(CLI::App& app, const std::string& program, int argc, char** argv,
+                  const std::function<int()>& body) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -184,6 +243,13 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
     std::cerr << program << ": error: " << e.what() << '\n';
     return 1;
   }
+}
+
+}  // namespace
+
+int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
+  const std::string program = app.get_name().empty() ? "chapter" : app.get_name();
+  return checked_stdout(program, parse_and_run(app, program, argc, argv, body));
 }
 
 ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)

@@ -53,6 +53,18 @@ void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& ch
 void add_scene_options(CLI::App& app, SceneOptions& options);
 void add_image_options(CLI::App& app, ImageOptions& options);
 
+/// A numeric flag read as written (io/numbers.hpp): a whole number in decimal digits from
+/// `lowest` (>= 0) to `highest`, or for a double a finite decimal number from `lowest` to
+/// `highest`. Anything else is a usage error, one line naming the flag and the range. --help
+/// shows the type (INT, UINT, FLOAT) and the default; flags_json records the value as given.
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, int& value,
+                               const std::string& description, int lowest, int highest);
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::uint64_t& value,
+                               const std::string& description, std::uint64_t lowest,
+                               std::uint64_t highest);
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& value,
+                               const std::string& description, double lowest, double highest);
+
 /// A list flag such as --dims 1,2,4: comma-separated whole numbers in [lowest, highest],
 /// written in decimal. The list is sorted and duplicates are dropped; an empty list or item,
 /// a number out of range or anything else is a usage error naming the flag.
@@ -78,6 +90,8 @@ void check_image_size(const ImageOptions& options);
 nlohmann::ordered_json flags_json(const CLI::App& app);
 
 /// Parses argv into `app`, then runs `body`; maps errors to exit codes and one-line messages.
+/// Output that cannot be written to stdout (a closed pipe, a full disk, /dev/full) is an
+/// input/output failure: exit code 1, even if `body` succeeded.
 int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 
 /// A chapter program's command line: CLI11's App named and described by the chapter, with

@@ -93,11 +93,23 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 10000 --height 10000", "--width"},
                       BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
-                      BadInput{"--albedo 1.5", "--albedo"}),
+                      BadInput{"--albedo 1.5", "--albedo"},
+                      // Numbers are read as written: nothing clamped, no hex, finite reals only.
+                      BadInput{"--seed 18446744073709551616", "--seed"},
+                      BadInput{"--seed 0x10", "--seed"}, BadInput{"--width 0x10", "--width"},
+                      BadInput{"--spp 1e3", "--spp"}, BadInput{"--albedo nan", "--albedo"},
+                      BadInput{"--emission inf", "--emission"},
+                      BadInput{"--emission nan", "--emission"},
+                      // 8192 x 4096 x 65536 spp x 2 rays: refused at once, with the estimate.
+                      BadInput{"--width 8192 --height 4096 --spp 65536", "--spp"}),
     bad_input_name);
 
 TEST(Ch01Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {
   expect_unwritable_output_fails(k_program, "--width 8 --height 8");
+}
+
+TEST(Ch01Test, StdoutThatCannotBeWrittenExitsWithCodeOne) {
+  expect_full_stdout_fails(k_program, "--width 8 --height 8");
 }
 
 }  // namespace

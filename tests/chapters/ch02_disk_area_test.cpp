@@ -136,7 +136,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--frobnicate", "--frobnicate"},
                       // 1e12 x 1e5 trials: far too much work, refused with its estimate.
                       BadInput{"--max-n 1000000000000 --trials 100000", "--max-n"},
-                      BadInput{"--ball-n 1000000000 --trials 1000 --dims 50", "--ball-n"}),
+                      BadInput{"--ball-n 1000000000 --trials 1000 --dims 50", "--ball-n"},
+                      // Numbers are read as written: nothing clamped, no hex, no exponent.
+                      BadInput{"--seed 18446744073709551616", "--seed"},
+                      BadInput{"--max-n 0x1000", "--max-n"}, BadInput{"--max-n 1e6", "--max-n"},
+                      BadInput{"--trials ' 10'", "--trials"}, BadInput{"--dims 1,,2", "--dims"}),
     bad_input_name);
 
 TEST(Ch02Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

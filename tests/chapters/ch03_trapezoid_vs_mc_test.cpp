@@ -168,7 +168,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--dims 8 --max-evaluations 1000", "6561"},
         BadInput{"--dims 8 --max-evaluations 1000", "--max-evaluations"},
         // Far too much work in all: refused at once, with the estimate.
-        BadInput{"--trials 100000 --max-evaluations 1000000000", "--trials"}),
+        BadInput{"--trials 100000 --max-evaluations 1000000000", "--trials"},
+        // Numbers are read as written: nothing clamped, no hex, no nan.
+        BadInput{"--seed 18446744073709551616", "--seed"},
+        BadInput{"--max-evaluations 0x100", "--max-evaluations"},
+        BadInput{"--trials nan", "--trials"}, BadInput{"--dims 1,,2", "--dims"}),
     bad_input_name);
 
 TEST(Ch03Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

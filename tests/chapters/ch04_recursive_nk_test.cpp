@@ -193,7 +193,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--budget 3 --equal-cost-depth 3", "--budget"},
                       BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
                       BadInput{"--width 0", "--width"}, BadInput{"--scene moon", "--scene"},
-                      BadInput{"--threads 0", "--threads"}),
+                      BadInput{"--threads 0", "--threads"},
+                      // Numbers are read as written: a nan limit no longer lets 1e27 rays start.
+                      BadInput{"--max-rays nan --max-depth 30 --branching 8", "--max-rays"},
+                      BadInput{"--max-rays inf", "--max-rays"},
+                      BadInput{"--max-rays 1e16", "--max-rays"},
+                      BadInput{"--spp 0x10", "--spp"}, BadInput{"--albedo nan", "--albedo"},
+                      BadInput{"--seed 18446744073709551616", "--seed"}),
     bad_input_name);
 
 TEST(Ch04Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

@@ -103,7 +103,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
-                      BadInput{"--threads 0", "--threads"}),
+                      BadInput{"--threads 0", "--threads"},
+                      // Numbers are read as written: nothing clamped, no hex, finite reals only.
+                      BadInput{"--depth 1e3", "--depth"}, BadInput{"--width 0x10", "--width"},
+                      BadInput{"--emission nan", "--emission"},
+                      BadInput{"--seed 18446744073709551616", "--seed"}),
     bad_input_name);
 
 TEST(Ch05Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

@@ -153,7 +153,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--depth -1", "--depth"}, BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--paths 100000000 --q 0.999", "--paths"},
-                      BadInput{"--threads 0", "--threads"}),
+                      BadInput{"--threads 0", "--threads"},
+                      // Numbers are read as written: nothing clamped, finite reals only.
+                      BadInput{"--fixed-q nan", "--fixed-q"}, BadInput{"--floor inf", "--floor"},
+                      BadInput{"--paths 1e6", "--paths"}, BadInput{"--albedo nan", "--albedo"},
+                      BadInput{"--seed 18446744073709551616", "--seed"}),
     bad_input_name);
 
 TEST(Ch06Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

@@ -123,7 +123,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--reference-spp 0", "--reference-spp"},
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
-                      BadInput{"--threads 0", "--threads"}),
+                      BadInput{"--threads 0", "--threads"},
+                      // Numbers are read as written: nothing clamped, no hex, finite reals only.
+                      BadInput{"--reference-spp 0x10", "--reference-spp"},
+                      BadInput{"--depth nan", "--depth"}, BadInput{"--albedo inf", "--albedo"},
+                      BadInput{"--seed 18446744073709551616", "--seed"}),
     bad_input_name);
 
 TEST(Ch07Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

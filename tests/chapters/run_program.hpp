@@ -48,6 +48,23 @@ inline ProgramRun run_program(const std::string& program, const std::string& arg
   return run;
 }
 
+/// Runs `bin/<program> <arguments>` with stdout on /dev/full, where every write fails with
+/// "No space left on device"; stdout of the result is empty.
+inline ProgramRun run_program_to_full_stdout(const std::string& program,
+                                             const std::string& arguments) {
+  const std::filesystem::path tmp = MCRT_TEST_TMP;
+  std::filesystem::create_directories(tmp);
+  const std::string err = (tmp / (program + "-" + std::to_string(::getpid()) + "-full.err")).string();
+  const std::string command =
+      std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments + " >/dev/full 2>" + err;
+  const int status = std::system(command.c_str());
+  ProgramRun run;
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = read_text(err);
+  std::filesystem::remove(err);
+  return run;
+}
+
 /// A fresh, empty folder for one test's outputs.
 inline std::filesystem::path fresh_dir(const std::string& name) {
   const std::filesystem::path dir = std::filesystem::path(MCRT_TEST_TMP) / name;
@@ -115,6 +132,18 @@ inline void expect_unwritable_output_fails(const std::string& program, const std
   EXPECT_EQ(line_count(run.err), 1) << run.err;
   EXPECT_NE(run.err.find(out.string()), std::string::npos) << run.err;
   EXPECT_EQ(file_count(dir), 1);  // the blocker alone
+}
+
+/// With stdout on /dev/full, a run that would otherwise succeed (and print its table) exits
+/// with code 1 and one line on stderr naming stdout and the system's reason.
+inline void expect_full_stdout_fails(const std::string& program, const std::string& arguments) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const auto out = fresh_dir(program + "_full_stdout");
+  const ProgramRun run = run_program_to_full_stdout(program, arguments + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("stdout"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("No space left on device"), std::string::npos) << run.err;
 }
 
 }  // namespace mcrt::testing
