@@ -4,9 +4,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace mcrt {
@@ -16,9 +16,15 @@ namespace fs = std::filesystem;
 void prepare_output_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
+  if (ec || !fs::is_directory(dir)) {
+    std::error_code ignored;
+    const bool dangling = fs::is_symlink(fs::symlink_status(dir, ignored)) &&
+                          !fs::exists(fs::status(dir, ignored));
     throw IoError("cannot create output folder '" + dir.string() + "': " +
-                  (ec ? ec.message() : "a file of that name is in the way"));
+                  (dangling ? std::string("it is a symbolic link to nothing (a dangling link)")
+                   : ec     ? ec.message()
+                            : std::string("a file of that name is in the way")));
+  }
   if (::access(dir.c_str(), W_OK) != 0)
     throw IoError("cannot write to output folder '" + dir.string() + "': " +
                   std::strerror(errno));
@@ -31,26 +37,46 @@ fs::path temporary_path_for(const fs::path& path) {
 }
 
 void commit_file(const fs::path& from, const fs::path& to) {
-  std::error_code ec;
-  fs::rename(from, to, ec);
-  if (ec) {
-    fs::remove(from, ec);
-    throw IoError("cannot write '" + to.string() + "': " + ec.message());
-  }
+  std::error_code renamed;
+  fs::rename(from, to, renamed);
+  if (!renamed) return;
+  std::error_code ignored;  // the rename's reason is the one to report
+  fs::remove(from, ignored);
+  throw IoError("cannot write '" + to.string() + "': " + renamed.message());
 }
+
+namespace {
+
+// Writes all of `bytes` to a new file at `path` and closes it; the system's reason otherwise.
+// write() may write less than asked (a signal, a nearly full disk): it is called until done.
+std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) return {errno, std::generic_category()};
+  std::error_code failure;
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      failure = n < 0 ? std::error_code(errno, std::generic_category())
+                      : std::make_error_code(std::errc::no_space_on_device);
+      break;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && !failure) failure = {errno, std::generic_category()};
+  return failure;
+}
+
+}  // namespace
 
 void write_file_atomic(const fs::path& path, std::string_view bytes) {
   const fs::path temporary = temporary_path_for(path);
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw IoError("cannot write '" + path.string() + "': " + std::strerror(errno));
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    file.close();
-    if (!file) {
-      std::error_code ec;
-      fs::remove(temporary, ec);
-      throw IoError("cannot write '" + path.string() + "': write failed (disk full?)");
-    }
+  const std::error_code failure = write_new_file(temporary, bytes);
+  if (failure) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw IoError("cannot write '" + path.string() + "': " + failure.message());
   }
   commit_file(temporary, path);
 }

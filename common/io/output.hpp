@@ -19,13 +19,14 @@ class IoError : public std::runtime_error {
 void prepare_output_dir(const std::filesystem::path& dir);
 
 /// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see
-/// the old file or the new one, never half of one. Throws IoError on failure, leaving nothing.
+/// the old file or the new one, never half of one. Throws IoError on failure (a short write, a
+/// full disk, a failed close or rename), naming the file and the system's reason, leaving nothing.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 /// A temporary name beside `path` (same folder, so rename() is atomic), unique in this process.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 
-/// Renames `from` over `to`; on failure removes `from` and throws IoError.
+/// Renames `from` over `to`; on failure removes `from` and throws IoError with the rename's reason.
 void commit_file(const std::filesystem::path& from, const std::filesystem::path& to);
 
 }  // namespace mcrt
