@@ -86,7 +86,7 @@ void print_summary(const Options& o, const RenderResult& result) {
   fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json}}\n", o.common.out.string());
 }
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --width, --height", o.common.threads,
                   "lower one of them");
@@ -106,7 +106,6 @@ int run(const CLI::App& app, const Options& o) {
   write_pfm(o.common.out / "image.pfm", result.image);
   write_summary(app, o, result);
   if (!o.common.quiet) print_summary(o, result);
-  return 0;
 }
 
 }  // namespace
@@ -116,5 +115,5 @@ int main(int argc, char** argv) {
   ChapterApp app(k_chapter, o.common);
   add_render_options(app, o.scene, o.image);
   add_number_option(app, "--spp", o.spp, "Jittered samples per pixel", 1, 1 << 16);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -190,7 +190,7 @@ Results run_studies(const Options& o) {
           picture_estimate};
 }
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   const Results r = run_studies(o);
   write_csv(o.common.out / "disk_area.csv", r.disk);
   write_csv(o.common.out / "ball_volume.csv", r.balls);
@@ -201,7 +201,6 @@ int run(const CLI::App& app, const Options& o) {
   write_plot(o.common.out, ball_error_plot({2, 5, 10}));
   write_json(o.common.out / "summary.json", summary_of(k_chapter, app, o, r));
   if (!o.common.quiet) print_report(k_chapter, o, r);
-  return 0;
 }
 
 }  // namespace
@@ -219,5 +218,5 @@ int main(int argc, char** argv) {
                     "N of the ball table (and largest N of its error study)", std::uint64_t{100},
                     std::uint64_t{1'000'000'000});
   add_number_option(app, "--points", o.points, "Points drawn in the picture", 1, 100'000);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

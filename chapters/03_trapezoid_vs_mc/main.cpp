@@ -165,7 +165,7 @@ void print_report(const Options& o, const Plan& plan, const Results& r) {
              r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0, o.common.out.string());
 }
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   const Plan plan = make_plan(o.dims, o.max_evaluations, o.trials);
   prepare_output_dir(o.common.out);
   // Every task (a grid n, or N with its trials) on any core, largest first; each writes
@@ -186,7 +186,6 @@ int run(const CLI::App& app, const Options& o) {
   write_plots(o, plan, r);
   write_json(o.common.out / "summary.json", summary_of(app, o, plan, r));
   if (!o.common.quiet) print_report(o, plan, r);
-  return 0;
 }
 
 }  // namespace
@@ -202,5 +201,5 @@ int main(int argc, char** argv) {
   add_list_option(app, "--dims", o.dims,
                   "Dimensions k of the k-dimensional integrands, e.g. 1,2,4,8 (the ball at "
                   "k >= 2, and always at k = 2)", 1, k_max_dims);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

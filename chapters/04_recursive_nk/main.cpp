@@ -142,7 +142,7 @@ std::string conclusion(const Options& o, const Table& equal, std::size_t best) {
                                   : "Here branching paid off.");
 }
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   const Plan plan = make_plan(o, k_limit_depth, k_light_spp);
   check_plan(o, plan);
@@ -172,7 +172,6 @@ int run(const CLI::App& app, const Options& o) {
                 k_light_spp);
   if (!o.common.quiet)
     print_tables(k_chapter, o, render_recursive.total, rays, missing, equal, verdict, k_light_spp);
-  return 0;
 }
 
 }  // namespace
@@ -192,5 +191,5 @@ int main(int argc, char** argv) {
                     "Depth k of the equal-cost comparison", 0, 64);
   add_number_option(app, "--budget", o.budget, "Rays per pixel of each equal-cost render", 1,
                     1 << 20);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

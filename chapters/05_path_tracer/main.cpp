@@ -142,7 +142,7 @@ void print_table(const Options& o, const Table& errors, double slope, const Rend
              "summary.json}}\n", o.common.out.string());
 }
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --depth, --width, --height",
                   o.common.threads, "lower one of them");
@@ -175,7 +175,6 @@ int run(const CLI::App& app, const Options& o) {
   write_rmse_plot(o, errors, slope);
   write_summary(app, o, errors, slope, total, images.back());
   if (!o.common.quiet) print_table(o, errors, slope, total);
-  return 0;
 }
 
 }  // namespace
@@ -188,5 +187,5 @@ int main(int argc, char** argv) {
                   1 << 16);
   add_number_option(app, "--depth", o.depth, "Bounces after the first hit (0: emitted light only)",
                     0, 1000);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

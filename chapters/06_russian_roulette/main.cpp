@@ -132,7 +132,7 @@ struct Results {
   RenderTotals total;
 };
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   check_request(o);
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
@@ -164,7 +164,6 @@ int run(const CLI::App& app, const Options& o) {
   write_plots(o.common.out, o, r.efficiency);
   write_summary(k_chapter, app, o, r);
   if (!o.common.quiet) print_tables(k_chapter, o, r);
-  return 0;
 }
 
 }  // namespace
@@ -195,5 +194,5 @@ int main(int argc, char** argv) {
                   k_highest_q);
   add_number_option(app, "--paths", o.paths, "Furnace paths per row of every study", 100,
                     100000000);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -96,7 +96,7 @@ struct RenderWithPdf {
   }
 };
 
-int run(const CLI::App& app, const Options& o) {
+void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   check_ray_limit(predicted_work(o), k_max_rays,
                   "--spp, --reference-spp, --depth, --width, --height", o.common.threads,
@@ -120,7 +120,6 @@ int run(const CLI::App& app, const Options& o) {
   write_variance_plot(o.common.out, o.scene.scene, o.spp);
   write_summary(k_chapter, app, o, study.variances, equal.table, total);
   if (!o.common.quiet) print_report(k_chapter, o, study.variances, equal.table, total);
-  return 0;
 }
 
 }  // namespace
@@ -139,5 +138,5 @@ int main(int argc, char** argv) {
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of the cosine reference image (not used in the furnace)", 1,
                     1 << 16);
-  return app.run(argc, argv, [&] { return run(app, o); });
+  return app.run(argc, argv, [&] { run(app, o); });
 }

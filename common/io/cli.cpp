@@ -257,8 +257,11 @@ ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)
   add_common_options(*this, common, chapter);
 }
 
-int ChapterApp::run(int argc, char** argv, const std::function<int()>& body) {
-  return run_chapter(*this, argc, argv, body);
+int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
+  return run_chapter(*this, argc, argv, [&body] {
+    body();
+    return 0;
+  });
 }
 
 void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image) {

@@ -100,12 +100,12 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
 ///   Options o;
 ///   ChapterApp app(k_chapter, o.common);
 ///   add_render_options(app, o.scene, o.image);
-///   return app.run(argc, argv, [&] { return run(app, o); });
+///   return app.run(argc, argv, [&] { run(app, o); });
 class ChapterApp : public CLI::App {
  public:
   ChapterApp(const Chapter& chapter, CommonOptions& common);
-  /// run_chapter on this app.
-  int run(int argc, char** argv, const std::function<int()>& body);
+  /// run_chapter on this app, with exit code 0 when `body` returns.
+  int run(int argc, char** argv, const std::function<void()>& body);
 };
 
 /// --scene, --albedo, --emission, --width and --height: what every renderer takes.
