@@ -9,6 +9,7 @@
 #include "geometry/sphere_set.hpp"
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
+#include "support/plain_nearest.hpp"
 
 using namespace mcrt;
 
@@ -56,17 +57,7 @@ TEST(ClosestHitTest, SameHitAsThePlainLoopBitForBit) {
   }
 }
 
-// The plain loop over intersect_distance, as SphereSet::Nearest: the first strictly nearer hit.
-SphereSet::Nearest plain_nearest(const std::vector<Sphere>& spheres, const Ray& ray,
-                                 Interval range) {
-  SphereSet::Nearest best{spheres.size(), range.max};
-  for (std::size_t i = 0; i < spheres.size(); ++i)
-    if (const auto t = intersect_distance(spheres[i], ray, range)) {
-      range.max = *t;
-      best = {i, *t};
-    }
-  return best;
-}
+using mcrt::testing::plain_nearest;  // support/plain_nearest.hpp
 
 // Both SphereSet loops against the plain one for 1 to 9 spheres (whole and partial blocks of
 // four), with duplicated spheres so that exact ties occur: the same index and t, bit for bit.

@@ -20,6 +20,7 @@
 #include "integration/disk_area.hpp"
 #include "integration/disk_counter.hpp"
 #include "sampling/sampling.hpp"
+#include "support/plain_nearest.hpp"
 
 using namespace mcrt;
 
@@ -105,16 +106,7 @@ TEST(DiskCounterDifferentialTest, ParallelCountIsTheSumOfPlainChunkCounts) {
 // ---------------------------------------------------------------------------------------------
 // The sphere set.
 
-// The plain loop over intersect_distance: the first strictly nearer hit wins.
-SphereSet::Nearest plain_nearest(const std::vector<Sphere>& spheres, const Ray& ray, Interval range) {
-  SphereSet::Nearest best{spheres.size(), range.max};
-  for (std::size_t i = 0; i < spheres.size(); ++i)
-    if (const auto t = intersect_distance(spheres[i], ray, range)) {
-      range.max = *t;
-      best = {i, *t};
-    }
-  return best;
-}
+using mcrt::testing::plain_nearest;  // support/plain_nearest.hpp
 
 Vec3 random_point(Rng& rng, double scale) {
   return scale * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5);

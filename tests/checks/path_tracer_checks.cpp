@@ -20,6 +20,7 @@
 #include "render/scene.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
+#include "support/color_moments.hpp"
 #include "support/furnace_paths.hpp"
 
 namespace {
@@ -204,24 +205,6 @@ Color reference_radiance(const std::vector<ReferenceSphere>& spheres, Vec3 o, Ve
 // independent, so the Sidak correction over the 6 tiles is exact: the check returns the
 // smallest tile p-value rescaled to the family, 1 - (1 - p_min)^6, and its alpha is the
 // family-wise false-failure rate.
-struct ColorMoments {
-  double n = 0.0;
-  Vec3 sum{0.0};
-  glm::dmat3 sum_outer{0.0};
-  void add(const Color& c) {
-    n += 1.0;
-    sum += c;
-    sum_outer += glm::outerProduct(c, c);
-  }
-  Vec3 mean() const { return sum / n; }
-  // Covariance of the mean: the sample covariance over n.
-  glm::dmat3 covariance_of_mean() const {
-    const glm::dmat3 covariance =
-        (sum_outer - glm::outerProduct(sum, sum) / n) / (n - 1.0);
-    return covariance / n;
-  }
-};
-
 MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
   const Scene scene = make_cornell_spheres();
   std::vector<ReferenceSphere> spheres;
@@ -235,7 +218,7 @@ MCRT_STATISTICAL_CHECK(path_tracer_agrees_with_independent_renderer_cornell_sphe
   double p_min = 1.0;
   for (int tile = 0; tile < k_tiles; ++tile) {
     const double x0 = (tile % k_tiles_x) * k_tile_size, y0 = (tile / k_tiles_x) * k_tile_size;
-    ColorMoments ours, reference;
+    mcrt::testing::ColorMoments ours, reference;
     RayCount count;
     for (int i = 0; i < k_samples; ++i) {
       // Streams (2 tile, i) for the path tracer, (2 tile + 1, i) for the reference.

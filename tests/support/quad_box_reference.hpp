@@ -30,6 +30,7 @@
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "stats/hypothesis.hpp"
+#include "support/color_moments.hpp"
 
 namespace mcrt::testing {
 
@@ -217,22 +218,6 @@ inline double corner_rectangle_form_factor(double a, double b, double c) {
 // ---------------------------------------------------------------------------------------------
 // The procedures.
 
-/// Mean and covariance of the mean of colour samples.
-struct ColorSamples {
-  double n = 0.0;
-  Vec3 sum{0.0};
-  glm::dmat3 sum_outer{0.0};
-  void add(const Color& c) {
-    n += 1.0;
-    sum += c;
-    sum_outer += glm::outerProduct(c, c);
-  }
-  Vec3 mean() const { return sum / n; }
-  glm::dmat3 covariance_of_mean() const {
-    return (sum_outer - glm::outerProduct(sum, sum) / n) / ((n - 1.0) * n);
-  }
-};
-
 struct QuadBoxComparison {
   int width = 16, height = 12;  ///< image size
   int block = 4;                ///< blocks of block x block pixels
@@ -260,7 +245,7 @@ double quad_box_comparison_p_value(const Scene& scene, const QuadBoxComparison& 
   const ReferenceQuadBox box = make_reference_quad_box();
   const Camera camera(scene.camera, c.width, c.height);
   const auto pixels = static_cast<std::size_t>(c.width * c.height);
-  std::vector<ColorSamples> ours(pixels), reference(pixels);
+  std::vector<ColorMoments> ours(pixels), reference(pixels);
   for (int s = 0; s < c.samples; ++s) {
     const RenderSettings settings{1, static_cast<std::uint64_t>(s), seed, 1, nullptr};
     const Image image = render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
