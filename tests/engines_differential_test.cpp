@@ -7,7 +7,7 @@
 //  - count_in_disk (AVX2 where the processor has it) and count_in_disk_portable against the
 //    lecture's loop, written here: DiskPoints one point at a time.
 //  - SphereSet::nearest_avx2 and nearest_portable against a plain loop over
-//    intersect_distance, for every count of spheres from 0 to 64.
+//    intersect_distance, for every count of spheres from 0 to 64; QuadSet the same way.
 
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
+#include "geometry/quad_set.hpp"
 #include "geometry/sphere_set.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/disk_counter.hpp"
@@ -160,6 +161,69 @@ TEST(SphereSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
   // a wrong loop pass); the counts at these fixed seeds are far above them.
   EXPECT_GT(hits, 3000);
   EXPECT_GT(ties, 300);
+}
+
+// A random quad: axis-aligned one time in three (rays along an axis then run parallel to it),
+// edges from 0.5 to 6 long, in a box of side 16; one quad in five repeats an earlier one.
+Quad random_quad(Rng& rng, const std::vector<Quad>& earlier) {
+  if (earlier.size() % 5 == 4)
+    return earlier[rng.uniform_below(static_cast<std::uint32_t>(earlier.size()))];
+  const Vec3 corner = random_point(rng, 16.0);
+  if (rng.uniform_below(3) == 0) {
+    const auto axis = rng.uniform_below(3);
+    Vec3 u(0.0), v(0.0);
+    u[(axis + 1) % 3] = 0.5 + 5.5 * rng.uniform();
+    v[(axis + 2) % 3] = 0.5 + 5.5 * rng.uniform();
+    return {corner, u, v};
+  }
+  return {corner, (0.5 + 5.5 * rng.uniform()) * sample_uniform_sphere(rng.uniform2()),
+          (0.5 + 5.5 * rng.uniform()) * sample_uniform_sphere(rng.uniform2())};
+}
+
+TEST(QuadSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
+  const bool avx2 = QuadSet::has_avx2();
+  int hits = 0, ties = 0;
+  for (std::uint64_t seed : {7u, 8u})
+    for (std::size_t count = 0; count <= 64; ++count) {
+      Rng rng(seed, count);
+      std::vector<Quad> quads;
+      QuadSet set;
+      for (std::size_t i = 0; i < count; ++i) {
+        quads.push_back(random_quad(rng, quads));
+        set.add(quads.back());
+      }
+      ASSERT_EQ(set.size(), count);
+      for (int r = 0; r < 150; ++r) {
+        // One ray in four runs along an axis: parallel to a third of the quads.
+        Vec3 direction = sample_uniform_sphere(rng.uniform2());
+        if (r % 4 == 3) direction = Vec3(0.0), direction[r % 3] = rng.uniform() < 0.5 ? -1.0 : 1.0;
+        const Ray ray{random_point(rng, 20.0), direction};
+        const Interval range = r % 3 == 0   ? Interval{}
+                               : r % 3 == 1 ? Interval{4.0 * rng.uniform(), 4.0 + 20.0 * rng.uniform()}
+                                            : Interval{1e-9, 6.0 * rng.uniform()};
+        const QuadSet::Nearest plain = plain_nearest(quads, ray, range);
+        const QuadSet::Nearest portable = set.nearest_portable(ray, range);
+        const QuadSet::Nearest chosen = set.nearest(ray, range);
+        EXPECT_EQ(portable.index, plain.index) << count << " quads, ray " << r;
+        EXPECT_EQ(portable.t, plain.t) << count << " quads, ray " << r;
+        EXPECT_EQ(chosen.index, plain.index) << count << " quads, ray " << r;
+        EXPECT_EQ(chosen.t, plain.t) << count << " quads, ray " << r;
+        if (avx2) {
+          const QuadSet::Nearest fast = set.nearest_avx2(ray, range);
+          EXPECT_EQ(fast.index, plain.index) << count << " quads, ray " << r;
+          EXPECT_EQ(fast.t, plain.t) << count << " quads, ray " << r;
+        }
+        if (plain.index == count) continue;
+        ++hits;
+        for (std::size_t j = 0; j < count; ++j)
+          ties += j != plain.index && quads[j].corner() == quads[plain.index].corner() &&
+                  quads[j].edge_u() == quads[plain.index].edge_u() &&
+                  quads[j].edge_v() == quads[plain.index].edge_v();
+      }
+    }
+  // As for the spheres: floors that keep the comparison from being vacuous.
+  EXPECT_GT(hits, 1000);
+  EXPECT_GT(ties, 100);
 }
 
 }  // namespace

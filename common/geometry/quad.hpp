@@ -46,6 +46,10 @@ class Quad {
   double coordinate_a(const Vec3& p) const { return glm::dot(p, axis_a_); }
   /// Edge coordinate b of a point p given relative to the corner.
   double coordinate_b(const Vec3& p) const { return glm::dot(p, axis_b_); }
+  const Vec3& axis_a() const { return axis_a_; }
+  const Vec3& axis_b() const { return axis_b_; }
+  /// A ray with |n.d| below this is taken as parallel to the plane: it misses.
+  double parallel_threshold() const { return 1e-12 * area_; }
 
  private:
   Vec3 corner_, edge_u_, edge_v_;
@@ -61,7 +65,7 @@ class Quad {
 inline std::optional<double> intersect_distance(const Quad& q, const Ray& ray, Interval range) {
   const Vec3& n = q.plane_normal();
   const double denom = glm::dot(n, ray.direction);
-  if (std::abs(denom) < 1e-12 * q.area()) return std::nullopt;
+  if (std::abs(denom) < q.parallel_threshold()) return std::nullopt;
   const double t = glm::dot(n, q.corner() - ray.origin) / denom;
   if (!range.contains(t)) return std::nullopt;
   const Vec3 p = ray.at(t) - q.corner();

@@ -1,0 +1,54 @@
+#pragma once
+/// The quads of a scene as a structure of arrays, for the closest-hit loop: what SphereSet
+/// does for spheres.
+
+#include <cstddef>
+#include <vector>
+
+#include "geometry/quad.hpp"
+
+namespace mcrt {
+
+/// Plane normals, corners and edge axes in separate arrays, padded to whole blocks of k_block
+/// quads that never hit (a parallel-ray threshold of +infinity), so the search runs k_block
+/// quads at a time with no remainder loop. Each quad's t, a and b are computed with the same
+/// operations, in the same order, as intersect_distance (quad.hpp), so the answer is the
+/// same bit for bit.
+class QuadSet {
+ public:
+  static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
+
+  /// The quad hit nearest in `range`; index == size() if none. Ties go to the lowest index,
+  /// as in a plain loop that keeps the first strictly nearer hit.
+  struct Nearest {
+    std::size_t index;
+    double t;
+  };
+
+  void add(const Quad& q);
+  std::size_t size() const { return size_; }
+
+  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere.
+  Nearest nearest(const Ray& ray, Interval range) const {
+    return k_has_avx2 ? nearest_avx2(ray, range) : nearest_portable(ray, range);
+  }
+  /// Plain C++, one quad at a time.
+  Nearest nearest_portable(const Ray& ray, Interval range) const;
+  /// Four quads per instruction; only call it if has_avx2().
+  Nearest nearest_avx2(const Ray& ray, Interval range) const;
+
+  static bool has_avx2() { return k_has_avx2; }
+
+ private:
+  static const bool k_has_avx2;
+  std::size_t size_ = 0;
+  // n = cross(u, v) (not normalised), the corner c, the axes giving the edge coordinates
+  // a = p.axis_a and b = p.axis_b, and the parallel-ray threshold 1e-12 |n|.
+  std::vector<double> normal_x_, normal_y_, normal_z_;
+  std::vector<double> corner_x_, corner_y_, corner_z_;
+  std::vector<double> axis_a_x_, axis_a_y_, axis_a_z_;
+  std::vector<double> axis_b_x_, axis_b_y_, axis_b_z_;
+  std::vector<double> parallel_threshold_;
+};
+
+}  // namespace mcrt
