@@ -37,6 +37,7 @@ std::uint64_t count_in_ball(int k, std::uint64_t n, Rng& rng) {
   if (k < 0 || k > k_max_ball_dims)
     throw std::invalid_argument("count_in_ball: k = " + std::to_string(k) + " is outside [0, " +
                                 std::to_string(k_max_ball_dims) + "]");
+  // ASSIGNMENT a1.2 BEGIN stub: (void)n; (void)rng; NOT_IMPLEMENTED(count_in_ball);
   std::array<double, k_max_ball_dims> point;
   const std::span<const double> x(point.data(), static_cast<std::size_t>(k));
   std::uint64_t inside = 0;
@@ -45,10 +46,13 @@ std::uint64_t count_in_ball(int k, std::uint64_t n, Rng& rng) {
     inside += inside_unit_ball(x);
   }
   return inside;
+  // ASSIGNMENT a1.2 END
 }
 
 double estimate_ball_volume(int k, std::uint64_t n, Rng& rng) {
+  // ASSIGNMENT a1.2 BEGIN stub: (void)k; (void)n; (void)rng; NOT_IMPLEMENTED(estimate_ball_volume);
   return std::ldexp(static_cast<double>(count_in_ball(k, n, rng)), k) / static_cast<double>(n);
+  // ASSIGNMENT a1.2 END
 }
 
 }  // namespace mcrt

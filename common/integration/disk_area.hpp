@@ -94,6 +94,7 @@ class DiskPoints {
 /// count_in_disk (integration/disk_counter.hpp) counts the same M from the same `rng`, 16
 /// lanes at a time; the chapter runs that engine.
 inline double estimate_disk_area(std::uint64_t n, Rng& rng) {
+  // ASSIGNMENT a1.1 BEGIN stub: (void)n; (void)rng; NOT_IMPLEMENTED(estimate_disk_area);
   DiskPoints points(rng);
   std::uint64_t m = 0;
   for (std::uint64_t i = 0; i < n; ++i) {
@@ -101,6 +102,7 @@ inline double estimate_disk_area(std::uint64_t n, Rng& rng) {
     if (inside_unit_disk(p)) ++m;       // x^2 + y^2 <= 1
   }
   return 4.0 * static_cast<double>(m) / static_cast<double>(n);
+  // ASSIGNMENT a1.1 END
 }
 
 /// M: how many of n uniform points of [-1,1)^k land in the unit k-ball, 0 <= k <=

@@ -43,6 +43,7 @@ inline MonteCarloEstimate finish_estimate(double volume, double sum, double sum_
 /// F_N over `segment` with n >= 1 samples drawn from `rng`.
 template <class F>
 MonteCarloEstimate monte_carlo(F&& f, const Segment& segment, std::uint64_t n, Rng& rng) {
+  // ASSIGNMENT a1.3 BEGIN stub: (void)f; (void)segment; (void)n; (void)rng; NOT_IMPLEMENTED(monte_carlo on a Segment);
   const double length = segment.length();
   double sum = 0.0, sum_of_squares = 0.0;
   for (std::uint64_t i = 0; i < n; ++i) {
@@ -51,6 +52,7 @@ MonteCarloEstimate monte_carlo(F&& f, const Segment& segment, std::uint64_t n, R
     sum_of_squares += f_x * f_x;
   }
   return detail::finish_estimate(length, sum, sum_of_squares, n);
+  // ASSIGNMENT a1.3 END
 }
 
 /// F_N over `box` with n >= 1 samples drawn from `rng` (dims uniforms per sample, axis 0

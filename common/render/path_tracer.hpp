@@ -33,6 +33,7 @@ namespace mcrt {
 /// (max_depth + 1 closest-hit queries, each counted in `count`).
 inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, Rng& rng,
                                     RayCount& count) {
+  // ASSIGNMENT a4.1 BEGIN needs=a2.1 stub: (void)scene; (void)ray; (void)max_depth; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_path_radiance);
   Color radiance(0.0);
   Color beta(1.0);  // path weight: product of f_r cos(theta_i) / pdf(wi) so far
   for (int bounce = 0;; ++bounce) {
@@ -52,6 +53,7 @@ inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, 
     ray = spawn_ray(*hit, wi);
   }
   return radiance;
+  // ASSIGNMENT a4.1 END
 }
 
 /// E[L] in the furnace after at most k bounces: Le (1 + a + ... + a^k).

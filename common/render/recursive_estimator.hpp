@@ -44,6 +44,7 @@ struct RecursiveSettings {
 /// (E[w] E[L])^2). Branching divides the variance by N per level, at N times the rays.
 inline Color incident_radiance(const Scene& scene, const Ray& ray, int depth,
                                const RecursiveSettings& settings, Rng& rng, RayCount& count) {
+  // ASSIGNMENT a3.1 BEGIN needs=a2.1 stub: (void)scene; (void)ray; (void)depth; (void)settings; (void)rng; (void)count; NOT_IMPLEMENTED(incident_radiance);
   ++count.rays;
   const std::optional<Hit> p = scene.closest_hit(ray);  // p = intersectScene(x, w)
   if (!p) return Color(0.0);                             // the ray left the scene
@@ -59,6 +60,7 @@ inline Color incident_radiance(const Scene& scene, const Ray& ray, int depth,
     L += L_i * material.brdf() * cos_theta_i / (uniform_hemisphere_pdf() * N);
   }
   return L;
+  // ASSIGNMENT a3.1 END
 }
 
 /// The rays one camera sample traces when no path escapes (the furnace):

@@ -13,19 +13,27 @@ namespace mcrt {
 /// Uniform on the hemisphere z >= 0: cos(theta) = u0 (the area of a zone is linear in z),
 /// phi = 2 pi u1. pdf = 1/(2 pi) per steradian.
 inline Vec3 sample_uniform_hemisphere(Vec2 u) {
+  // ASSIGNMENT a2.1 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_hemisphere);
   const double cos_theta = u.x;
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   const double phi = k_two_pi * u.y;
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  // ASSIGNMENT a2.1 END
 }
+// ASSIGNMENT a2.1 BEGIN stub: inline double uniform_hemisphere_pdf() { NOT_IMPLEMENTED(uniform_hemisphere_pdf); }
 inline double uniform_hemisphere_pdf() { return k_inv_two_pi; }
+// ASSIGNMENT a2.1 END
 
 /// Cosine-weighted hemisphere (Malley's method: a uniform disk point lifted to the
 /// hemisphere). pdf = cos(theta)/pi per steradian.
 inline Vec3 sample_cosine_hemisphere(Vec2 u) {
+  // ASSIGNMENT a2.2 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_cosine_hemisphere);
   const Vec2 d = sample_uniform_disk(u);
   return {d.x, d.y, std::sqrt(std::max(0.0, 1.0 - d.x * d.x - d.y * d.y))};
+  // ASSIGNMENT a2.2 END
 }
+// ASSIGNMENT a2.2 BEGIN stub: inline double cosine_hemisphere_pdf(double) { NOT_IMPLEMENTED(cosine_hemisphere_pdf); }
 inline double cosine_hemisphere_pdf(double cos_theta) { return cos_theta * k_inv_pi; }
+// ASSIGNMENT a2.2 END
 
 }  // namespace mcrt

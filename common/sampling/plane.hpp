@@ -15,10 +15,14 @@ inline double uniform_square_pdf() { return 0.25; }
 /// Uniform on the unit disk: r = sqrt(u0) (the area inside radius r grows as r^2),
 /// phi = 2 pi u1. pdf = 1/pi per unit area.
 inline Vec2 sample_uniform_disk(Vec2 u) {
+  // ASSIGNMENT a2.4 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_disk);
   const double r = std::sqrt(u.x);
   const double phi = k_two_pi * u.y;
   return {r * std::cos(phi), r * std::sin(phi)};
+  // ASSIGNMENT a2.4 END
 }
+// ASSIGNMENT a2.4 BEGIN stub: inline double uniform_disk_pdf() { NOT_IMPLEMENTED(uniform_disk_pdf); }
 inline double uniform_disk_pdf() { return k_inv_pi; }
+// ASSIGNMENT a2.4 END
 
 }  // namespace mcrt

@@ -11,11 +11,15 @@ namespace mcrt {
 /// Uniform on the unit sphere: z = 1 - 2 u0 (Archimedes: the area of a zone is linear in z),
 /// phi = 2 pi u1. pdf = 1/(4 pi) per steradian.
 inline Vec3 sample_uniform_sphere(Vec2 u) {
+  // ASSIGNMENT a2.3 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_sphere);
   const double z = 1.0 - 2.0 * u.x;
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
   const double phi = k_two_pi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), z};
+  // ASSIGNMENT a2.3 END
 }
+// ASSIGNMENT a2.3 BEGIN stub: inline double uniform_sphere_pdf() { NOT_IMPLEMENTED(uniform_sphere_pdf); }
 inline double uniform_sphere_pdf() { return 0.25 * k_inv_pi; }
+// ASSIGNMENT a2.3 END
 
 }  // namespace mcrt

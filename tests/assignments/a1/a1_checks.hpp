@@ -1,0 +1,133 @@
+#pragma once
+// The grading procedures of assignment a1 (Monte Carlo integration), templated on the code
+// under test so that tests/assignments/diagnosis_test.cpp can run them on known-wrong variants.
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "assignments/grading.hpp"
+#include "core/rng.hpp"
+#include "integration/ball.hpp"
+#include "integration/disk_area.hpp"
+#include "integration/domain.hpp"
+#include "integration/integrands.hpp"
+#include "integration/monte_carlo.hpp"
+#include "stats/hypothesis.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// A task check's outcome: what a student reads when it fails.
+struct TaskResult {
+  bool passed = false;
+  std::string message;
+};
+
+inline constexpr std::uint64_t k_disk_points = 200000;  ///< sd of 4M/N: 0.0037
+
+/// a1.1: E[4M/N] = pi, z-tested with the closed-form sd 4 sqrt(p(1-p)/N) at three seeds.
+/// `estimate(n, rng)` is the disk estimator.
+template <class Estimate>
+TaskResult check_disk_estimator(Estimate&& estimate) {
+  double sum = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    Rng rng(seed, 11);
+    const double a = estimate(k_disk_points, rng);
+    sum += a;
+    return z_test_p_value(a, k_pi, disk_area_theory_std(k_disk_points));
+  });
+  const double mean = sum / k_seeds;
+  std::string d = diagnose_mean_ratio(mean, k_pi);
+  if (near(mean, 4.0 / std::sqrt(2.0), 0.01))
+    d = diagnosis("your estimate is 4/sqrt(2) = 2.83: is y drawn equal to x (the test 2 x^2 <= 1)?");
+  else if (near(mean, k_pi / 4.0, 0.01))
+    d = diagnosis("your estimate is about pi/4: you forgot the factor 4 (the area of the square [-1,1]^2)");
+  return {v.passed(), fmt::format("disk estimate, mean over 3 seeds {:.5f} (pi = {:.5f}); {}\n{}",
+                                  mean, k_pi, v.describe(), v.passed() ? "" : d)};
+}
+
+/// a1.2: E[2^k M/N] = V_k for k = `dims`, z-tested with the closed-form sd.
+/// `estimate(k, n, rng)` is the ball estimator.
+template <class Estimate>
+TaskResult check_ball_estimator(Estimate&& estimate, const std::vector<int>& dims) {
+  constexpr std::uint64_t n = 100000;
+  TaskResult result{true, ""};
+  for (int k : dims) {
+    double sum = 0.0;
+    const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+      Rng rng(seed, 12);
+      const double vol = estimate(k, n, rng);
+      sum += vol;
+      return z_test_p_value(vol, unit_ball_volume(k), ball_volume_theory_std(k, n));
+    });
+    const double mean = sum / k_seeds;
+    std::string d = diagnose_mean_ratio(mean, unit_ball_volume(k));
+    if (near(mean, unit_ball_volume(k) / 2.0, 0.02))
+      d = diagnosis("your volume is half of V_k: is M/N scaled by 2^(k-1) instead of 2^k?");
+    result.message += fmt::format("k = {}: mean {:.5f}, V_k = {:.5f}; {}\n{}", k, mean,
+                                  unit_ball_volume(k), v.describe(), v.passed() ? "" : d + "\n");
+    result.passed = result.passed && v.passed();
+  }
+  return result;
+}
+
+/// a1.3: F_N = (b - a)/N sum f(X_i) for f = x^2 on [1, 4] (I = 21, vol J - I^2 = 172.8):
+/// the mean z-tested at three seeds, and its standard error within 10% of the theory (its
+/// relative sd is about 1% at N = 10^4). `estimate(f, segment, n, rng)` returns
+/// MonteCarloEstimate.
+template <class Estimate>
+TaskResult check_basic_estimator(Estimate&& estimate) {
+  constexpr std::uint64_t n = 10000;
+  const Segment segment{1.0, 4.0};
+  const auto f = [](double x) { return x * x; };
+  const double integral = 21.0, theory_sd = std::sqrt(172.8 / static_cast<double>(n));
+  double sum = 0.0;
+  bool se_ok = true;
+  std::string se_note;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    Rng rng(seed, 13);
+    const MonteCarloEstimate e = estimate(f, segment, n, rng);
+    sum += e.estimate;
+    if (!near(e.standard_error, theory_sd, 0.1)) {
+      se_ok = false;
+      se_note = fmt::format("standard_error {:.4g}, expected about vol * s / sqrt(N) = {:.4g}",
+                            e.standard_error, theory_sd);
+    }
+    return z_test_p_value(e.estimate, integral, theory_sd);
+  });
+  const double mean = sum / k_seeds;
+  const bool passed = v.passed() && se_ok;
+  return {passed, fmt::format("F_N of x^2 on [1, 4]: mean {:.5f} (I = 21); {}\n{}{}", mean,
+                              v.describe(), se_note,
+                              v.passed() ? "" : "\n" + diagnose_mean_ratio(mean, integral))};
+}
+
+/// a1.4: the trapezoid rule on exp(-x^2) over [0, 1]: its error must fall as h^2 (ratio 4
+/// when n - 1 doubles; 2 would be O(h), the end points' half weights forgotten) and be close to
+/// the leading term h^2 (f'(b) - f'(a)) / 12 (Euler-Maclaurin). Deterministic: the
+/// tolerance 2% covers the next term, O(h^4). `rule(n)` is T_n.
+template <class Rule>
+TaskResult check_trapezoid(Rule&& rule) {
+  const Gaussian1D f;
+  const double integral = f.reference();
+  const double fprime_b = -2.0 * std::exp(-1.0), fprime_a = 0.0;
+  TaskResult result{true, ""};
+  for (std::uint64_t n : {9u, 17u, 33u}) {
+    const double h = 1.0 / static_cast<double>(n - 1);
+    const double error = rule(n) - integral;
+    const double leading = h * h * (fprime_b - fprime_a) / 12.0;
+    const double next_error = rule(2 * n - 1) - integral;
+    const bool ok = near(error, leading, 0.02);
+    result.passed = result.passed && ok;
+    result.message += fmt::format("n = {}: T_n - I = {:.3e}, expected about {:.3e}; ratio to n = {}: {:.2f}\n",
+                                  n, error, leading, 2 * n - 1, error / next_error);
+    if (!ok && near(error / next_error, 2.0, 0.1))
+      result.message += diagnosis("your error falls as h, not h^2: do the two end points weigh h/2?") + "\n";
+    else if (!ok && near(error / next_error, 4.0, 0.1))
+      result.message += diagnosis("the error falls as h^2 but its size is wrong: is h = (b - a)/(n - 1) (n points make n - 1 intervals)?") + "\n";
+  }
+  return result;
+}
+
+}  // namespace mcrt::testing::assignment

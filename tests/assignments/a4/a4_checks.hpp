@@ -1,0 +1,153 @@
+#pragma once
+// The grading procedures of assignment a4 (the path tracer), templated on the tracer under
+// test: `radiance(scene, ray, max_depth, rng, count)`, as estimate_path_radiance.
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "assignments/a1/a1_checks.hpp"
+#include "assignments/grading.hpp"
+#include "geometry/camera.hpp"
+#include "integration/statistics.hpp"
+#include "render/importance_path_tracer.hpp"
+#include "render/path_tracer.hpp"
+#include "render/scene.hpp"
+#include "sampling/sphere.hpp"
+#include "stats/hypothesis.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// A small scene lit by a white sky (a large emitting sphere, Le = 1) that every escaping
+/// direction of a uniform sampler finds, so renders of a few hundred paths per pixel have small
+/// errors: a red ball on a grey ground, seen from slightly above.
+inline Scene make_sky_scene() {
+  Scene scene;
+  scene.name = "sky";
+  const auto sky = scene.add_material({Color(0.0), Color(1.0)});
+  const auto ground = scene.add_material({Color(0.5), Color(0.0)});
+  const auto ball = scene.add_material({Color(0.7, 0.3, 0.2), Color(0.0)});
+  scene.add_sphere({Vec3(0.0), 100.0, sky});
+  scene.add_sphere({Vec3(0.0, -1001.0, 0.0), 1000.0, ground});
+  scene.add_sphere({Vec3(0.0), 1.0, ball});
+  scene.camera = {Vec3(0.0, 0.5, 4.0), Vec3(0.0, -0.15, -1.0), Vec3(0.0, 1.0, 0.0), 0.9, 0.0};
+  return scene;
+}
+
+/// Values of `radiance` for n paths from the furnace's centre in uniformly random directions.
+template <class Radiance>
+std::vector<double> furnace_values(Radiance&& radiance, double albedo, int depth, int n,
+                                   std::uint64_t seed, std::uint64_t block) {
+  const Scene furnace = make_furnace(albedo, 1.0);
+  std::vector<double> values;
+  RayCount count;
+  for (int i = 0; i < n; ++i) {
+    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
+    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
+    values.push_back(average(radiance(furnace, ray, depth, rng, count)));
+  }
+  return values;
+}
+
+/// What one bounce's weight w = f_r cos / p looks like: at depth 1 in the furnace (Le = 1),
+/// L = 1 + w. A correct tracer has E[w] = a and Var[w] = a^2 / 3.
+template <class Radiance>
+std::string diagnose_bounce_weight(Radiance&& radiance, double a) {
+  RunningStats w;
+  for (double L : furnace_values(radiance, a, 1, 4000, 99, 77)) w.add(L - 1.0);
+  const double mean = w.mean() / a;  // in units of a
+  if (near(mean, 2.0, 0.05) && w.variance() < 1e-12)
+    return diagnosis("the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+  if (near(mean, 2.0, 0.05))
+    return diagnosis("the per-bounce weight averages 2a instead of a: is your pdf off by a factor of 2 (1/(4 pi) vs 1/(2 pi))?");
+  if (near(mean, 4.0 / 3.0, 0.04))
+    return diagnosis("the per-bounce weight averages 4a/3: are directions cosine-distributed but divided by the uniform pdf 1/(2 pi)?");
+  if (near(mean, 0.5, 0.05))
+    return diagnosis("the per-bounce weight averages a/2: is a factor 2 missing (2 pi vs pi)?");
+  if (!near(mean, 1.0, 0.05))
+    return diagnosis(fmt::format("the per-bounce weight averages {:.2f}a instead of a = f_r cos / p", mean));
+  return "";
+}
+
+/// The furnace (a = 0.5, Le = 1, k = 3): the mean of 20000 paths z-tested against
+/// (1 - a^(k+1)) / (1 - a) with the closed-form variance, and their variance z-tested against
+/// it, Sidak-combined, at the three grading seeds. Also the depth off-by-one.
+template <class Radiance>
+TaskResult check_path_furnace(Radiance&& radiance) {
+  constexpr double a = 0.5;
+  constexpr int k = 3, n = 20000;
+  const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(a, 1.0, k);
+  double mean_sum = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    const std::vector<double> values = furnace_values(radiance, a, k, n, seed, 51);
+    RunningStats s;
+    for (double x : values) s.add(x);
+    mean_sum += s.mean();
+    const double p_mean = z_test_p_value(s.mean(), expected, std::sqrt(variance / n));
+    return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
+  });
+  const double mean = mean_sum / k_seeds;
+  std::string d;
+  if (!v.passed()) {
+    d = diagnose_bounce_weight(radiance, a);
+    if (d.empty() && near(mean, furnace_radiance(a, 1.0, k + 1), 0.005))
+      d = diagnosis("your mean is that of k + 1 bounces: does your loop stop one bounce late?");
+    if (d.empty() && near(mean, furnace_radiance(a, 1.0, k - 1), 0.005))
+      d = diagnosis("your mean is that of k - 1 bounces: does your loop stop one bounce early?");
+    if (d.empty()) d = diagnose_mean_ratio(mean, expected);
+  }
+  return {v.passed(), fmt::format("furnace a = 0.5, k = 3: mean {:.5f} (expected {:.5f}); {}\n{}", mean,
+                                  expected, v.describe(), d)};
+}
+
+/// Region by region against a reference: the sky scene at 16 x 16 pixels, k = 4, cut into
+/// 4 x 4 regions of 4 x 4 pixels. Each region's mean over 4096 paths (256 per pixel) is
+/// z-tested against the reference tracer's (cosine-weighted directions, 1024 per pixel, an
+/// independent estimator of the same expectation), the standard error of the difference
+/// taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
+template <class Radiance>
+TaskResult check_reference_regions(Radiance&& radiance) {
+  constexpr int size = 16, region = 4, regions = size / region, k = 4;
+  const Scene scene = make_sky_scene();
+  const Camera camera(scene.camera, size, size);
+  using Stats = std::array<RunningStats, regions * regions>;
+  const auto collect = [&](auto&& estimate, int spp, std::uint64_t seed) {
+    Stats stats;
+    RayCount count;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        for (int s = 0; s < spp; ++s) {
+          Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
+          const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+          stats[static_cast<std::size_t>((y / region) * regions + x / region)].add(average(estimate(ray, rng, count)));
+        }
+    return stats;
+  };
+  const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
+    return estimate_importance_path_radiance(scene, ray, k, HemispherePdf{HemispherePdf::cosine, 0}, rng, count);
+  };
+  const Stats reference = collect(reference_tracer, 1024, 424242);
+  int worst = 0;
+  double worst_z = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    const Stats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) { return radiance(scene, ray, k, rng, count); },
+                                  256, seed);
+    double p_min = 1.0;
+    for (int r = 0; r < regions * regions; ++r) {
+      const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
+      const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
+      const double p = z_test_p_value(s.mean(), t.mean(), se);
+      if (!(p >= p_min)) {
+        p_min = p;
+        if (std::abs(s.mean() - t.mean()) / se > worst_z) worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
+      }
+    }
+    return sidak_p_value(p_min, regions * regions);
+  });
+  return {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
+                                  v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the reference",
+                                                                worst % regions, worst / regions, worst_z))};
+}
+
+}  // namespace mcrt::testing::assignment

@@ -1,0 +1,126 @@
+// The graders' diagnoses name the right bug: each known-wrong variant of tests/known_bugs/ run
+// through an assignment's grading procedure fails it, with the diagnosis written for that bug.
+// (CTest label assignments, and the default suite: about 3 s.)
+
+#include <gtest/gtest.h>
+
+#include "assignments/a1/a1_checks.hpp"
+#include "assignments/a2/a2_checks.hpp"
+#include "assignments/a3/a3_checks.hpp"
+#include "assignments/a4/a4_checks.hpp"
+#include "known_bugs/assignments.hpp"
+#include "known_bugs/disk_area.hpp"
+#include "known_bugs/estimators.hpp"
+#include "known_bugs/path_tracers.hpp"
+#include "known_bugs/samplers.hpp"
+#include "stats/report.hpp"
+
+namespace mcrt::testing::assignment {
+namespace {
+
+void expect_diagnosis(const TaskResult& r, const std::string& words) {
+  EXPECT_FALSE(r.passed) << r.message;
+  EXPECT_NE(r.message.find("DIAGNOSIS: " + words), std::string::npos) << r.message;
+}
+
+class Diagnoses : public ::testing::Test {
+ protected:
+  void SetUp() override { set_failure_reports(false); }
+  void TearDown() override { set_failure_reports(true); }
+};
+
+TEST_F(Diagnoses, FalseFailureRateIsBelowOneInAMillion) {
+  EXPECT_LT(majority_false_failure_rate(), 1e-6);
+}
+
+TEST_F(Diagnoses, A1DiskWithoutTheFactorFour) {
+  expect_diagnosis(check_disk_estimator([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; }),
+                   "your estimate is about pi/4: you forgot the factor 4");
+}
+
+TEST_F(Diagnoses, A1DiskWithYEqualToX) {
+  expect_diagnosis(check_disk_estimator(disk_area_same_coordinate_twice), "your estimate is 4/sqrt(2)");
+}
+
+TEST_F(Diagnoses, A1BallHalfScale) {
+  expect_diagnosis(check_ball_estimator([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }, {3}),
+                   "your volume is half of V_k");
+}
+
+TEST_F(Diagnoses, A1MonteCarloWithoutTheLength) {
+  expect_diagnosis(check_basic_estimator([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                     MonteCarloEstimate e = monte_carlo(f, s, n, rng);
+                     e.estimate = monte_carlo_without_volume(f, s, n, rng);
+                     return e;
+                   }),
+                   "your mean is 0.33x the expected value: is the length (b - a)");
+}
+
+TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
+  expect_diagnosis(check_trapezoid([](std::uint64_t n) { return trapezoid_with_full_end_weights(Gaussian1D{}, n); }),
+                   "your error falls as h, not h^2");
+}
+
+double cosine_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
+double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
+double disk_density(const Vec2&) { return uniform_disk_pdf(); }
+
+TEST_F(Diagnoses, A2UniformHemisphereThatIsCosine) {
+  expect_diagnosis(check_sampler(sample_cosine_hemisphere, uniform_density, sampler_hemisphere_binning(),
+                                 SamplerKind::uniform_hemisphere, "diagnosis_cosine_as_uniform"),
+                   "observed/expected ~ 2 cos(theta): your samples look cosine-distributed");
+}
+
+TEST_F(Diagnoses, A2CosineHemisphereThatIsUniform) {
+  expect_diagnosis(check_sampler(sample_uniform_hemisphere, cosine_density, sampler_hemisphere_binning(),
+                                 SamplerKind::cosine_hemisphere, "diagnosis_uniform_as_cosine"),
+                   "observed/expected ~ 1 / (2 cos(theta))");
+}
+
+TEST_F(Diagnoses, A2DiskWithRadiusU) {
+  expect_diagnosis(check_sampler(disk_with_radius_u, disk_density, sampler_disk_binning(), SamplerKind::unit_disk,
+                                 "diagnosis_disk_radius_u"),
+                   "points crowd the centre");
+}
+
+TEST_F(Diagnoses, A2PdfsOffByTwo) {
+  expect_diagnosis(check_pdf_integral(hemisphere_pdf_one_over_pi, sampler_hemisphere_binning(), "1/pi"),
+                   "a pdf integrates to 1: yours is 2.000x too large (is it off by a factor of 2");
+  expect_diagnosis(check_pdf_integral(cosine_pdf_times_two, sampler_hemisphere_binning(), "2 cos/pi"),
+                   "a pdf integrates to 1: yours is 2.000x too large");
+}
+
+TEST_F(Diagnoses, A3RecursionOneBounceLate) {
+  expect_diagnosis(check_ray_counts(incident_radiance_one_bounce_late), "ray count is N^(k+1)");
+  expect_diagnosis(check_recursive_furnace(incident_radiance_one_bounce_late), "your mean is that of depth k + 1");
+}
+
+TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
+  const TaskResult r = check_ray_counts(incident_radiance_one_bounce_early);
+  EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
+}
+
+TEST_F(Diagnoses, A3WithoutOneOverN) {
+  expect_diagnosis(check_recursive_furnace(incident_radiance_without_one_over_n), "each level weighs N a instead of a");
+}
+
+TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
+  expect_diagnosis(check_recursive_furnace(incident_radiance_one_shared_direction),
+                   "the mean is right but the variance is");
+}
+
+TEST_F(Diagnoses, A4MissingCosine) {
+  expect_diagnosis(check_path_furnace(path_radiance_without_cosine), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+}
+
+TEST_F(Diagnoses, A4SpherePdf) {
+  expect_diagnosis(check_path_furnace(path_radiance_with_sphere_pdf), "the per-bounce weight averages 2a instead of a: is your pdf off");
+}
+
+TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
+  expect_diagnosis(check_path_furnace(path_radiance_cosine_directions_uniform_pdf), "the per-bounce weight averages 4a/3");
+  EXPECT_FALSE(check_reference_regions(path_radiance_cosine_directions_uniform_pdf).passed);
+}
+
+}  // namespace
+}  // namespace mcrt::testing::assignment
