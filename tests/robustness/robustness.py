@@ -20,6 +20,7 @@ Groups:
   dev-full           stdout on /dev/full: exit 1, one line with the system's reason
   foreign-out        --out a non-empty folder that no chapter wrote: exit 2, folder untouched
   degenerate         zero emission, 1x1 images, --seed 0 at 8x6: exit 0, no warning, every plot
+  leading-zeros      --seed 010 is ten (or refused naming --seed), never octal eight
 
 Exit status: 0 all cases held, 1 some failed (each failure printed), 77 skipped (CTest
 SKIP_RETURN_CODE).
@@ -113,14 +114,32 @@ def snapshot(folder):
     return result
 
 
-def one_line_problems(err, limit=200):
+def one_line_problems(err, paths=(), limit=200):
+    """Exactly one line on stderr, under limit characters once the paths the user gave (whose
+    length is the user's) are counted as one character each."""
     lines = lines_of(err)
     problems = []
     if len(lines) != 1:
         problems.append(f"{len(lines)} lines on stderr, not 1: {text(err)[:400]!r}")
-    elif len(lines[0]) >= limit:
-        problems.append(f"message of {len(lines[0])} characters (limit {limit}): {lines[0]!r}")
+        return problems
+    line = lines[0]
+    for path in sorted((str(p) for p in paths), key=len, reverse=True):
+        line = line.replace(path, "P")
+    if len(line) >= limit:
+        problems.append(f"message of {len(line)} characters besides paths (limit {limit}): "
+                        f"{lines[0]!r}")
     return problems
+
+
+def with_flags(base, *overrides):
+    """base arguments with each --flag value pair of overrides replacing the one in base."""
+    args = list(base)
+    for flag, value in zip(overrides[::2], overrides[1::2]):
+        if flag in args:
+            args[args.index(flag) + 1] = value
+        else:
+            args += [flag, value]
+    return args
 
 
 def exit_problems(code, expected, err):
@@ -238,7 +257,7 @@ def check_refused(exe, arguments, flag, workdir):
     out = workdir / "out"
     command = [exe] + (["--out", str(out)] if "--out" not in arguments[0] else []) + arguments
     code, _, err, _ = run(command, cwd=cwd, timeout=REFUSAL_TIMEOUT)
-    problems = exit_problems(code, 2, err) + one_line_problems(err)
+    problems = exit_problems(code, 2, err) + one_line_problems(err, [workdir])
     if flag not in text(err):
         problems.append(f"message does not name {flag}: {text(err)[:300]!r}")
     if out.exists():
@@ -311,7 +330,7 @@ def group_work_limits(chapters, tmp, checks):
         workdir = fresh(tmp / f"work{i}")
         out = workdir / "out"
         code, _, err, seconds = run([chapters[name]] + args + ["--out", str(out)], cwd=workdir)
-        problems = exit_problems(code, 2, err) + one_line_problems(err)
+        problems = exit_problems(code, 2, err) + one_line_problems(err, [workdir])
         if seconds > 1.0:
             problems.append(f"took {seconds:.2f} s to refuse (limit 1 s)")
         if flag and flag not in text(err):
@@ -372,7 +391,7 @@ def after_interrupt_problems(code, err, parent, before, signum):
     elif code != expected and code != 0:
         problems.append(f"exit code {code}, expected {expected}: {text(err)[:300]!r}")
     if code == expected:
-        problems += one_line_problems(err)
+        problems += one_line_problems(err, [parent])
         if snapshot(parent / "out") != before:
             problems.append("--out changed (an interrupted run must leave the previous one whole)")
     left = sorted(set(os.listdir(parent)) - {"out"})
@@ -575,7 +594,7 @@ def group_dev_full(chapters, tmp, checks):
         with open("/dev/full", "wb") as full:
             code, _, err, _ = run([chapters[name]] + TINY[name] + ["--out", str(parent / "out")],
                                   cwd=parent, stdout=full)
-        problems = exit_problems(code, 1, err) + one_line_problems(err)
+        problems = exit_problems(code, 1, err) + one_line_problems(err, [parent])
         if "No space left on device" not in text(err):
             problems.append(f"message does not give the system's reason: {text(err)!r}")
         checks.case(f"{name} >/dev/full", problems)
@@ -591,7 +610,7 @@ def group_foreign_out(chapters, tmp, checks):
         before = snapshot(out)
         code, _, err, seconds = run([exe] + TINY.get(name, []) + ["--quiet", "--out", str(out)],
                                     cwd=parent)
-        problems = exit_problems(code, 2, err) + one_line_problems(err)
+        problems = exit_problems(code, 2, err) + one_line_problems(err, [out])
         if "--out" not in text(err) and str(out) not in text(err):
             problems.append(f"message names neither --out nor the folder: {text(err)!r}")
         if snapshot(out) != before:
@@ -607,13 +626,14 @@ def group_degenerate(chapters, tmp, checks):
     cases = []
     for name in [n for n in RENDERERS if n in chapters]:
         tiny = TINY[name]
-        cases.append((name, tiny + ["--scene", "furnace", "--emission", "0"], "zero emission"))
-        cases.append((name, tiny + ["--width", "1", "--height", "1"], "a 1x1 image"))
-        cases.append((name, tiny + ["--width", "8", "--height", "6", "--seed", "0"],
+        cases.append((name, with_flags(tiny, "--scene", "furnace", "--emission", "0"),
+                      "zero emission"))
+        cases.append((name, with_flags(tiny, "--width", "1", "--height", "1"), "a 1x1 image"))
+        cases.append((name, with_flags(tiny, "--width", "8", "--height", "6", "--seed", "0"),
                       "--seed 0 at 8x6"))
     for name in ("ch02_disk_area", "ch03_trapezoid_vs_mc"):
         if name in chapters:
-            cases.append((name, TINY[name] + ["--seed", "0"], "--seed 0"))
+            cases.append((name, with_flags(TINY[name], "--seed", "0"), "--seed 0"))
 
     def one(i, name, args):
         parent = fresh(tmp / f"deg{i}")
@@ -669,7 +689,7 @@ def group_full_disk(chapters, tmp, checks):
             problems = []
             if code == 1:
                 failed += 1
-                problems += one_line_problems(err)
+                problems += one_line_problems(err, [mount])
                 if "No space left on device" not in text(err):
                     problems.append(f"message lacks the system's reason: {text(err)!r}")
                 if str(mount) not in text(err):
@@ -691,7 +711,38 @@ def group_full_disk(chapters, tmp, checks):
         checks.case("full disk", ["no run met a full disk"])
 
 
+def group_leading_zeros(chapters, tmp, checks):
+    """010 is ten, never octal eight: --seed 010 renders what --seed 10 renders, not --seed 8."""
+    name = "ch05_path_tracer"
+    if name not in chapters:
+        checks.case("leading zeros", [f"{name} not built"])
+        return
+    images = {}
+    for seed in ("010", "10", "8"):
+        parent = fresh(tmp / f"seed{seed}")
+        code, _, err, _ = run([chapters[name], "--width", "8", "--height", "6", "--spp", "1",
+                               "--depth", "2", "--quiet", "--seed", seed,
+                               "--out", str(parent / "out")], cwd=parent)
+        if code == 2 and seed == "010":
+            problems = one_line_problems(err)
+            if "--seed" not in text(err):
+                problems.append(f"refused without naming --seed: {text(err)!r}")
+            checks.case(f"{name} --seed 010 refused", problems)
+            return
+        checks.case(f"{name} --seed {seed}", exit_problems(code, 0, err))
+        if code == 0:
+            images[seed] = (parent / "out" / "spp_0001.pfm").read_bytes()
+    if len(images) == 3:
+        problems = []
+        if images["010"] != images["10"]:
+            problems.append("--seed 010 differs from --seed 10")
+        if images["010"] == images["8"]:
+            problems.append("--seed 010 is read as octal 8")
+        checks.case(f"{name} --seed 010 is ten", problems)
+
+
 GROUPS = {
+    "leading-zeros": group_leading_zeros,
     "work-limits": group_work_limits,
     "signals": group_signals,
     "full-disk": group_full_disk,
