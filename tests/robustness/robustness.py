@@ -19,7 +19,8 @@ Groups:
                      every file present and complete
   dev-full           stdout on /dev/full: exit 1, one line with the system's reason
   foreign-out        --out a non-empty folder that no chapter wrote: exit 2, folder untouched
-  degenerate         zero emission, 1x1 images, --seed 0 at 8x6: exit 0, no warning, every plot
+  degenerate         zero emission, 1x1 images, --seed 0 at 8x6, a list of one value: exit 0, no
+                     warning, every plot
   leading-zeros      --seed 010 is ten (or refused naming --seed), never octal eight
 
 Exit status: 0 all cases held, 1 some failed (each failure printed), 77 skipped (CTest
@@ -632,6 +633,14 @@ def group_degenerate(chapters, tmp, checks):
     for name in ("ch02_disk_area", "ch03_trapezoid_vs_mc"):
         if name in chapters:
             cases.append((name, with_flags(TINY[name], "--seed", "0"), "--seed 0"))
+    # A list of one value: plots of a single point.
+    for name, flag, value in [("ch02_disk_area", "--dims", "2"),
+                              ("ch03_trapezoid_vs_mc", "--dims", "1"),
+                              ("ch04_recursive_nk", "--branching", "1"),
+                              ("ch05_path_tracer", "--spp", "1"),
+                              ("ch06_russian_roulette", "--q", "0.7")]:
+        if name in chapters:
+            cases.append((name, with_flags(TINY[name], flag, value), f"{flag} {value} alone"))
 
     def one(i, name, args):
         parent = fresh(tmp / f"deg{i}")
@@ -718,9 +727,8 @@ def group_leading_zeros(chapters, tmp, checks):
     images = {}
     for seed in ("010", "10", "8"):
         parent = fresh(tmp / f"seed{seed}")
-        code, _, err, _ = run([chapters[name], "--width", "8", "--height", "6", "--spp", "1",
-                               "--depth", "2", "--quiet", "--seed", seed,
-                               "--out", str(parent / "out")], cwd=parent)
+        code, _, err, _ = run([chapters[name]] + with_flags(TINY[name], "--seed", seed) +
+                              ["--quiet", "--out", str(parent / "out")], cwd=parent)
         if code == 2 and seed == "010":
             problems = one_line_problems(err)
             if "--seed" not in text(err):
