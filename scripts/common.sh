@@ -14,11 +14,15 @@ debian_packages=(
   gnuplot-nox fonts-dejavu-core
 )
 
-# Installs the missing packages when run as root; otherwise prints the one command to run
-# and exits with code 2.
+# The compilers of the portability builds (scripts/test --compiler NAME): the Debian package
+# of each, installed only when that build is asked for.
+declare -A compiler_packages=([clang]=clang [gcc11]=g++-11)
+
+# ensure_packages [EXTRA...]: installs the missing packages (the project's and EXTRA) when run
+# as root; otherwise prints the one command to run and exits with code 2.
 ensure_packages() {
   local missing=()
-  for package in "${debian_packages[@]}"; do
+  for package in "${debian_packages[@]}" "$@"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
       missing+=("$package")
     fi
@@ -47,4 +51,12 @@ configure_and_build() {
   else
     cmake --build --preset "$preset" -j "$(nproc)"
   fi
+}
+
+# The unit-test executables (tests/*_test.cpp): all a portability build needs to compile.
+unit_test_targets() {
+  local source
+  for source in tests/*_test.cpp; do
+    basename "$source" .cpp
+  done
 }
