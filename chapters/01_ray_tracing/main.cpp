@@ -73,7 +73,10 @@ void write_summary(const CLI::App& app, const Options& o, const RenderResult& re
   add_render_totals(summary, totals_of(result));
   summary["mean_radiance"] = mean_radiance(result.image);
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(k_chapter, o.common);
+  add_render_timings(timings, totals_of(result));
+  write_timings(o.common.dir, timings, app);
 }
 
 void print_summary(const Options& o, const RenderResult& result) {
@@ -83,7 +86,7 @@ void print_summary(const Options& o, const RenderResult& result) {
   fmt::print("  time             {:.3f} s\n", result.seconds);
   fmt::print("  rays per second  {:.3g}\n", result.rays_per_second());
   fmt::print("  mean radiance    {:.4f}\n", mean_radiance(result.image));
-  fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json}}\n", o.common.out.string());
+  fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json,timings.json}}\n", o.common.out.string());
 }
 
 void run(const CLI::App& app, const Options& o) {
@@ -92,7 +95,6 @@ void run(const CLI::App& app, const Options& o) {
                   "lower one of them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
-  prepare_output_dir(o.common.out);
 
   ProgressBar progress("ch01 rendering", static_cast<std::uint64_t>(o.image.height), o.common.quiet);
   RenderSettings settings{o.spp, 0, o.common.seed, o.common.threads, &progress};
@@ -102,8 +104,8 @@ void run(const CLI::App& app, const Options& o) {
       });
   progress.finish();
 
-  write_png(o.common.out / "image.png", result.image);
-  write_pfm(o.common.out / "image.pfm", result.image);
+  write_png(o.common.dir / "image.png", result.image);
+  write_pfm(o.common.dir / "image.pfm", result.image);
   write_summary(app, o, result);
   if (!o.common.quiet) print_summary(o, result);
 }

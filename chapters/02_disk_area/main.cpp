@@ -166,7 +166,6 @@ Results run_studies(const Options& o) {
   check_work_limit({ball_coordinates, "coordinates", "--trials x N x k over the ball studies"},
                    k_max_ball_coordinates, "--ball-n x --trials x --dims",
                    "lower --ball-n, --trials or --dims");
-  prepare_output_dir(o.common.out);
 
   const double ball_points = ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
   ProgressBar progress("ch02 sampling", static_cast<std::uint64_t>(disk_points + ball_points),
@@ -192,14 +191,15 @@ Results run_studies(const Options& o) {
 
 void run(const CLI::App& app, const Options& o) {
   const Results r = run_studies(o);
-  write_csv(o.common.out / "disk_area.csv", r.disk);
-  write_csv(o.common.out / "ball_volume.csv", r.balls);
-  write_csv(o.common.out / "ball_error_vs_n.csv", r.ball_errors);
-  write_csv(o.common.out / "points.csv", r.points);
-  write_plot(o.common.out, error_plot(r.disk_fit.slope, 4.0 * disk_area_theory_std(1)));
-  write_plot(o.common.out, picture_plot(o.points, r.picture_estimate));
-  write_plot(o.common.out, ball_error_plot({2, 5, 10}));
-  write_json(o.common.out / "summary.json", summary_of(k_chapter, app, o, r));
+  write_csv(o.common.dir / "disk_area.csv", r.disk);
+  write_csv(o.common.dir / "ball_volume.csv", r.balls);
+  write_csv(o.common.dir / "ball_error_vs_n.csv", r.ball_errors);
+  write_csv(o.common.dir / "points.csv", r.points);
+  write_plot(o.common.dir, error_plot(r.disk_fit.slope, 4.0 * disk_area_theory_std(1)));
+  write_plot(o.common.dir, picture_plot(o.points, r.picture_estimate));
+  write_plot(o.common.dir, ball_error_plot({2, 5, 10}));
+  write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, r));
+  write_timings(o.common.dir, timings_of(k_chapter, o, r), app);
   if (!o.common.quiet) print_report(k_chapter, o, r);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 02's report: summary.json and the console table, from the studies' Results.
+// Chapter 02's report: summary.json, timings.json and the console table, from the studies' Results.
 
 #include <fmt/format.h>
 
@@ -17,14 +17,21 @@ inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& 
                      {"fitted_slope", r.disk_fit.slope},
                      {"fitted_slope_standard_error", r.disk_fit.slope_standard_error},
                      {"theory_slope", -0.5}, {"median_empirical_over_theory_std", r.median_std_ratio},
-                     {"samples", r.disk_points}, {"seconds", r.disk_seconds},
-                     {"samples_per_second", r.disk_points / r.disk_seconds},
-                     {"avx2", disk_count_uses_avx2()}};
+                     {"samples", r.disk_points}};
   summary["ball"] = {{"n", o.ball_n}, {"trials", o.trials}, {"volumes", r.balls.json()},
                      {"fitted_slopes", r.ball_slopes.json()}};
   summary["picture"] = {{"points", o.points}, {"estimate", r.picture_estimate}};
   summary["flags"] = flags_json(app);
   return summary;
+}
+
+// timings.json: how fast the disk study ran, and on which path.
+inline Json timings_of(const Chapter& chapter, const auto& o, const auto& r) {
+  Json timings = start_timings(chapter, o.common);
+  timings["disk"] = {{"seconds", r.disk_seconds},
+                     {"samples_per_second", r.disk_points / r.disk_seconds},
+                     {"avx2", disk_count_uses_avx2()}};
+  return timings;
 }
 
 // The console: the disk table, its slope and speed, the ball tables, the picture.
@@ -43,7 +50,7 @@ inline void print_report(const Chapter& chapter, const auto& o, const auto& r) {
                               "theory_std", "relative_std"}),
              r.ball_slopes.console());
   fmt::print("  picture: {} points, 4M/N = {:.4f}\n  wrote {}/{{disk_area,ball_volume,"
-             "ball_error_vs_n,points}}.csv, plots, summary.json\n",
+             "ball_error_vs_n,points}}.csv, plots, summary.json, timings.json\n",
              o.points, r.picture_estimate, o.common.out.string());
 }
 

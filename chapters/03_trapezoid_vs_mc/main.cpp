@@ -128,13 +128,13 @@ void write_plots(const Options& o, const Plan& plan, const Results& r) {
   for (std::size_t s = 0; s < plan.studies.size(); ++s)
     if (plan.studies[s].kind == Kind::unit_ball_kd && plan.studies[s].dims == k_disk_dims) disk = s;
   const auto plot = [&](const char* name, const char* title, std::size_t s, const char* label) {
-    write_plot(o.common.out, error_plot(name, title, plan.studies[s].name(), plan.studies[s].dims,
+    write_plot(o.common.dir, error_plot(name, title, plan.studies[s].name(), plan.studies[s].dims,
                                         r.lines[2 * s], r.lines[2 * s + 1], label));
   };
   plot("smooth_1d", "e^{-x^2} on [0,1]: error against N", 0, "N^{-2}");
   plot("discontinuous_1d", "ceil(sin x^2) on [0,3]: error against N", 1, "N^{-1}");
   plot("disk_2d", "Unit disk in [-1,1]^2: error against N", disk, "N^{-1/2} (n^{-1})");
-  write_plot(o.common.out, slopes_plot(std::max(o.dims.back(), k_disk_dims)));
+  write_plot(o.common.dir, slopes_plot(std::max(o.dims.back(), k_disk_dims)));
 }
 
 Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const Results& r) {
@@ -143,8 +143,6 @@ Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const R
   summary["max_evaluations"] = o.max_evaluations;
   summary["dims"] = o.dims;
   summary["evaluations"] = plan.total_evaluations;
-  summary["seconds"] = r.seconds;
-  summary["evaluations_per_second"] = r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0;
   Json references = Json::object();
   for (const Study& study : plan.studies)
     references[study.name() + "_" + std::to_string(study.dims)] = reference(study);
@@ -154,20 +152,26 @@ Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const R
   return summary;
 }
 
+Json timings_of(const Options& o, const Plan& plan, const Results& r) {
+  Json timings = start_timings(k_chapter, o.common);
+  timings["seconds"] = r.seconds;
+  timings["evaluations_per_second"] = r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0;
+  return timings;
+}
+
 void print_report(const Options& o, const Plan& plan, const Results& r) {
   fmt::print("{}  N up to {}  {} trials  k = {}  {} threads\n{}", k_chapter.name,
              o.max_evaluations, o.trials, fmt::join(o.dims, ","), o.common.threads,
              r.slopes.console({"integrand", "dims", "method", "fitted_slope", "standard_error",
                                "theory_slope"}));
   fmt::print("  {:.3g} evaluations in {:.2f} s ({:.3g} per second)\n"
-             "  wrote {}/{{errors.csv,slopes.csv,summary.json}} and plots\n",
+             "  wrote {}/{{errors.csv,slopes.csv,summary.json,timings.json}} and plots\n",
              plan.total_evaluations, r.seconds,
              r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0, o.common.out.string());
 }
 
 void run(const CLI::App& app, const Options& o) {
   const Plan plan = make_plan(o.dims, o.max_evaluations, o.trials);
-  prepare_output_dir(o.common.out);
   // Every task (a grid n, or N with its trials) on any core, largest first; each writes
   // only its own estimate, so the numbers do not depend on --threads.
   const Stopwatch clock;
@@ -181,10 +185,11 @@ void run(const CLI::App& app, const Options& o) {
   progress.finish();
   const Results r = tabulate(plan, estimates, clock.seconds());
 
-  write_csv(o.common.out / "errors.csv", r.errors);
-  write_csv(o.common.out / "slopes.csv", r.slopes);
+  write_csv(o.common.dir / "errors.csv", r.errors);
+  write_csv(o.common.dir / "slopes.csv", r.slopes);
   write_plots(o, plan, r);
-  write_json(o.common.out / "summary.json", summary_of(app, o, plan, r));
+  write_json(o.common.dir / "summary.json", summary_of(app, o, plan, r));
+  write_timings(o.common.dir, timings_of(o, plan, r), app);
   if (!o.common.quiet) print_report(o, plan, r);
 }
 

@@ -148,7 +148,6 @@ void run(const CLI::App& app, const Options& o) {
   check_plan(o, plan);
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
-  prepare_output_dir(o.common.out);
 
   ProgressBar progress("ch04 sweep", static_cast<std::uint64_t>(plan.predicted_rays), o.common.quiet);
   RecursiveRenderer render_recursive{scene, camera, o.common.seed, o.common.threads, &progress, {}};
@@ -161,13 +160,13 @@ void run(const CLI::App& app, const Options& o) {
   const auto best = static_cast<std::size_t>(std::min_element(error.begin(), error.end()) - error.begin());
   const std::string verdict = conclusion(o, equal, best);
 
-  write_csv(o.common.out / "rays.csv", rays);
-  write_csv(o.common.out / "missing_light.csv", missing);
-  write_csv(o.common.out / "equal_cost.csv", equal);
-  write_plots(o.common.out, o.branching, o.spp, k_light_spp,
+  write_csv(o.common.dir / "rays.csv", rays);
+  write_csv(o.common.dir / "missing_light.csv", missing);
+  write_csv(o.common.dir / "equal_cost.csv", equal);
+  write_plots(o.common.dir, o.branching, o.spp, k_light_spp,
               missing.at(0, "limit_mean_radiance").number(), plan.limit_depth, o.budget,
-              o.equal_cost_depth);
-  write_grid(o.common.out, images, o.branching, o.max_depth, o.spp, o.image.width);
+              o.equal_cost_depth, rays.numbers("mean_radiance"), error);
+  write_grid(o.common.dir, images, o.branching, o.max_depth, o.spp, o.image.width);
   write_summary(k_chapter, app, o, plan, render_recursive, rays, missing, equal, best, verdict,
                 k_light_spp);
   if (!o.common.quiet)

@@ -19,9 +19,12 @@ namespace mcrt {
 
 // rays_vs_depth, mean_radiance_vs_depth and equal_cost, over rays.csv, missing_light.csv and
 // equal_cost.csv; one line per N, picked out by the branching column.
+// `radiances` and `errors` are the values the second and third plots draw (all zero without
+// light).
 inline void write_plots(const std::filesystem::path& out, const std::vector<int>& branching,
                         int spp, int light_spp, double limit, int limit_depth, int budget,
-                        int equal_cost_depth) {
+                        int equal_cost_depth, const std::vector<double>& radiances,
+                        const std::vector<double>& errors) {
   const std::string per_n = fmt::format("Ns = '{}'\nset xtics 1\n", fmt::join(branching, " "));
   const auto of_n = [](const char* column) {
     return fmt::format("'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
@@ -33,8 +36,7 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
               "plot for [i=1:words(Ns)] " + of_n("rays") + " with linespoints pt 7 lw 2 lc i "
               "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
               " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
-  write_plot(out,
-             {"mean_radiance_vs_depth",
+  Plot radiance{"mean_radiance_vs_depth",
               "Mean radiance against depth: the cut at k drops the light of longer paths",
               "depth k", "mean radiance of the image", false, false,
               per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
@@ -44,15 +46,18 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
                           "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
                           "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
                           "'limit (N = 1, k = {}, {} spp)'",
-                          of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)});
-  write_plot(out,
-             {"equal_cost",
+                          of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)};
+  radiance.y_values = radiances;
+  write_plot(out, radiance);
+  Plot equal{"equal_cost",
               fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
               "branching N", "RMS error at the budget", true, true,
               fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [0.8:{}]\n",
                           fmt::join(branching, ", "), 1.25 * branching.back()),
               "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
-              "pt 7 lw 2 title 'RMS error'"});
+              "pt 7 lw 2 title 'RMS error'"};
+  equal.y_values = errors;
+  write_plot(out, equal);
 }
 
 // grid.png: every image of the sweep, rows N and columns k. Small images are blown up (nearest

@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 04's report: summary.json and the console tables, from the run's Tables.
+// Chapter 04's report: summary.json, timings.json and the console tables, from the run's Tables.
 
 #include <string>
 
@@ -14,7 +14,7 @@
 
 namespace mcrt {
 
-// summary.json: the setup, the totals, every table and the equal-cost verdict.
+// summary.json: the setup, the totals, every table and the equal-cost verdict; timings.json.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Plan& plan, const RecursiveRenderer& work, const Table& rays,
                           const Table& missing, const Table& equal, std::size_t best,
@@ -34,7 +34,10 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                            {"best_branching", equal.at(best, "branching").json()},
                            {"rows", equal.json()}, {"conclusion", verdict}};
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(chapter, o.common);
+  add_render_timings(timings, work.total);
+  write_timings(o.common.dir, timings, app);
 }
 
 // The console: the sweep, the missing light, the equal-cost table and the verdict.
@@ -50,7 +53,7 @@ inline void print_tables(const Chapter& chapter, const auto& o, const RenderTota
                             "rms_error_at_budget", "relative_rms_error"}));
   fmt::print("{}\ntotal: {} rays in {:.2f} s ({:.3g} rays/s)\n", verdict, total.rays,
              total.seconds, total.rays_per_second());
-  fmt::print("wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json\n",
+  fmt::print("wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json, timings.json\n",
              o.common.out.string());
 }
 

@@ -108,11 +108,13 @@ void write_rmse_plot(const Options& o, const Table& errors, double slope) {
            ? fmt::format("set label 1 'fitted slope {:.3f} (theory -0.5)' at graph 0.05, graph 0.1\n",
                          slope)
            : std::string());
-  write_plot(o.common.out,
-             {"rmse_vs_spp", "RMS error against samples per pixel (two-render estimate)",
-              "samples per pixel", "RMS error", true, true, settings,
-              "plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 7 lw 2 title "
-              "'RMS error', rmse1 * (x / spp1)**-0.5 with lines dt 2 lc 'black' title 'slope -1/2'"});
+  Plot plot{"rmse_vs_spp", "RMS error against samples per pixel (two-render estimate)",
+            "samples per pixel", "RMS error", true, true, settings,
+            "plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 7 lw 2 title "
+            "'RMS error', rmse1 * (x / spp1)**-0.5 with lines dt 2 lc 'black' title 'slope -1/2'"};
+  plot.x_values = errors.numbers("spp");  // one spp, or zero error (no light): still a plot
+  plot.y_values = errors.numbers("rmse");
+  write_plot(o.common.dir, plot);
 }
 
 void write_summary(const CLI::App& app, const Options& o, const Table& errors, double slope,
@@ -127,7 +129,10 @@ void write_summary(const CLI::App& app, const Options& o, const Table& errors, d
   summary["mean_radiance"] = mean_radiance(last);
   summary["rmse_vs_spp"] = errors.json();
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(k_chapter, o.common);
+  add_render_timings(timings, total);
+  write_timings(o.common.dir, timings, app);
 }
 
 void print_table(const Options& o, const Table& errors, double slope, const RenderTotals& total) {
@@ -139,7 +144,7 @@ void print_table(const Options& o, const Table& errors, double slope, const Rend
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
-             "summary.json}}\n", o.common.out.string());
+             "summary.json, timings.json}}\n", o.common.out.string());
 }
 
 void run(const CLI::App& app, const Options& o) {
@@ -148,7 +153,6 @@ void run(const CLI::App& app, const Options& o) {
                   o.common.threads, "lower one of them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
-  prepare_output_dir(o.common.out);
 
   Table errors = rmse_table();
   RenderTotals total;
@@ -163,15 +167,15 @@ void run(const CLI::App& app, const Options& o) {
     total.add(a);
     total.add(b);
     const std::string stem = fmt::format("spp_{:04}", spp);
-    write_png(o.common.out / (stem + ".png"), a.image);
-    write_pfm(o.common.out / (stem + ".pfm"), a.image);
+    write_png(o.common.dir / (stem + ".png"), a.image);
+    write_pfm(o.common.dir / (stem + ".pfm"), a.image);
     images.push_back(a.image);
     labels.push_back(fmt::format("{} spp", spp));
   }
   const double slope = fitted_slope(errors);
 
-  write_png(o.common.out / "noise_strip.png", centre_detail_strip(images, labels, "at growing spp"));
-  write_csv(o.common.out / "rmse_vs_spp.csv", errors);
+  write_png(o.common.dir / "noise_strip.png", centre_detail_strip(images, labels, "at growing spp"));
+  write_csv(o.common.dir / "rmse_vs_spp.csv", errors);
   write_rmse_plot(o, errors, slope);
   write_summary(app, o, errors, slope, total, images.back());
   if (!o.common.quiet) print_table(o, errors, slope, total);

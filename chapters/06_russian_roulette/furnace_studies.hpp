@@ -123,7 +123,7 @@ inline Table efficiency_study(const Furnace& f) {
                {"variance", Column::real}, {"variance_theory", Column::real},
                {"rays_per_path", Column::real, 6}, {"rays_per_path_theory", Column::real, 6},
                {"seconds", Column::real, 4}, {"efficiency", Column::real, 6},
-               {"efficiency_theory", Column::real, 6}, {"best", Column::integer}});
+               {"efficiency_theory", Column::real, 6}, {"best_efficiency", Column::integer}});
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const PathStats& r = rows[i];
     const bool fixed = i < f.q.size();

@@ -108,8 +108,8 @@ RenderResult render_image(const Camera& camera, const Options& o, const char* la
   RenderResult result = render(camera, {o.spp, 0, o.common.seed, o.common.threads, &progress},
                                estimate);
   progress.finish();
-  write_png(o.common.out / (std::string(label) + ".png"), result.image);
-  write_pfm(o.common.out / (std::string(label) + ".pfm"), result.image);
+  write_png(o.common.dir / (std::string(label) + ".png"), result.image);
+  write_pfm(o.common.dir / (std::string(label) + ".pfm"), result.image);
   return result;
 }
 
@@ -140,7 +140,6 @@ void run(const CLI::App& app, const Options& o) {
   const Furnace furnace{make_furnace(p.furnace_albedo, p.furnace_emission), p.furnace_albedo,
                         p.furnace_emission, o.paths, o.common.seed, o.common.threads, o.depth,
                         o.roulette, o.q};
-  prepare_output_dir(o.common.out);
 
   Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(), {}, {}};
   r.lengths = path_length_study(furnace, r.fixed_paths);
@@ -157,11 +156,11 @@ void run(const CLI::App& app, const Options& o) {
   r.total.add(cut);
   r.total.add(roulette);
 
-  write_csv(o.common.out / "bias.csv", r.bias);
-  write_csv(o.common.out / "efficiency.csv", r.efficiency);
-  write_csv(o.common.out / "path_length.csv", r.lengths);
-  write_csv(o.common.out / "renders.csv", r.renders);
-  write_plots(o.common.out, o, r.efficiency);
+  write_csv(o.common.dir / "bias.csv", r.bias);
+  write_csv(o.common.dir / "efficiency.csv", r.efficiency);
+  write_csv(o.common.dir / "path_length.csv", r.lengths);
+  write_csv(o.common.dir / "renders.csv", r.renders);
+  write_plots(o.common.dir, o, r.efficiency, r.bias);
   write_summary(k_chapter, app, o, r);
   if (!o.common.quiet) print_tables(k_chapter, o, r);
 }

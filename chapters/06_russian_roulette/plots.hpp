@@ -26,9 +26,9 @@ struct PlotSetup {
 };
 
 // bias.png: the depth cut's bias against k with its closed form, roulette's beside it at 0.
-inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s) {
-  write_plot(out,
-             {"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
+inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s,
+                            const Table& bias) {
+  Plot plot{"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
                       "k loses nothing",
               "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
               fmt::format("set key bottom right\nset xrange [-0.5:{}]\n{}", s.depth + 0.5,
@@ -39,7 +39,11 @@ inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s
               "'' using \"k\":\"cut_bias\":\"cut_ci\" with yerrorbars pt 7 lc 1 "
               "title 'depth cut at k (99.9% interval)', "
               "'' using (column(\"k\") + 0.15):\"roulette_bias\":\"roulette_ci\" with yerrorbars "
-              "pt 5 lc 2 title 'roulette after k bounces (99.9% interval)'"});
+              "pt 5 lc 2 title 'roulette after k bounces (99.9% interval)'"};
+  plot.y_values = {0.0};  // all of them 0 without light: a range around 0, not an empty one
+  for (const char* column : {"cut_bias", "cut_bias_theory", "roulette_bias"})
+    for (double y : bias.numbers(column)) plot.y_values.push_back(y);
+  write_plot(out, plot);
 }
 
 // efficiency.png: measured 1 / (variance x seconds per path) of each fixed q, the closed form
@@ -48,14 +52,17 @@ inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s
 inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSetup& s,
                                   const Table& efficiency) {
   double best_q = std::nan(""), best = 0.0, throughput = 0.0, highest = 0.0;
+  // Without light every variance is 0 and every efficiency infinite: nothing finite to draw.
+  const auto finite = [](double x) { return std::isfinite(x) ? x : 0.0; };
   for (std::size_t i = 0; i < efficiency.size(); ++i) {
-    highest = std::max(highest, efficiency.at(i, "efficiency").number());
-    if (efficiency.at(i, "best").number() == 1.0) {
+    highest = std::max(highest, finite(efficiency.at(i, "efficiency").number()));
+    if (efficiency.at(i, "best_efficiency").number() == 1.0) {
       best_q = efficiency.at(i, "q").number();
       best = efficiency.at(i, "efficiency").number();
+      if (!std::isfinite(best)) best_q = std::nan("");
     }
     if (efficiency.at(i, "policy").string() == "throughput")
-      throughput = efficiency.at(i, "efficiency").number();
+      throughput = finite(efficiency.at(i, "efficiency").number());
   }
   const std::string settings = fmt::format(
       "a = {:.9g}; Le = {:.9g}; d = {}; tray = {:.9g}\n"
@@ -69,7 +76,7 @@ inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSe
       "if (b < 1) set label 2 'q <= 4a^2/3: infinite variance' at first b / 2, graph 0.45 "
       "center rotate by 90 noenhanced\n"
       "{}",
-      s.albedo, s.emission, s.min_depth, s.seconds_per_ray, 1.35 * highest,
+      s.albedo, s.emission, s.min_depth, s.seconds_per_ray, highest > 0.0 ? 1.35 * highest : 1.0,
       std::isfinite(best_q)
           ? fmt::format("set label 1 'best q = {:g}' at first {:.9g}, first {:.9g} point pt 6 "
                         "ps 3 lw 2 offset 1.5, 1.5\n", best_q, best_q, best)
@@ -110,9 +117,10 @@ inline PlotSetup plot_setup(const auto& o, const Table& efficiency) {
 }
 
 // bias.png, efficiency.png and path_length.png into `out`, for the run's Options `o`.
-inline void write_plots(const std::filesystem::path& out, const auto& o, const Table& efficiency) {
+inline void write_plots(const std::filesystem::path& out, const auto& o, const Table& efficiency,
+                        const Table& bias) {
   const PlotSetup setup = plot_setup(o, efficiency);
-  write_bias_plot(out, setup);
+  write_bias_plot(out, setup, bias);
   write_efficiency_plot(out, setup, efficiency);
   write_path_length_plot(out, setup);
 }

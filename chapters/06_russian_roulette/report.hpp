@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 06's report: summary.json and the console tables, from the run's Tables.
+// Chapter 06's report: summary.json, timings.json and the console tables, from the run's Tables.
 
 #include <cmath>
 #include <cstddef>
@@ -17,7 +17,7 @@ namespace mcrt {
 // The q of efficiency.csv's best row (the most efficient fixed q).
 inline double best_q(const Table& efficiency) {
   for (std::size_t i = 0; i < efficiency.size(); ++i)
-    if (efficiency.at(i, "best").number() == 1.0) return efficiency.at(i, "q").number();
+    if (efficiency.at(i, "best_efficiency").number() == 1.0) return efficiency.at(i, "q").number();
   return std::nan("");
 }
 
@@ -30,7 +30,7 @@ inline int rows_with_zero_in_ci(const Table& bias) {
 }
 
 // summary.json: the setup, the totals, the furnace's closed forms beside the measured, every
-// table. `r` holds the tables (bias, efficiency, lengths, renders), fixed_paths and total.
+// table; timings.json: the times and the q they find most efficient. `r` holds the tables (bias, efficiency, lengths, renders), fixed_paths and total.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const auto& r) {
   const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
@@ -61,14 +61,17 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                       {"mean_path_length", r.efficiency.at(last, "rays_per_path").number()}}}};
   summary["mean_path_length"] = r.fixed_paths.rays.mean();
   summary["mean_path_length_theory"] = furnace_roulette_mean_rays(d, o.roulette.q);
-  summary["best_q"] = best_q(r.efficiency);
   summary["bias_rows_with_zero_in_roulette_ci"] = rows_with_zero_in_ci(r.bias);
   summary["bias"] = r.bias.json();
   summary["efficiency"] = r.efficiency.json();
   summary["path_length"] = r.lengths.json();
   summary["renders"] = r.renders.json();
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(chapter, o.common);
+  add_render_timings(timings, r.total);
+  timings["best_q"] = best_q(r.efficiency);  // chosen by measured efficiency
+  write_timings(o.common.dir, timings, app);
 }
 
 // The console: the furnace, its three studies, the renders.
@@ -83,14 +86,14 @@ inline void print_tables(const Chapter& chapter, const auto& o, const auto& r) {
   fmt::print("efficiency = 1 / (variance x seconds per path); fixed q <= 4a^2/3 = {:.4g} has "
              "infinite variance\n{}", furnace_roulette_variance_threshold(a),
              r.efficiency.console({"policy", "q", "mean", "variance", "variance_theory",
-                                   "rays_per_path", "efficiency", "best"}));
+                                   "rays_per_path", "efficiency", "best_efficiency"}));
   fmt::print("path length at q = {}: mean {:.4f} rays, theory d + 1/(1 - q) = {:.4f}\n",
              o.roulette.q, r.fixed_paths.rays.mean(),
              furnace_roulette_mean_rays(o.roulette.min_depth, o.roulette.q));
   fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
              r.renders.console());
   fmt::print("wrote {}/{{bias,efficiency,path_length,renders}}.csv and plots, "
-             "{{depth_cut,roulette}}.png/.pfm, summary.json\n", o.common.out.string());
+             "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n", o.common.out.string());
 }
 
 }  // namespace mcrt

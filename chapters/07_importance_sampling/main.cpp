@@ -104,7 +104,6 @@ void run(const CLI::App& app, const Options& o) {
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   const std::vector<HemispherePdf> pdfs = study_pdfs(o.powers);
-  prepare_output_dir(o.common.out);
 
   const RenderWithPdf render_with{o};
   const Study study = run_study(render_with, scene, camera, pdfs, o);
@@ -113,11 +112,11 @@ void run(const CLI::App& app, const Options& o) {
   total.add(equal.cosine_equal_time);
   total.add(equal.reference);
 
-  write_images(o.common.out, pdfs, study.images, equal.cosine_equal_time.image,
+  write_images(o.common.dir, pdfs, study.images, equal.cosine_equal_time.image,
                equal.reference.image, o.spp);
-  write_csv(o.common.out / "variance_vs_m.csv", study.variances);
-  write_csv(o.common.out / "equal_time.csv", equal.table);
-  write_variance_plot(o.common.out, o.scene.scene, o.spp);
+  write_csv(o.common.dir / "variance_vs_m.csv", study.variances);
+  write_csv(o.common.dir / "equal_time.csv", equal.table);
+  write_variance_plot(o.common.dir, o.scene.scene, o.spp, study.variances);
   write_summary(k_chapter, app, o, study.variances, equal.table, total);
   if (!o.common.quiet) print_report(k_chapter, o, study.variances, equal.table, total);
 }

@@ -2,6 +2,7 @@
 // Chapter 07's figures: the variance of one sample for each pdf, in the furnace and in the
 // scene, over variance_vs_m.csv (columns by name); the images and the noise strip.
 
+#include <algorithm>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -12,6 +13,7 @@
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
 #include "io/plot.hpp"
+#include "io/table.hpp"
 #include "render/image.hpp"
 #include "render/render.hpp"
 #include "sampling/cosine_power.hpp"
@@ -22,7 +24,7 @@ namespace mcrt {
 // measured variances as points and the furnace's closed form as open squares. A log axis has
 // no 0: the cosine pdf's furnace variance (0 to rounding) is drawn at the bottom edge, labelled.
 inline void write_variance_plot(const std::filesystem::path& out, const std::string& scene,
-                                int spp) {
+                                int spp, const Table& variances) {
   const std::string settings =
       "set key top left\nset offsets 0.3, 0.3, 0, 0\nset xtics rotate by -30\n"
       "floor = 1e-6\nset yrange [floor:*]\n"
@@ -31,8 +33,7 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
   const auto clamp = [](const char* column) {
     return fmt::format("(column(\"{0}\") > floor ? column(\"{0}\") : floor)", column);
   };
-  write_plot(out,
-             {"variance_vs_m",
+  Plot plot{"variance_vs_m",
               fmt::format("Variance of one sample, per pixel, for each pdf ({} spp x 2 renders)",
                           spp),
               "pdf of the bounce direction", "variance of one sample", false, true, settings,
@@ -41,7 +42,11 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
                           "'' using 0:\"furnace_variance_theory\" with points pt 4 ps 2.5 lw 2 "
                           "lc 'black' title 'furnace, closed form', "
                           "'' using 0:{} with linespoints pt 5 ps 1.5 lw 2 title '{}, measured'",
-                          clamp("furnace_variance"), clamp("scene_variance"), scene)});
+                          clamp("furnace_variance"), clamp("scene_variance"), scene)};
+  // Without light every variance is 0: all at the floor, an axis of one value.
+  for (const char* column : {"furnace_variance", "furnace_variance_theory", "scene_variance"})
+    for (double y : variances.numbers(column)) plot.y_values.push_back(std::max(y, 1e-6));
+  write_plot(out, plot);
 }
 
 // The compared images (uniform, cosine, cosine at equal time, reference) as PNG and PFM, and

@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 07's report: summary.json and the console tables, from the study's Tables.
+// Chapter 07's report: summary.json, timings.json and the console tables, from the study's Tables.
 
 #include <fmt/format.h>
 
@@ -18,7 +18,7 @@ inline double cosine_furnace_variance(const Table& variances) {
   return variances.at(1, "furnace_variance").number();
 }
 
-// summary.json: the setup, the furnace, the totals, both tables and the flags.
+// summary.json: the setup, the furnace, the totals, both tables and the flags; timings.json.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& variances, const Table& equal_time,
                           const RenderTotals& total) {
@@ -35,7 +35,10 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["variance_vs_m"] = variances.json();
   summary["equal_time"] = equal_time.json();
   summary["flags"] = flags_json(app);
-  write_json(o.common.out / "summary.json", summary);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(chapter, o.common);
+  add_render_timings(timings, total);
+  write_timings(o.common.dir, timings, app);
 }
 
 // The console: the variance per pdf, the furnace's cosine row, the errors against the
@@ -55,7 +58,7 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& var
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{uniform,cosine,cosine_equal_time,reference}}.{{png,pfm}}, "
-             "noise_strip.png, variance_vs_m.csv,.png, equal_time.csv, summary.json\n",
+             "noise_strip.png, variance_vs_m.csv,.png, equal_time.csv, summary.json, timings.json\n",
              o.common.out.string());
 }
 

@@ -12,8 +12,10 @@
 #include <fmt/ranges.h>
 
 #include "core/parallel.hpp"
+#include "io/interrupt.hpp"
 #include "io/numbers.hpp"
 #include "io/output.hpp"
+#include "io/run_folder.hpp"
 
 namespace mcrt {
 
@@ -182,11 +184,20 @@ void check_image_size(const ImageOptions& options) {
                      " (8192 x 4096)");
 }
 
-nlohmann::ordered_json flags_json(const CLI::App& app) {
+namespace {
+
+// The flags that change nothing a run computes.
+bool is_run_flag(const std::string& name) {
+  return name == "out" || name == "threads" || name == "quiet";
+}
+
+// Every option with its value in this run (given or default), run flags or the others.
+nlohmann::ordered_json option_values(const CLI::App& app, bool run_flags) {
   nlohmann::ordered_json flags = nlohmann::ordered_json::object();
   for (const CLI::Option* option : app.get_options()) {
     const std::vector<std::string>& names = option->get_lnames();
-    if (names.empty() || names.front() == "help") continue;
+    if (names.empty() || names.front() == "help" || is_run_flag(names.front()) != run_flags)
+      continue;
     std::string value;
     if (option->count() > 0) {
       for (const std::string& r : option->results()) value += (value.empty() ? "" : ",") + r;
@@ -197,6 +208,12 @@ nlohmann::ordered_json flags_json(const CLI::App& app) {
   }
   return flags;
 }
+
+}  // namespace
+
+nlohmann::ordered_json flags_json(const CLI::App& app) { return option_values(app, false); }
+
+nlohmann::ordered_json run_flags_json(const CLI::App& app) { return option_values(app, true); }
 
 namespace {
 
@@ -253,13 +270,38 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
 }
 
 ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)
-    : CLI::App(chapter.description, chapter.name) {
+    : CLI::App(chapter.description, chapter.name), common_(common) {
   add_common_options(*this, common, chapter);
 }
 
 int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
-  return run_chapter(*this, argc, argv, [&body] {
-    body();
+  watch_interrupts(get_name());
+  return run_chapter(*this, argc, argv, [&] {
+    std::optional<RunFolder> folder;
+    const auto forget = [&] {  // unregistered and removed with no interruption in between
+      without_interruption([&] {
+        discard_on_interrupt(nullptr);
+        folder.reset();
+      });
+    };
+    without_interruption([&] {
+      folder.emplace(common_.out);
+      discard_on_interrupt(&*folder);
+    });
+    common_.dir = folder->staging();
+    try {
+      body();
+      folder->commit();
+    } catch (const UsageError& e) {
+      const std::string message = folder->with_out_name(e.what());
+      forget();
+      throw UsageError(message);
+    } catch (const std::exception& e) {
+      const std::string message = folder->with_out_name(e.what());
+      forget();
+      throw IoError(message);
+    }
+    forget();
     return 0;
   });
 }

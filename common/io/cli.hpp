@@ -32,7 +32,10 @@ struct Chapter {
 
 /// --out, --seed, --threads, --quiet.
 struct CommonOptions {
-  std::filesystem::path out;   ///< output folder, default out/<chapter>
+  std::filesystem::path out;   ///< output folder, default out/<chapter>; messages name it
+  /// Where the run writes its files: a staging folder beside `out`, set by ChapterApp::run and
+  /// swapped in as `out` when the run succeeds (io/run_folder.hpp).
+  std::filesystem::path dir;
   std::uint64_t seed = 1;      ///< the same seed gives byte-identical outputs
   int threads = 1;             ///< default: all cores
   bool quiet = false;          ///< no progress bar, no table
@@ -86,8 +89,12 @@ std::vector<double> parse_real_list(const std::string& text, const std::string& 
 void check_image_size(const ImageOptions& options);
 
 /// Every option of `app` with the value it had in this run (given or default), for
-/// summary.json.
+/// summary.json: all but those that cannot change a result (--out, --threads, --quiet), so
+/// summary.json is the same whatever --threads.
 nlohmann::ordered_json flags_json(const CLI::App& app);
+
+/// The flags flags_json leaves out, for timings.json.
+nlohmann::ordered_json run_flags_json(const CLI::App& app);
 
 /// Parses argv into `app`, then runs `body`; maps errors to exit codes and one-line messages.
 /// Output that cannot be written to stdout (a closed pipe, a full disk, /dev/full) is an
@@ -104,8 +111,15 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
 class ChapterApp : public CLI::App {
  public:
   ChapterApp(const Chapter& chapter, CommonOptions& common);
-  /// run_chapter on this app, with exit code 0 when `body` returns.
+  /// run_chapter on this app, with exit code 0 when `body` returns. Before any thread
+  /// starts, SIGINT and SIGTERM are set to end the run cleanly (io/interrupt.hpp). After the
+  /// flags are parsed, --out is checked and a staging folder made (io/run_folder.hpp):
+  /// `body` writes into common.dir, and only when it returns is that folder swapped in as
+  /// --out. Messages about files name them under --out, never under the staging folder.
   int run(int argc, char** argv, const std::function<void()>& body);
+
+ private:
+  CommonOptions& common_;
 };
 
 /// --scene, --albedo, --emission, --width and --height: what every renderer takes.

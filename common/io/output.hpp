@@ -1,5 +1,6 @@
 #pragma once
-/// A chapter's output folder and atomic file writes: every file appears whole or not at all.
+/// Atomic file writes: every file appears whole or not at all. (A chapter's output folder as
+/// a whole: io/run_folder.hpp.)
 
 #include <filesystem>
 #include <stdexcept>
@@ -14,8 +15,9 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Creates `dir` (and its parents) and checks that files can be written in it.
-/// Throws IoError naming the folder otherwise.
+/// Creates `dir` (and its parents) and checks that files can be written in it, for tools that
+/// write into a folder of their own (a chapter's run uses RunFolder instead). Throws IoError
+/// naming the folder otherwise.
 void prepare_output_dir(const std::filesystem::path& dir);
 
 /// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see

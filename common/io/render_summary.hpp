@@ -1,6 +1,6 @@
 #pragma once
 /// The summary.json entries every rendering chapter shares: what was rendered (scene and
-/// image size) and what it cost (rays, time, speed, non-finite samples).
+/// image size), what it cost (rays, non-finite samples) and, for timings.json, how long it took.
 
 #include "io/cli.hpp"
 #include "io/summary.hpp"
@@ -16,12 +16,16 @@ inline void add_render_setup(Json& summary, const SceneOptions& scene, const Ima
   summary["height"] = image.height;
 }
 
-/// "rays", "seconds", "rays_per_second", "non_finite_samples".
+/// "rays", "non_finite_samples" (summary.json).
 inline void add_render_totals(Json& summary, const RenderTotals& totals) {
   summary["rays"] = totals.rays;
-  summary["seconds"] = totals.seconds;
-  summary["rays_per_second"] = totals.rays_per_second();
   summary["non_finite_samples"] = totals.non_finite_samples;
+}
+
+/// "seconds", "rays_per_second" (timings.json).
+inline void add_render_timings(Json& timings, const RenderTotals& totals) {
+  timings["seconds"] = totals.seconds;
+  timings["rays_per_second"] = totals.rays_per_second();
 }
 
 }  // namespace mcrt

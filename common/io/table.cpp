@@ -98,11 +98,21 @@ std::string Table::csv() const {
   return text;
 }
 
+bool is_timing_column(std::string_view name) {
+  const auto ends_with = [&](std::string_view end) {
+    return name.size() >= end.size() && name.substr(name.size() - end.size()) == end;
+  };
+  return name == "seconds" || ends_with("_seconds") ||
+         name.find("per_second") != std::string_view::npos ||
+         name.find("efficiency") != std::string_view::npos;
+}
+
 nlohmann::ordered_json Table::json() const {
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (const std::vector<Cell>& row : rows_) {
     nlohmann::ordered_json object = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < row.size(); ++i) object[columns_[i].name] = row[i].json();
+    for (std::size_t i = 0; i < row.size(); ++i)
+      if (!is_timing_column(columns_[i].name)) object[columns_[i].name] = row[i].json();
     array.push_back(std::move(object));
   }
   return array;

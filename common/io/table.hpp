@@ -69,6 +69,10 @@ class Cell {
   std::variant<std::monostate, std::int64_t, std::uint64_t, double, std::string> value_;
 };
 
+/// Whether a column holds timings, which differ from run to run: "seconds", "*_seconds",
+/// "*per_second*" and "*efficiency*" (a rate per second of work).
+bool is_timing_column(std::string_view name);
+
 class Table {
  public:
   explicit Table(std::vector<Column> columns);
@@ -87,7 +91,8 @@ class Table {
 
   /// The CSV text: a header row of the names, then the rows.
   std::string csv() const;
-  /// An array with one object per row, keys in column order.
+  /// An array with one object per row, keys in column order, timing columns left out (they
+  /// stay in the CSV): summary.json is the same whatever the machine or --threads.
   nlohmann::ordered_json json() const;
   /// The rows aligned under their names, reals to 4 significant digits; `only` picks and
   /// orders columns (all of them when empty); `indent` spaces start every line.

@@ -33,7 +33,9 @@ TEST(Ch01Test, RendersTheCornellBoxAndWritesItsOutputs) {
   EXPECT_LE(summary["rays"].get<int>(), 2 * samples);
   EXPECT_EQ(summary["non_finite_samples"], 0);
   EXPECT_EQ(summary["flags"]["width"], "32");
-  EXPECT_EQ(file_count(dir), 3);  // image.png, image.pfm, summary.json: no temporaries left
+  EXPECT_GT(read_json(dir / "timings.json")["rays_per_second"].get<double>(), 0.0);
+  // image.png, image.pfm, summary.json, timings.json: no temporaries left
+  EXPECT_EQ(file_count(dir), 4);
 }
 
 TEST(Ch01Test, PrintsASummaryAndHelp) {
@@ -53,6 +55,8 @@ TEST(Ch01Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   const std::string flags = "--scene cornell-spheres --width 40 --height 30 --spp 3 --seed 9 --quiet";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  // summary.json holds no timing, thread count or --out: the same file whatever --threads.
+  EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   EXPECT_EQ(read_text(one / "image.pfm"), read_text(two / "image.pfm"));
   EXPECT_EQ(read_text(one / "image.png"), read_text(two / "image.png"));
   const auto other = fresh_dir("ch01_seed10");

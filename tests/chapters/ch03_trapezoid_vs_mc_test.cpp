@@ -107,7 +107,7 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   EXPECT_EQ(summary["flags"]["max-evaluations"], "3000");
   EXPECT_GT(summary["evaluations"].get<double>(), 0.0);
 
-  int expected_files = 3;
+  int expected_files = 4;  // errors.csv, slopes.csv, summary.json, timings.json
   for (const char* plot : {"smooth_1d", "discontinuous_1d", "disk_2d", "slopes_vs_k"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".gp"))) << plot;
     ++expected_files;
@@ -141,6 +141,8 @@ TEST(Ch03Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   const std::string flags = k_tiny + " --seed 5";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  // summary.json holds no timing, thread count or --out: the same file whatever --threads.
+  EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   EXPECT_EQ(read_text(one / "errors.csv"), read_text(two / "errors.csv"));
   EXPECT_EQ(read_text(one / "slopes.csv"), read_text(two / "slopes.csv"));
   const auto other = fresh_dir("ch03_seed6");

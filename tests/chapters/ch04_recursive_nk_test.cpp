@@ -134,6 +134,8 @@ TEST(Ch04Test, SameSeedSameOutputsWhateverTheThreadCount) {
   const std::string flags = k_tiny + " --seed 12";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  // summary.json holds no timing, thread count or --out: the same file whatever --threads.
+  EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   const std::vector<std::string> rays_timings{"seconds", "rays_per_second"};
   EXPECT_EQ(CsvFile(one / "rays.csv").without(rays_timings),
             CsvFile(two / "rays.csv").without(rays_timings));

@@ -93,6 +93,8 @@ TEST(Ch07Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
       "--width 16 --height 12 --spp 2 --depth 4 --reference-spp 4 --seed 5 --quiet";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
+  // summary.json holds no timing, thread count or --out: the same file whatever --threads.
+  EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   for (const char* file : {"uniform.pfm", "cosine.pfm", "cosine_equal_time.pfm", "reference.pfm",
                            "uniform.png", "noise_strip.png"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;

@@ -1,0 +1,97 @@
+#include "io/interrupt.hpp"
+
+#include <algorithm>
+#include <csignal>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "io/run_folder.hpp"
+
+namespace mcrt {
+
+namespace {
+
+// What an interruption cleans up, guarded by one lock (recursive: a spawn under
+// without_interruption registers its child with the lock held).
+struct Cleanup {
+  std::recursive_mutex mutex;
+  RunFolder* folder = nullptr;
+  std::vector<pid_t> children;
+};
+
+Cleanup& cleanup() {
+  static Cleanup state;  // never destroyed before the process ends: the thread may use it
+  return state;
+}
+
+sigset_t interrupt_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
+}
+
+// The waiting thread: on SIGINT or SIGTERM, stop the children, discard the staging folder,
+// say so in one line and exit at once (no destructors: other threads are still running).
+[[noreturn]] void wait_for_interrupt(std::string program) {
+  const sigset_t set = interrupt_signals();
+  int signal = 0;
+  while (::sigwait(&set, &signal) != 0) {
+  }
+  Cleanup& state = cleanup();
+  state.mutex.lock();  // held until _exit: nothing else may start a child or a swap
+  for (const pid_t child : state.children) {
+    ::kill(child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+  }
+  std::string where = "nothing was written";
+  if (state.folder) {
+    where = fmt::format("nothing written to '{}'", state.folder->out().string());
+    state.folder->discard();
+  }
+  const std::string line = fmt::format("{}: interrupted by {}; {}\n", program,
+                                       signal == SIGINT ? "SIGINT" : "SIGTERM", where);
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
+  ::_exit(128 + signal);
+}
+
+}  // namespace
+
+void watch_interrupts(const std::string& program) {
+  static std::once_flag once;
+  std::call_once(once, [&] {
+    const sigset_t set = interrupt_signals();
+    ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+    std::thread(wait_for_interrupt, program).detach();
+  });
+}
+
+void without_interruption(const std::function<void()>& action) {
+  const std::lock_guard lock(cleanup().mutex);
+  action();
+}
+
+void discard_on_interrupt(RunFolder* folder) {
+  const std::lock_guard lock(cleanup().mutex);
+  cleanup().folder = folder;
+}
+
+void stop_on_interrupt(pid_t child) {
+  const std::lock_guard lock(cleanup().mutex);
+  cleanup().children.push_back(child);
+}
+
+void forget_child(pid_t child) {
+  const std::lock_guard lock(cleanup().mutex);
+  auto& children = cleanup().children;
+  children.erase(std::remove(children.begin(), children.end(), child), children.end());
+}
+
+}  // namespace mcrt

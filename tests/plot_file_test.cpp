@@ -1,0 +1,61 @@
+// Plot images are accepted only when whole (common/io/plot.hpp image_file_problem): a PNG
+// needs its signature and a final IEND chunk, an SVG its closing </svg>.
+
+#include "io/plot.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "io/image_file.hpp"
+#include "render/image.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path file_with(const std::string& name, const std::string& bytes) {
+  const fs::path dir = fs::temp_directory_path() / ("mcrt_plot_file_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / name, std::ios::binary) << bytes;
+  return dir / name;
+}
+
+TEST(PlotFileTest, AWholePngIsAcceptedAndATruncatedOneRejected) {
+  const std::string png = mcrt::encode_png(mcrt::Image(4, 3));
+  EXPECT_EQ(mcrt::image_file_problem(file_with("whole.png", png)), "");
+  const std::string truncated = mcrt::image_file_problem(file_with("cut.png", png.substr(0, png.size() - 5)));
+  EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
+  EXPECT_NE(mcrt::image_file_problem(file_with("empty.png", "")), "");
+  EXPECT_NE(mcrt::image_file_problem(file_with("text.png", "<svg></svg>")), "");
+}
+
+TEST(PlotFileTest, AWholeSvgIsAcceptedAndATruncatedOneRejected) {
+  const std::string svg = "<?xml version=\"1.0\"?>\n<svg>\n<g></g>\n</svg>\n\n";
+  EXPECT_EQ(mcrt::image_file_problem(file_with("whole.svg", svg)), "");
+  const std::string truncated = mcrt::image_file_problem(file_with("cut.svg", svg.substr(0, 20)));
+  EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
+  EXPECT_NE(mcrt::image_file_problem(file_with("empty.svg", "")), "");
+}
+
+TEST(PlotFileTest, AMissingFileIsRejected) {
+  EXPECT_NE(mcrt::image_file_problem("/nonexistent/mcrt/plot.png"), "");
+}
+
+TEST(PlotFileTest, GnuplotDrawsInAFolderWhateverItsName) {
+  if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const fs::path dir = fs::temp_directory_path() /
+                       ("mcrt_plot_file_test_" + std::to_string(::getpid())) / "-it's a \"plot\" é";
+  fs::create_directories(dir);
+  std::ofstream(dir / "data.csv") << "x,y\n1,1\n2,4\n";
+  mcrt::write_plot(dir, {"square", "title", "x", "y", false, false, "",
+                         "plot 'data.csv' using \"x\":\"y\" with lines"});
+  EXPECT_EQ(mcrt::image_file_problem(dir / "square.png"), "");
+  EXPECT_EQ(mcrt::image_file_problem(dir / "square.svg"), "");
+}
+
+}  // namespace
