@@ -37,16 +37,16 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
               "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
               " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
   Plot radiance{"mean_radiance_vs_depth",
-              "Mean radiance against depth: the cut at k drops the light of longer paths",
-              "depth k", "mean radiance of the image", false, false,
-              per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
-                                  "set offsets 0, 0, graph 0.1, 0\n", limit),
-              fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
-                          "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
-                          "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
-                          "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
-                          "'limit (N = 1, k = {}, {} spp)'",
-                          of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)};
+                "Mean radiance against depth: the cut at k drops the light of longer paths",
+                "depth k", "mean radiance of the image", false, false,
+                per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
+                                    "set offsets 0, 0, graph 0.1, 0\n", limit),
+                fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
+                            "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
+                            "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
+                            "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
+                            "'limit (N = 1, k = {}, {} spp)'",
+                            of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)};
   radiance.y_values = radiances;
   write_plot(out, radiance);
   Plot equal{"equal_cost",

@@ -29,17 +29,17 @@ struct PlotSetup {
 inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s,
                             const Table& bias) {
   Plot plot{"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
-                      "k loses nothing",
-              "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
-              fmt::format("set key bottom right\nset xrange [-0.5:{}]\n{}", s.depth + 0.5,
-                          s.depth <= 20 ? "set xtics 1\n" : ""),
-              "plot 0 with lines lc 'gray' notitle, "
-              "'bias.csv' using \"k\":\"cut_bias_theory\" with lines dt 2 lw 2 lc 'black' "
-              "title 'depth cut, closed form -Le a^{k+1}/(1-a)', "
-              "'' using \"k\":\"cut_bias\":\"cut_ci\" with yerrorbars pt 7 lc 1 "
-              "title 'depth cut at k (99.9% interval)', "
-              "'' using (column(\"k\") + 0.15):\"roulette_bias\":\"roulette_ci\" with yerrorbars "
-              "pt 5 lc 2 title 'roulette after k bounces (99.9% interval)'"};
+                    "k loses nothing",
+            "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
+            fmt::format("set key bottom right\nset xrange [-0.5:{}]\n{}", s.depth + 0.5,
+                        s.depth <= 20 ? "set xtics 1\n" : ""),
+            "plot 0 with lines lc 'gray' notitle, "
+            "'bias.csv' using \"k\":\"cut_bias_theory\" with lines dt 2 lw 2 lc 'black' "
+            "title 'depth cut, closed form -Le a^{k+1}/(1-a)', "
+            "'' using \"k\":\"cut_bias\":\"cut_ci\" with yerrorbars pt 7 lc 1 "
+            "title 'depth cut at k (99.9% interval)', "
+            "'' using (column(\"k\") + 0.15):\"roulette_bias\":\"roulette_ci\" with yerrorbars "
+            "pt 5 lc 2 title 'roulette after k bounces (99.9% interval)'"};
   plot.y_values = {0.0};  // all of them 0 without light: a range around 0, not an empty one
   for (const char* column : {"cut_bias", "cut_bias_theory", "roulette_bias"})
     for (double y : bias.numbers(column)) plot.y_values.push_back(y);

@@ -30,7 +30,8 @@ inline int rows_with_zero_in_ci(const Table& bias) {
 }
 
 // summary.json: the setup, the totals, the furnace's closed forms beside the measured, every
-// table; timings.json: the times and the q they find most efficient. `r` holds the tables (bias, efficiency, lengths, renders), fixed_paths and total.
+// table; timings.json: the times and the q they find most efficient. `r` holds the tables
+// (bias, efficiency, lengths, renders), fixed_paths and total.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const auto& r) {
   const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
@@ -93,7 +94,8 @@ inline void print_tables(const Chapter& chapter, const auto& o, const auto& r) {
   fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
              r.renders.console());
   fmt::print("wrote {}/{{bias,efficiency,path_length,renders}}.csv and plots, "
-             "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n", o.common.out.string());
+             "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n",
+             o.common.out.string());
 }
 
 }  // namespace mcrt

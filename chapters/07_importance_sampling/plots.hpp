@@ -34,15 +34,15 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
     return fmt::format("(column(\"{0}\") > floor ? column(\"{0}\") : floor)", column);
   };
   Plot plot{"variance_vs_m",
-              fmt::format("Variance of one sample, per pixel, for each pdf ({} spp x 2 renders)",
-                          spp),
-              "pdf of the bounce direction", "variance of one sample", false, true, settings,
-              fmt::format("plot 'variance_vs_m.csv' using 0:{}:xticlabels(stringcolumn(\"pdf\")) "
-                          "with linespoints pt 7 ps 1.5 lw 2 title 'furnace, measured', "
-                          "'' using 0:\"furnace_variance_theory\" with points pt 4 ps 2.5 lw 2 "
-                          "lc 'black' title 'furnace, closed form', "
-                          "'' using 0:{} with linespoints pt 5 ps 1.5 lw 2 title '{}, measured'",
-                          clamp("furnace_variance"), clamp("scene_variance"), scene)};
+            fmt::format("Variance of one sample, per pixel, for each pdf ({} spp x 2 renders)",
+                        spp),
+            "pdf of the bounce direction", "variance of one sample", false, true, settings,
+            fmt::format("plot 'variance_vs_m.csv' using 0:{}:xticlabels(stringcolumn(\"pdf\")) "
+                        "with linespoints pt 7 ps 1.5 lw 2 title 'furnace, measured', "
+                        "'' using 0:\"furnace_variance_theory\" with points pt 4 ps 2.5 lw 2 "
+                        "lc 'black' title 'furnace, closed form', "
+                        "'' using 0:{} with linespoints pt 5 ps 1.5 lw 2 title '{}, measured'",
+                        clamp("furnace_variance"), clamp("scene_variance"), scene)};
   // Without light every variance is 0: all at the floor, an axis of one value.
   for (const char* column : {"furnace_variance", "furnace_variance_theory", "scene_variance"})
     for (double y : variances.numbers(column)) plot.y_values.push_back(std::max(y, 1e-6));
