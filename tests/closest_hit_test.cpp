@@ -22,10 +22,11 @@ std::optional<Hit> plain_closest_hit(const Scene& scene, const Ray& ray, Interva
       range.max = *t;
       hit = hit_at(s, ray, *t);
     }
-  for (const Quad& q : scene.quads())
-    if (const auto t = intersect_distance(q, ray, range)) {
+  for (std::size_t i = 0; i < scene.quads().size(); ++i)
+    if (const auto t = intersect_distance(scene.quads()[i], ray, range)) {
       range.max = *t;
-      hit = hit_at(q, ray, *t);
+      hit = hit_at(scene.quads()[i], ray, *t);
+      hit->material = scene.quad_face_material(i, ray.direction);  // a one-sided lamp's back
     }
   return hit;
 }

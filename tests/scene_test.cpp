@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/rng.hpp"
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
@@ -86,13 +88,67 @@ TEST(SceneTest, FurnaceEnclosesTheCamera) {
   }
 }
 
-TEST(SceneTest, PointLightCarriesTheAreaLightsPower) {
-  // I = Le A / 4 (power pi Le A of a one-sided area light, spread over 4 pi steradians).
+TEST(SceneTest, PointLightIsTheAreaLightsFarField) {
+  // I(theta) = Le A cos(theta) about the lamp's normal (down), 0 above it.
   const Scene box = make_cornell_box();
-  EXPECT_NEAR(box.point_light.intensity.r, 15.0 * 130.0 * 105.0 / 4.0, 1e-9);
+  const Color down = box.point_light.intensity_towards(Vec3(0, -1, 0));
+  EXPECT_NEAR(down.r, 15.0 * 130.0 * 105.0, 1e-9);
+  const Vec3 slanted = glm::normalize(Vec3(1, -1, 0));
+  EXPECT_NEAR(box.point_light.intensity_towards(slanted).r, 15.0 * 130.0 * 105.0 / std::sqrt(2.0),
+              1e-6);
+  EXPECT_EQ(box.point_light.intensity_towards(Vec3(0, 1, 0)), Color(0.0));
   const Scene spheres = make_cornell_spheres();
-  EXPECT_NEAR(spheres.point_light.intensity.r, 12.0 * k_two_pi * 600.0 * 0.27 / 4.0, 1e-9);
+  EXPECT_NEAR(spheres.point_light.intensity_towards(Vec3(0, -1, 0)).r,
+              12.0 * k_two_pi * 600.0 * 0.27, 1e-9);
   EXPECT_LT(spheres.point_light.position.y, 81.6 - 0.27);  // inside the room, under the cap
+  // With no normal the light is isotropic.
+  const PointLight isotropic{Vec3(0.0), Color(2.0), Vec3(0.0)};
+  EXPECT_EQ(isotropic.intensity_towards(Vec3(0, 1, 0)), Color(2.0));
+}
+
+TEST(SceneTest, TheLampEmitsDownwardsOnly) {
+  const Scene scene = make_cornell_box();
+  // From below, the lamp; from the gap between lamp and ceiling, looking down, its black back.
+  const auto up = scene.closest_hit({{278, 1, 278}, {0, 1, 0}});
+  ASSERT_TRUE(up);
+  EXPECT_EQ(scene.material(*up).emission, Color(15.0));
+  const auto down = scene.closest_hit({{278, 554.5, 278}, {0, -1, 0}});
+  ASSERT_TRUE(down);
+  EXPECT_NEAR(down->point.y, 554.0, 1e-9);
+  EXPECT_EQ(scene.material(*down).emission, Color(0.0));
+  EXPECT_EQ(scene.material(*down).albedo, Color(0.0));
+}
+
+TEST(SceneTest, LightScaleKeepsThePowerAndTheCentre) {
+  for (double s : {0.1, 1.0, 3.0}) {
+    SceneParams params;
+    params.light_scale = s;
+    const Scene scene = make_scene("cornell", params);
+    ASSERT_EQ(scene.emitters().size(), 1u);
+    const Emitter& e = scene.emitters()[0];
+    EXPECT_EQ(e.kind, Emitter::quad);
+    EXPECT_TRUE(e.one_sided);
+    const Quad& lamp = scene.quads()[e.index];
+    const double le = scene.materials[lamp.material()].emission.r;
+    EXPECT_NEAR(le * lamp.area(), 15.0 * 130.0 * 105.0, 1e-6) << s;  // power / pi
+    EXPECT_NEAR(glm::length(lamp.center() - Vec3(278, 554, 279.5)), 0.0, 1e-9) << s;
+    EXPECT_EQ(lamp.normal(), Vec3(0, -1, 0));
+  }
+  SceneParams too_big;
+  too_big.light_scale = 4.5;
+  EXPECT_THROW(make_scene("cornell", too_big), std::invalid_argument);
+}
+
+TEST(SceneTest, EverySceneKnowsItsEmitters) {
+  const Scene spheres = make_cornell_spheres();
+  ASSERT_EQ(spheres.emitters().size(), 1u);
+  EXPECT_EQ(spheres.emitters()[0].kind, Emitter::sphere);
+  EXPECT_EQ(spheres.emitters()[0].index, 8u);
+  EXPECT_EQ(spheres.emitters()[0].cap_height, 0.27);
+  const Scene furnace = make_furnace(0.5, 1.0);
+  ASSERT_EQ(furnace.emitters().size(), 1u);
+  EXPECT_EQ(furnace.emitters()[0].cap_height, 2.0);  // the whole unit sphere
+  EXPECT_FALSE(furnace.emitters()[0].one_sided);
 }
 
 }  // namespace

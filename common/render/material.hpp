@@ -1,6 +1,7 @@
 #pragma once
 /// Diffuse materials: the lecture's only kind. f_r = albedo / pi, and an emitted radiance Le
-/// that is the same in every direction and on both sides of the surface.
+/// that is the same in every direction. A material is one side of a surface: a quad may have
+/// another on its back (Scene::add_quad), which is how the Cornell lamp emits downwards only.
 
 #include "core/math.hpp"
 

@@ -2,6 +2,8 @@
 /// A scene: plain arrays of primitives and materials, closest-hit and any-hit queries, and the
 /// built-in scenes every chapter can render by name.
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,27 +18,72 @@
 
 namespace mcrt {
 
-/// An isotropic point light of radiant intensity I (W/sr): plain ray tracing's light.
+/// Plain ray tracing's light: a point of radiant intensity I (W/sr). With a normal n it is the
+/// far field of a flat one-sided area light (radiance Le, area A) facing n, seen from far away:
+/// I(theta) = Le A cos(theta) towards directions at angle theta to n, 0 behind it. With no
+/// normal (n = 0) it is isotropic: I in every direction.
 struct PointLight {
   Vec3 position{0.0};
-  Color intensity{0.0};
+  Color intensity{0.0};  ///< I along the normal (Le A), or in every direction if normal is 0
+  Vec3 normal{0.0};      ///< the side the light faces; 0 for an isotropic light
+
+  /// I(theta) towards the unit `direction` (from the light outwards).
+  Color intensity_towards(const Vec3& direction) const {
+    if (normal == Vec3(0.0)) return intensity;
+    return intensity * std::max(0.0, glm::dot(normal, direction));
+  }
+};
+
+/// An emitter the light sampler can aim at: an emissive quad (the whole of it), or the part of an
+/// emissive sphere that can be seen, a cap {p : (p - c).axis >= R - height} around the unit
+/// `axis` (height 2R: the whole sphere).
+struct Emitter {
+  enum Kind { quad, sphere } kind = quad;
+  std::size_t index = 0;  ///< into Scene::quads() or Scene::spheres()
+  Vec3 cap_axis{0, -1, 0};
+  double cap_height = 0.0;
+  bool one_sided = false;  ///< emits only on its front (a quad's normal side)
 };
 
 /// Primitives are added through add_sphere / add_quad only, so the structure-of-arrays copy
-/// of the spheres that closest_hit reads stays in step with the list.
+/// of the spheres that closest_hit reads stays in step with the list, and every emissive
+/// primitive lands in emitters().
+///
+/// One-sided lights: a quad may have a back material, the material of its side against its
+/// normal. closest_hit gives a hit from behind the back material, so a lamp whose back is black
+/// emits towards its normal only, in every estimator, without any of them asking which side
+/// they hit.
 struct Scene {
   std::string name;
   std::vector<Material> materials;
   CameraSpec camera;
-  PointLight point_light;  ///< the area light collapsed to its centre, with the same power
+  PointLight point_light;  ///< the area light seen from afar: its far field Le A cos(theta)
 
   std::uint32_t add_material(const Material& m);
   void add_sphere(const Sphere& s);
+  /// A sphere light of which only the cap of `cap_height` around `cap_axis` can be seen.
+  void add_sphere_light(const Sphere& s, const Vec3& cap_axis, double cap_height);
   void add_quad(const Quad& q);
+  /// A quad whose side against its normal has `back_material` (for a one-sided lamp: black).
+  void add_quad(const Quad& q, std::uint32_t back_material);
 
   const std::vector<Sphere>& spheres() const { return spheres_; }
   const std::vector<Quad>& quads() const { return quads_; }
+  const std::vector<Emitter>& emitters() const { return emitters_; }
   const Material& material(const Hit& hit) const { return materials[hit.material]; }
+  /// The material of quad i's side that a ray of direction d meets.
+  std::uint32_t quad_face_material(std::size_t i, const Vec3& d) const {
+    return glm::dot(quads_[i].normal(), d) > 0.0 ? quad_back_materials_[i]
+                                                 : quads_[i].material();
+  }
+  /// Le of emitter e's surface seen from direction `towards` (unit, from the surface to the
+  /// viewer) at a point of outward normal n: 0 behind a one-sided emitter.
+  Color emitted(const Emitter& e, const Vec3& n, const Vec3& towards) const {
+    if (e.one_sided && glm::dot(n, towards) <= 0.0) return Color(0.0);
+    return materials[e.kind == Emitter::quad ? quads_[e.index].material()
+                                             : spheres_[e.index].material]
+        .emission;
+  }
 
   /// The closest surface along the ray within `range`. One call is one traced ray.
   std::optional<Hit> closest_hit(const Ray& ray, Interval range = {}) const;
@@ -47,6 +94,8 @@ struct Scene {
  private:
   std::vector<Sphere> spheres_;
   std::vector<Quad> quads_;
+  std::vector<std::uint32_t> quad_back_materials_;
+  std::vector<Emitter> emitters_;
   SphereSet sphere_set_;  ///< spheres_ as a structure of arrays
 };
 
@@ -54,7 +103,14 @@ struct Scene {
 struct SceneParams {
   double furnace_albedo = 0.5;
   double furnace_emission = 1.0;
+  /// cornell: the lamp's sides times s about its centre, its radiance over s^2 (constant
+  /// power): 0.1 a tiny bright lamp, 3 a large dim one. At most k_max_light_scale.
+  double light_scale = 1.0;
 };
+
+/// The largest --light-scale that keeps the lamp (130 x 105 at scale 1) inside the 555-unit
+/// ceiling.
+inline constexpr double k_max_light_scale = 4.0;
 
 /// The built-in scenes: "cornell", "cornell-spheres", "furnace".
 const std::vector<std::string>& scene_names();
@@ -62,13 +118,14 @@ const std::vector<std::string>& scene_names();
 /// Builds the named scene; the name must be one of scene_names().
 Scene make_scene(std::string_view name, const SceneParams& params = {});
 
-/// A scene chosen by name, as the flags --scene, --albedo and --emission give it.
+/// A scene chosen by name, as the flags --scene, --albedo, --emission (and chapter 08's
+/// --light-scale) give it.
 struct SceneOptions {
   std::string scene = "cornell";
   SceneParams params;
 };
 
-Scene make_cornell_box();
+Scene make_cornell_box(double light_scale = 1.0);
 Scene make_cornell_spheres();
 Scene make_furnace(double albedo, double emission);
 

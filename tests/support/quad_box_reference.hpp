@@ -82,8 +82,9 @@ inline void add_reference_box(ReferenceQuadBox& box, Vec3 size, double degrees, 
 /// one unit below the ceiling, radiance 15; a tall box 165 x 330 x 165 turned 15 degrees at
 /// (265, 0, 295) and a short one 165 x 165 x 165 turned -18 degrees at (130, 0, 65) (as in
 /// "Ray Tracing: The Next Week"); the eye at (278, 278, -800) looking along +z, 40 degrees of
-/// vertical field of view. The lamp is black (albedo 0) and, like every diffuse emitter of the
-/// project (render/material.hpp), emits on both sides.
+/// vertical field of view. The lamp is black (albedo 0) and emits on its lower side only (the
+/// side its triangles' normals e1 x e2 face: reference_radiance counts Le when a ray meets a
+/// triangle against that normal).
 inline ReferenceQuadBox make_reference_quad_box() {
   ReferenceQuadBox box;
   const double l = 555.0;
@@ -169,7 +170,7 @@ inline Color reference_radiance(const ReferenceQuadBox& box, Vec3 o, Vec3 d, Rng
     const std::optional<ReferenceHit> hit = reference_closest_hit(box, o, d);
     if (!hit) break;
     const ReferenceTriangle& tri = box.triangles[hit->triangle];
-    sum += weight * tri.emission;
+    if (glm::dot(glm::cross(tri.e1, tri.e2), d) < 0.0) sum += weight * tri.emission;  // one-sided
     const double q = std::max({tri.albedo.x, tri.albedo.y, tri.albedo.z});
     if (rng.uniform() >= q) break;  // q = 0 (the lamp) always ends: its albedo is 0
     weight *= tri.albedo / q;
@@ -321,16 +322,21 @@ double direct_light_p_value(const Scene& room, const Scene& whole,
   return sidak_p_value(p_values);
 }
 
-/// `cornell` without its two boxes: its walls (the quads as large as a wall) and its lamp.
+/// `cornell` without its two boxes: its walls (the quads as large as a wall) and its one-sided
+/// lamp.
 inline Scene cornell_room_without_boxes() {
   const Scene whole = make_cornell_box();
   Scene room;
   room.materials = whole.materials;
   room.camera = whole.camera;
   const double wall_area = 555.0 * 555.0;
-  for (const Quad& q : whole.quads())
-    if (q.area() >= 0.999 * wall_area || whole.materials[q.material()].is_emitter())
+  for (std::size_t i = 0; i < whole.quads().size(); ++i) {
+    const Quad& q = whole.quads()[i];
+    if (whole.materials[q.material()].is_emitter())
+      room.add_quad(q, whole.quad_face_material(i, q.normal()));  // with its black back
+    else if (q.area() >= 0.999 * wall_area)
       room.add_quad(q);
+  }
   return room;
 }
 
