@@ -1,0 +1,165 @@
+// Chapter 08: next-event estimation and MIS, and the shoot-out of every estimator.
+//
+//   for each sample:
+//     shoot a ray into the scene; add the emitted light of its first hit
+//     repeat until Russian roulette stops the path (or it has bounced --depth times):
+//       pick a point y on a light, probability p_A(y) per unit area
+//       trace a shadow ray to y; if it gets there add
+//         weight * f_r * Le * cos(theta_x) * cos(theta_y) / (r^2 * p_A(y))     (NEE)
+//       pick a new direction wi with pdf cos / pi, multiply the weight by f_r cos / pdf
+//       (MIS: the light sample and the new direction's hit on a light are both added, each
+//        weighted by w = p_s^2 / (p_light^2 + p_bsdf^2), and w_light + w_bsdf = 1)
+//     set the sample colour to the sum
+//   then, for every scene, every estimator, the same time budgets: error against a reference
+//
+// Aiming at the light turns the noise of a small bright lamp (which a bouncing path finds by
+// luck) into the noise of one shadow ray. For a large dim light the cosine already finds it,
+// and MIS keeps whichever of the two strategies suits each direction.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "io/cli.hpp"
+#include "io/image_file.hpp"
+#include "io/ray_limit.hpp"
+#include "io/reference_cache.hpp"
+#include "io/table.hpp"
+#include "render/mis.hpp"
+#include "render/next_event_estimation.hpp"
+#include "render/relative_error.hpp"
+#include "render/render.hpp"
+#include "render/render_totals.hpp"
+#include "render/scene.hpp"
+
+#include "estimators.hpp"
+#include "plots.hpp"
+#include "report.hpp"
+#include "shootout.hpp"
+
+using namespace mcrt;
+
+namespace {
+
+const Chapter k_chapter{"ch08_next_event_estimation",
+                        "Chapter 08: next-event estimation (a shadow ray to a point on a light "
+                        "at every bounce) and multiple importance sampling, then an equal-time "
+                        "shoot-out of every estimator of chapters 05-08 on the furnace, the "
+                        "Cornell box at light scales 0.1, 1 and 3, and the sphere Cornell box."};
+
+constexpr double k_max_rays = 1e11;          // about 1.4 hours at 2e7 rays per second
+constexpr double k_rays_per_sample = 32.0;   // a generous mean for NEE and MIS paths (2 per vertex)
+
+struct Options {
+  CommonOptions common;
+  SceneOptions scene;
+  ImageOptions image{160, 120};
+  int spp = 16;                            // samples per pixel of nee.pfm and mis.pfm
+  int depth = -1;                          // bounces after the first hit; -1: roulette only
+  int reference_spp = 1024;                // samples per pixel of every reference
+  std::filesystem::path reference_dir;     // default: --out's parent / reference
+  std::vector<double> budgets{0.125, 0.25, 0.5, 1.0};  // seconds of rendering, per estimator
+};
+
+ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
+  ReferenceSpec spec;
+  spec.scene = o.scene;
+  spec.scene.scene = scene;
+  spec.scene.params.light_scale = light_scale;
+  spec.width = o.image.width;
+  spec.height = o.image.height;
+  spec.spp = o.reference_spp;
+  spec.max_depth = o.depth;
+  spec.seed = o.common.seed;
+  spec.threads = o.common.threads;
+  spec.quiet = o.common.quiet;
+  return spec;
+}
+
+// The references (at most 5, one per scene of the shoot-out and the chosen one, if not cached)
+// and the two images at --spp; the shoot-out is bounded by time, not rays.
+RayWork predicted_work(const Options& o) {
+  const double references = 5.0 * reference_predicted_rays(reference_spec(o, "cornell", 1.0),
+                                                            k_rays_per_sample);
+  const double images = 2.0 * o.spp * o.image.width * o.image.height * k_rays_per_sample;
+  return {references + images, "(5 references x reference spp + 2 x spp) x pixels x 32 rays"};
+}
+
+// nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
+Table render_chosen_scene(const Options& o, const Reference& reference, RenderTotals& total) {
+  const Scene scene = make_scene(o.scene.scene, o.scene.params);
+  const Camera camera(scene.camera, o.image.width, o.image.height);
+  Table table({{"image", Column::text},
+               {"spp", Column::integer},
+               {"rays", Column::integer},
+               {"seconds", Column::real, 6},
+               {"rel_mse", Column::real, 6}});
+  for (const auto& [stem, kind] : {std::pair{"nee", EstimatorKind::nee},
+                                   std::pair{"mis", EstimatorKind::mis_power}}) {
+    const RenderResult r =
+        render(camera, {o.spp, 0, o.common.seed, o.common.threads, nullptr},
+               make_estimator(kind, scene, o.depth));
+    total.add(r);
+    write_png(o.common.dir / (std::string(stem) + ".png"), r.image);
+    write_pfm(o.common.dir / (std::string(stem) + ".pfm"), r.image);
+    table.add_row({stem, o.spp, r.rays, r.seconds, relative_mse(r.image, reference.image)});
+  }
+  return table;
+}
+
+void run(const CLI::App& app, const Options& o) {
+  check_image_size(o.image);
+  check_ray_limit(predicted_work(o), k_max_rays, "--spp, --reference-spp, --width, --height",
+                  o.common.threads, "lower one of them");
+  const std::filesystem::path reference_dir =
+      o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
+
+  const Reference reference = load_or_render_reference(
+      reference_dir, reference_spec(o, o.scene.scene, o.scene.params.light_scale));
+  RenderTotals total;
+  const Table images = render_chosen_scene(o, reference, total);
+
+  Shootout shootout;
+  const std::vector<ShootoutScene> scenes = shootout_scenes();
+  for (const ShootoutScene& s : scenes)
+    shoot_out_scene(s, load_or_render_reference(reference_dir,
+                                                reference_spec(o, s.scene, s.light_scale)),
+                    o, shootout);
+  total.seconds += shootout.total.seconds;
+  total.rays += shootout.total.rays;
+  total.non_finite_samples += shootout.total.non_finite_samples;
+
+  write_csv(o.common.dir / "images.csv", images);
+  write_csv(o.common.dir / "efficiency.csv", shootout.table);
+  for (std::size_t n = 0; n < scenes.size(); ++n) write_relmse_plot(o.common.dir, scenes[n], n);
+  write_contact_sheet(o.common.dir, scenes, shootout, o.budgets.back());
+  write_summary(k_chapter, app, o, images, shootout.table, reference.info, total);
+  if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  ChapterApp app(k_chapter, o.common);
+  add_render_options(app, o.scene, o.image);
+  add_number_option(app, "--light-scale", o.scene.params.light_scale,
+                    "cornell: the lamp's sides times this, its radiance over its square (the "
+                    "same power): 0.1 tiny and bright, 3 large and dim", 0.01, k_max_light_scale);
+  add_number_option(app, "--spp", o.spp, "Samples per pixel of nee.pfm and mis.pfm", 1, 1 << 16);
+  CLI::Option* depth = add_number_option(
+      app, "--depth", o.depth,
+      "Cut every path after this many bounces (default: no cut, Russian roulette only)", 0, 1000);
+  depth->default_str("none");
+  add_number_option(app, "--reference-spp", o.reference_spp,
+                    "Samples per pixel of each reference image (cached under --reference-dir)",
+                    2, 1 << 20);
+  app.add_option("--reference-dir", o.reference_dir,
+                 "Folder of the cached references (default: the reference folder beside --out)");
+  add_list_option(app, "--budgets", o.budgets,
+                  "Render times of the shoot-out, in seconds per estimator and scene (a list: "
+                  "0.125,0.25,0.5,1)", 0.001, 60.0);
+  return app.run(argc, argv, [&] { run(app, o); });
+}

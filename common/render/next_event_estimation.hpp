@@ -1,0 +1,114 @@
+#pragma once
+/// Next-event estimation (NEE): at every bounce, aim one shadow ray at a light.
+///
+/// The radiance leaving x_j splits into emitted, direct and indirect light:
+///
+///   L(x_j, wo) = Le(x_j) + Ld(x_j, wo) + integral of f_r L_indirect(x_j, wi) cos(theta_i) dwi,
+///
+/// with Ld estimated by a point on a light (render/light_sampling.hpp) and the indirect part by
+/// one cosine-weighted direction (f_r cos / p = rho). Along one path, beta_j the path weight
+/// (beta_0 = 1, beta_{j+1} = beta_j rho / q_j with Russian roulette as in chapter 06):
+///
+///   L ~ Le(x_0) + sum over vertices j of beta_j f_r Le(y_j) V cos(theta_x) / p_w(y_j).
+///
+/// Emission is counted exactly once: the camera ray's hit adds its Le (no light sample can
+/// reach the eye), and after that every emitter is reached by light sampling only; a
+/// BSDF-sampled ray that happens to hit a light adds nothing (its light is the next vertex's
+/// direct term, already counted by the shadow ray one vertex earlier).
+///
+/// Expectation: the light sample is unbiased for Ld wherever p_A > 0 on every visible light
+/// point, and the indirect part is chapter 07's cosine estimator, so E[L] is chapter 05's
+/// E[L] (for the same depth cut, or the whole series without one).
+///
+/// In the furnace (albedo a, emission Le everywhere, unit sphere) the whole sphere is the
+/// light. From a point x on its inside, every y on the sphere has cos(theta_x) = cos(theta_y)
+/// = r / 2 (chords of a sphere), so cos cos / r^2 = 1/4 and f_r Le cos cos / (r^2 p_A) =
+/// (a / pi) Le (1/4) 4 pi = a Le: the direct term is exact, every sample. With the cosine
+/// bounce (weight exactly a) and no roulette, each path returns exactly
+///   Le (1 + a + ... + a^k)   at depth k (furnace_radiance):   Var[L] = 0.
+/// With roulette the mean is Le / (1 - a) and the variance is roulette's alone.
+
+#include <optional>
+
+#include "core/rng.hpp"
+#include "geometry/hit.hpp"
+#include "render/light_sampling.hpp"
+#include "render/render.hpp"
+#include "render/russian_roulette.hpp"
+#include "render/scene.hpp"
+#include "sampling/frame.hpp"
+#include "sampling/hemisphere.hpp"
+
+namespace mcrt {
+
+/// How a path ends: by Russian roulette, and also at a depth cut if max_depth >= 0 (bounces
+/// after the camera ray's hit, as chapter 05's --depth).
+struct PathEnd {
+  Roulette roulette;
+  int max_depth = -1;  ///< < 0: no cut
+
+  bool cut_at(int bounce) const { return max_depth >= 0 && bounce >= max_depth; }
+};
+
+/// One path's NEE estimate of the radiance arriving along `ray`.
+inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& end, Rng& rng,
+                                   RayCount& count) {
+  Color radiance(0.0);
+  Color beta(1.0);  // path weight: product of f_r cos / (p q_j) = rho / q_j so far
+  for (int bounce = 0;; ++bounce) {
+    ++count.rays;
+    const std::optional<Hit> hit = scene.closest_hit(ray);
+    if (!hit) break;
+    const Material& material = scene.material(*hit);
+    if (bounce == 0) radiance += material.emission;  // Le seen by the eye: counted here only
+    if (end.cut_at(bounce)) break;
+    if (bounce >= end.roulette.min_depth) {
+      const double q = survival_probability(end.roulette, beta);
+      if (rng.uniform() >= q) break;
+      beta /= q;
+    }
+
+    // Direct light: f_r Le cos(theta_x) / p_w(wi), if the shadow ray reaches the light.
+    const DirectSample light = sample_direct_light(scene, *hit, rng, count);
+    if (light.contributes())
+      radiance += beta * material.brdf() * light.le * light.cos_x / light.pdf_light;
+
+    // Indirect light: one cosine-weighted direction, f_r cos / p = rho.
+    const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
+    if (!(local.z > 0.0)) break;  // u on the edge of [0,1)^2: density 0, probability 2^-32
+    beta *= material.albedo;
+    if (beta == Color(0.0)) break;
+    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+  }
+  return radiance;
+}
+
+/// The baseline NEE is measured against: BSDF (cosine) sampling alone with the same path end,
+/// Le added at every vertex as in chapters 05-07 (chapter 07's estimator with chapter 06's
+/// roulette). Its E[L] is NEE's.
+inline Color estimate_cosine_roulette_radiance(const Scene& scene, Ray ray, const PathEnd& end,
+                                               Rng& rng, RayCount& count) {
+  Color radiance(0.0);
+  Color beta(1.0);
+  for (int bounce = 0;; ++bounce) {
+    ++count.rays;
+    const std::optional<Hit> hit = scene.closest_hit(ray);
+    if (!hit) break;
+    const Material& material = scene.material(*hit);
+    radiance += beta * material.emission;
+    if (end.cut_at(bounce)) break;
+    if (bounce >= end.roulette.min_depth) {
+      const double q = survival_probability(end.roulette, beta);
+      if (rng.uniform() >= q) break;
+      beta /= q;
+    }
+    const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
+    if (!(local.z > 0.0)) break;
+    beta *= material.albedo;
+    if (beta == Color(0.0)) break;
+    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+  }
+  return radiance;
+}
+
+}  // namespace mcrt

@@ -1,0 +1,172 @@
+// Light sampling, next-event estimation and MIS (render/light_sampling.hpp,
+// render/next_event_estimation.hpp, render/mis.hpp): the samplers' geometry, the change of
+// measure, MIS weights that sum to 1 for every sample, the furnace's exact case, the one-sided
+// lamp, and that the checks' procedures (support/nee_procedures.hpp, quad_box_reference.hpp)
+// reject every known-wrong variant of tests/known_bugs/nee.hpp.
+// (The statistical checks themselves are in tests/checks/nee_checks.cpp.)
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "known_bugs/nee.hpp"
+#include "render/light_sampling.hpp"
+#include "render/mis.hpp"
+#include "render/next_event_estimation.hpp"
+#include "render/path_tracer.hpp"
+#include "render/scene.hpp"
+#include "sampling/light.hpp"
+#include "stats/check.hpp"
+#include "support/nee_procedures.hpp"
+#include "support/quad_box_reference.hpp"
+
+using namespace mcrt;
+
+namespace {
+
+constexpr double k_alpha = 1e-4;  // the checks' false-failure rate
+
+TEST(LightSamplingTest, QuadPointsLieOnTheQuadWithItsNormalAndPdf) {
+  const Quad q = mcrt::testing::cornell_lamp();
+  Rng rng(1, 0);
+  for (int i = 0; i < 1000; ++i) {
+    const LightPoint y = sample_quad(q.corner(), q.edge_u(), q.edge_v(), rng.uniform2());
+    const Vec3 p = y.point - q.corner();
+    EXPECT_NEAR(glm::dot(p, q.normal()), 0.0, 1e-9);
+    EXPECT_GE(q.coordinate_a(p), -1e-12);
+    EXPECT_LE(q.coordinate_a(p), 1.0 + 1e-12);
+    EXPECT_GE(q.coordinate_b(p), -1e-12);
+    EXPECT_LE(q.coordinate_b(p), 1.0 + 1e-12);
+    EXPECT_NEAR(glm::length(y.normal - q.normal()), 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(y.pdf_area, 1.0 / (130.0 * 105.0));
+  }
+}
+
+TEST(LightSamplingTest, CapPointsLieOnTheSphereInsideTheCap) {
+  const Vec3 c(50, 681.33, 81.6), axis(0, -1, 0);
+  Rng rng(2, 0);
+  for (int i = 0; i < 1000; ++i) {
+    const LightPoint y = sample_sphere_cap(c, 600.0, axis, 0.27, rng.uniform2());
+    EXPECT_NEAR(glm::length(y.point - c), 600.0, 1e-9);
+    EXPECT_GE(glm::dot(y.point - c, axis), 600.0 - 0.27 - 1e-9);
+    EXPECT_NEAR(glm::length(y.normal - (y.point - c) / 600.0), 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(y.pdf_area, 1.0 / (k_two_pi * 600.0 * 0.27));
+  }
+  // The whole unit sphere: pdf 1 / (4 pi).
+  EXPECT_DOUBLE_EQ(sphere_cap_pdf_area(1.0, 2.0), 0.25 * k_inv_pi);
+}
+
+TEST(LightSamplingTest, AreaAndSolidAngleConvertBothWays) {
+  // p_w = p_A r^2 / |cos|, and back.
+  EXPECT_DOUBLE_EQ(area_to_solid_angle_pdf(0.5, 2.0, 0.25), 0.5 * 4.0 / 0.25);
+  EXPECT_DOUBLE_EQ(area_to_solid_angle_pdf(0.5, 2.0, -0.25), 8.0);
+  EXPECT_DOUBLE_EQ(solid_angle_to_area_pdf(8.0, 2.0, 0.25), 0.5);
+  EXPECT_EQ(area_to_solid_angle_pdf(0.5, 2.0, 0.0), 0.0);  // edge-on: no solid angle
+}
+
+TEST(MisTest, WeightsSumToOneForEveryPair) {
+  Rng rng(3, 0);
+  for (MisHeuristic h : {MisHeuristic::balance, MisHeuristic::power})
+    for (int i = 0; i < 10000; ++i) {
+      const double a = std::exp(40.0 * rng.uniform() - 20.0), b = std::exp(40.0 * rng.uniform() - 20.0);
+      EXPECT_NEAR(mis_weight(h, a, b) + mis_weight(h, b, a), 1.0, 1e-12);
+      EXPECT_GE(mis_weight(h, a, b), 0.0);
+    }
+  EXPECT_EQ(mis_weight(MisHeuristic::balance, 0.0, 0.0), 0.0);
+  EXPECT_EQ(mis_weight(MisHeuristic::power, 2.0, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(mis_weight(MisHeuristic::balance, 1.0, 3.0), 0.25);
+  EXPECT_DOUBLE_EQ(mis_weight(MisHeuristic::power, 1.0, 3.0), 0.1);
+}
+
+// For light samples drawn from floor points of cornell: the light strategy's weight with the
+// pdfs of that direction, plus the BSDF strategy's weight of the same direction, is 1; and the
+// pdf light_pdf_towards gives a BSDF ray reaching the lamp is the one light sampling used.
+TEST(MisTest, WeightsOfBothStrategiesSumToOneForEverySampleInTheScene) {
+  const Scene scene = make_cornell_box();
+  Rng rng(4, 0);
+  int checked = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Hit hit;
+    hit.point = Vec3(50 + 450 * rng.uniform(), 0.0, 50 + 450 * rng.uniform());
+    hit.normal = Vec3(0, 1, 0);
+    RayCount count;
+    const DirectSample d = sample_direct_light(scene, hit, rng, count);
+    if (!d.contributes()) continue;
+    const double p_b = cosine_hemisphere_pdf(d.cos_x);
+    const Ray ray = spawn_ray(hit, d.wi);
+    const std::optional<Hit> lamp = scene.closest_hit(ray);
+    ASSERT_TRUE(lamp);
+    const double p_l = light_pdf_towards(scene, ray, *lamp);
+    EXPECT_NEAR(p_l / d.pdf_light, 1.0, 1e-6);
+    for (MisHeuristic h : {MisHeuristic::balance, MisHeuristic::power})
+      EXPECT_NEAR(mis_weight(h, d.pdf_light, p_b) + mis_weight(h, p_b, p_l), 1.0, 1e-6);
+    ++checked;
+  }
+  EXPECT_GT(checked, 500);  // fixed seed: 944 floor points see the lamp
+}
+
+// Furnace, depth k <= 3 (before roulette starts): every NEE path returns exactly
+// Le (1 + a + ... + a^k), the direct term a Le being exact (next_event_estimation.hpp).
+TEST(NeeTest, FurnaceIsExactEverySampleBeforeRoulette) {
+  const Scene furnace = make_furnace(0.5, 2.0);
+  Rng dirs(5, 0);
+  for (int k = 0; k <= 3; ++k)
+    for (int i = 0; i < 200; ++i) {
+      Rng rng(6, static_cast<std::uint64_t>(i));
+      RayCount count;
+      const Color l = estimate_nee_radiance(
+          furnace, {Vec3(0.0), sample_uniform_sphere(dirs.uniform2())}, {Roulette{}, k}, rng,
+          count);
+      // 1e-6: the shadow ray starts 1e-7 (1 + |x|) off the wall (spawn_ray), which moves
+      // cos cos / r^2 by about that much.
+      EXPECT_NEAR(l.r, furnace_radiance(0.5, 2.0, k), 1e-6) << "k = " << k;
+    }
+}
+
+TEST(NeeTest, TheOneSidedLampLightsNothingBehindIt) {
+  const auto nee = [](const Scene& s, const Ray& r, int depth, Rng& rng, RayCount& c) {
+    return estimate_nee_radiance(s, r, {Roulette{}, depth}, rng, c);
+  };
+  const auto mis = [](const Scene& s, const Ray& r, int depth, Rng& rng, RayCount& c) {
+    return estimate_mis_radiance(s, r, {Roulette{}, depth}, MisHeuristic::power, rng, c);
+  };
+  EXPECT_EQ(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed, nee), 1.0);
+  EXPECT_EQ(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed, mis), 1.0);
+}
+
+// The checks' direct-light procedure (nee_checks.cpp: four floor points, 20000 paths each).
+double direct_light_p(const auto& estimate) {
+  const Scene whole = make_cornell_box();
+  const Scene room = mcrt::testing::cornell_room_without_boxes();
+  return mcrt::testing::direct_light_p_value(room, whole, mcrt::testing::direct_light_points(), 20000,
+                                       mcrt::testing::k_suite_seed, estimate);
+}
+
+TEST(NeeKnownBugsTest, JacobianLeftOutIsRejected) {
+  EXPECT_LT(direct_light_p(mcrt::testing::nee_without_jacobian), k_alpha);
+}
+TEST(NeeKnownBugsTest, EmissionCountedTwiceIsRejected) {
+  EXPECT_LT(direct_light_p(mcrt::testing::nee_emission_twice), k_alpha);
+}
+TEST(NeeKnownBugsTest, ShadowRayBlockedByTheLightIsRejected) {
+  EXPECT_LT(direct_light_p(mcrt::testing::nee_shadow_ray_hits_light), k_alpha);
+}
+TEST(NeeKnownBugsTest, MisWeightsNotSummingToOneAreRejected) {
+  EXPECT_LT(direct_light_p(mcrt::testing::mis_weights_not_summing_to_one), k_alpha);
+}
+TEST(NeeKnownBugsTest, OneSidedLightSampledFromBehindIsRejected) {
+  EXPECT_LT(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed,
+                                          mcrt::testing::nee_light_from_behind),
+            k_alpha);
+}
+TEST(NeeKnownBugsTest, WrongAreaPdfsAreRejectedByTheChiSquare) {
+  // Half the true density: the expected counts no longer match.
+  EXPECT_LT(mcrt::testing::quad_light_pdf_p_value(mcrt::testing::k_suite_seed,
+                                            [](double area) { return 0.5 / area; }),
+            k_alpha);
+  EXPECT_LT(mcrt::testing::cap_light_pdf_p_value(mcrt::testing::k_suite_seed,
+                                           [](double r, double h) { return 1.0 / (k_pi * r * h); }),
+            k_alpha);
+}
+
+}  // namespace
