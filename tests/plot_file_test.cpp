@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "io/image_file.hpp"
+#include "io/output.hpp"
 #include "render/image.hpp"
 
 namespace fs = std::filesystem;
@@ -56,6 +58,38 @@ TEST(PlotFileTest, GnuplotDrawsInAFolderWhateverItsName) {
                          "plot 'data.csv' using \"x\":\"y\" with lines"});
   EXPECT_EQ(mcrt::image_file_problem(dir / "square.png"), "");
   EXPECT_EQ(mcrt::image_file_problem(dir / "square.svg"), "");
+}
+
+TEST(PlotFileTest, AGnuplotErrorIsAnIoErrorAndLeavesNoImage) {
+  if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const fs::path dir = file_with("unused", "").parent_path() / "error";
+  fs::create_directories(dir);
+  std::string message;
+  try {
+    mcrt::write_plot(dir, {"broken", "title", "x", "y", false, false, "", "plot no_such_variable"});
+  } catch (const mcrt::IoError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("broken.gp"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(dir / "broken.png"));
+  EXPECT_FALSE(fs::exists(dir / "broken.svg"));
+}
+
+TEST(PlotFileTest, ALogAxisWithNoPositiveValueIsDrawnLinear) {
+  if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const fs::path dir = file_with("unused", "").parent_path() / "zeros";
+  fs::create_directories(dir);
+  std::ofstream(dir / "data.csv") << "n,rmse\n1,0\n4,0\n";
+  mcrt::Plot plot{"zeros", "title", "n", "rmse", true, true, "",
+                  "plot 'data.csv' using \"n\":\"rmse\" with lines"};
+  plot.x_values = {1.0, 4.0};
+  plot.y_values = {0.0, 0.0};
+  mcrt::write_plot(dir, plot);  // would throw on gnuplot's "all points y value undefined"
+  std::ifstream script(dir / "zeros.gp");
+  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("set logscale x"), std::string::npos);
+  EXPECT_EQ(text.find("set logscale y"), std::string::npos);
+  EXPECT_EQ(mcrt::image_file_problem(dir / "zeros.png"), "");
 }
 
 }  // namespace
