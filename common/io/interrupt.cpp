@@ -52,7 +52,9 @@ sigset_t interrupt_signals() {
     ::waitpid(child, nullptr, 0);
   }
   std::string where = "nothing was written";
-  if (state.folder) {
+  if (state.folder && state.folder->committed()) {
+    where = fmt::format("the run was already written to '{}'", state.folder->out().string());
+  } else if (state.folder) {
     where = fmt::format("nothing written to '{}'", state.folder->out().string());
     state.folder->discard();
   }

@@ -33,6 +33,8 @@ class RunFolder {
   const std::filesystem::path& out() const { return out_; }
   /// Where this run writes: `.<name>.staging-<pid>` beside --out.
   const std::filesystem::path& staging() const { return staging_; }
+  /// Whether commit() has swapped this run in.
+  bool committed() const { return committed_; }
 
   /// Swaps the staging folder in as --out (renameat2 RENAME_EXCHANGE when --out exists, then
   /// the previous run is removed; rename() when it does not). Throws IoError on failure, and
