@@ -134,6 +134,37 @@ TEST(NeeTest, TheOneSidedLampLightsNothingBehindIt) {
   EXPECT_EQ(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed, mis), 1.0);
 }
 
+// Far from a small lamp, NEE's direct light (depth 1) is chapter 01's point light with the
+// area light's far field: L = (rho / pi) I(theta_l) cos(theta_x) / r^2, I(theta_l) = Le A
+// cos(theta_l). The cornell lamp at scale 0.1 (13 x 10.5) seen from a floor point about 610
+// away: the far field is exact to about (13 / 610)^2 = 5e-4, and 4000 NEE samples of an almost
+// constant integrand give the mean to far better than the 0.3% allowed.
+TEST(NeeTest, FarFromTheLampItsDirectLightIsThePointLights) {
+  const Scene box = make_cornell_box(0.1);
+  Scene scene;
+  const auto white = scene.add_material({Color(0.73), Color(0.0)});
+  const auto lamp = scene.add_material(box.materials[box.quads()[box.emitters()[0].index].material()]);
+  const auto back = scene.add_material({Color(0.0), Color(0.0)});
+  scene.add_quad({{-1e3, 0, -1e3}, {0, 0, 2e3}, {2e3, 0, 0}, white});
+  const Quad& q = box.quads()[box.emitters()[0].index];
+  scene.add_quad({q.corner(), q.edge_u(), q.edge_v(), lamp}, back);
+  const Vec3 x(100, 0, 100);
+  double sum = 0.0;
+  constexpr int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    Rng rng(7, static_cast<std::uint64_t>(i));
+    RayCount count;
+    sum += estimate_nee_radiance(scene, {x + Vec3(0, 1, 0), Vec3(0, -1, 0)}, {Roulette{}, 1},
+                                 rng, count).r;
+  }
+  const PointLight& light = box.point_light;
+  const Vec3 to_light = light.position - x;
+  const double r = glm::length(to_light);
+  const Vec3 wi = to_light / r;
+  const double expected = 0.73 * k_inv_pi * light.intensity_towards(-wi).r * wi.y / (r * r);
+  EXPECT_NEAR(sum / n / expected, 1.0, 3e-3);
+}
+
 // The checks' direct-light procedure (nee_checks.cpp: four floor points, 20000 paths each).
 double direct_light_p(const auto& estimate) {
   const Scene whole = make_cornell_box();
