@@ -199,30 +199,28 @@ def whole(value):
 
 def bad_values(kind, info):
     """Values a flag of this kind must refuse."""
-    garbage = ["", "abc", "5x", "x5", "1 2", " ", "nan", "NaN", "inf", "-inf", "+inf", "1e400",
-               "-1e400", "0x10", "0x1p3", "--", "1,2", "١٢"]
+    garbage = ["", "abc", "5x", "1 2", "nan", "inf", "-inf", "1e400", "0x10", "0x1p3", "--",
+               "1,2", "١٢"]
     if kind in ("int", "uint"):
         lo, hi = info["lo"], info["hi"]
-        values = garbage + ["-1", "-0", "+1", "1.5", "1.0", "1e3", "99999999999999999999999",
-                            "18446744073709551616", "-18446744073709551616", " 1", "1 ", "010x"]
+        values = garbage + ["-1", "-0", "+1", "1.5", "1e3", "18446744073709551616", " 1"]
         values.append(whole(hi + 1) if hi < 2**63 else "18446744073709551616")
         if lo > 0:
             values.append(whole(lo - 1))
         return values
     if kind == "float":
         lo, hi = info["lo"], info["hi"]
-        values = garbage + ["1.2.3", "1e", "e5", ".", "1e+", "0x1.8p1", "infinity", "1_000",
-                            "1,5", "1e999999999999"]
+        values = garbage + ["1.2.3", "1e", ".", "infinity", "1e999999999999"]
         values.append(repr(hi * 2 + 1))
         values.append(repr(lo / 2) if lo > 0 else "-1")
         if lo <= 0 < hi:
             values.append("-0.5")
         return values
     if kind in ("int-list", "real-list"):
-        values = [",", "1,,2", ",1", "1,", ",,", "", "abc", "1,x", "-1", "1;2", "0x4",
-                  "1e400", "nan", "inf", "1, 2", "1 2", "99999999999999999999999"]
+        values = [",", "1,,2", ",1", "1,", "", "abc", "1,x", "-1", "1;2", "0x4", "1e400", "nan",
+                  "inf", "1, 2", "99999999999999999999999"]
         if kind == "int-list":
-            values += ["1.5", "010x", "2,-1", "1e3"]
+            values += ["1.5", "2,-1"]
         return values
     if kind == "choice":
         first = info["choices"][0]
@@ -541,7 +539,7 @@ def output_problems(out, reference=None):
 
 def group_paths(chapters, tmp, checks):
     tmp = fresh(tmp)
-    weird = "it's a \"dir\" with  spaces, ünïcødé 日本 $HOME `true`; & (x) #1"
+    weird = "it's a \"dir\" with  spaces, ünïcødé 日本 $HOME `true`; & (x) #1 back\\slash"
     plain_names = {}
 
     def plain(name):
@@ -573,10 +571,7 @@ def group_paths(chapters, tmp, checks):
         if "ch05_path_tracer" in names and plain_names["ch05_path_tracer"]:
             for folder, argument in [("it's here", ["--out", "it's here"]),
                                      ("-weird", ["--out=-weird"]),
-                                     ("-dash", ["--out", "./-dash"]),
-                                     ("ünïcødé", ["--out", "ünïcødé"]),
-                                     ('say "hi"', ["--out", 'say "hi"']),
-                                     ("back\\slash", ["--out", "back\\slash"])]:
+                                     ("-dash", ["--out", "./-dash"])]:
                 cases.append(("ch05_path_tracer", folder, argument))
         futures = {pool.submit(weird_run, i, name, folder, argument, plain_names[name]):
                    f"{name} --out {folder!r}" for i, (name, folder, argument) in enumerate(cases)}
