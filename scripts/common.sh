@@ -6,12 +6,14 @@ set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
 
-# Everything the project needs from Debian: build tools, libraries, gnuplot for the plots.
+# Everything the project needs from Debian: build tools, libraries, gnuplot for the plots,
+# python3 for the robustness suite (tests/robustness/robustness.py).
 debian_packages=(
   cmake g++ make pkg-config
   libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev libboost-math-dev
   gnuplot-nox fonts-dejavu-core
+  python3
 )
 
 # The compilers of the portability builds (scripts/test --compiler NAME): the Debian package
