@@ -54,8 +54,7 @@ inline void check_plan(const auto& o, const Plan& plan) {
                                  o.budget, o.equal_cost_depth, cheapest, cheapest_sample));
   check_ray_limit({plan.predicted_rays, "sweep, missing-light and equal-cost renders"},
                   o.max_rays, "--max-rays", o.common.threads,
-                  "lower --max-depth, --branching, --spp, --budget or the image size, or raise "
-                  "--max-rays");
+                  "lower --max-depth, --branching, --spp or --budget, or raise --max-rays");
 }
 
 }  // namespace mcrt

@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -193,6 +194,15 @@ std::pair<std::string, bool> first_message(const std::string& messages) {
   return {first, only_warnings};
 }
 
+// gnuplot does not report a failed write, so an incomplete image is all we see. When the
+// folder's file system has no block left, that is the reason, in the system's words.
+std::string reason_for_incomplete(const fs::path& dir, const std::string& problem) {
+  struct statvfs fs_info {};
+  if (::statvfs(dir.c_str(), &fs_info) == 0 && fs_info.f_bavail == 0)
+    return std::error_code(ENOSPC, std::generic_category()).message() + " (" + problem + ")";
+  return problem;
+}
+
 }  // namespace
 
 PlotResult write_plot(const fs::path& dir, const Plot& plot) {
@@ -215,9 +225,9 @@ PlotResult write_plot(const fs::path& dir, const Plot& plot) {
   else if (!messages.empty() && !only_warnings)
     problem = "gnuplot reported an error in " + script + ": " + message;
   else if (const std::string png_problem = image_file_problem(png); !png_problem.empty())
-    problem = "cannot write '" + png.string() + "': " + png_problem;
+    problem = "cannot write '" + png.string() + "': " + reason_for_incomplete(dir, png_problem);
   else if (const std::string svg_problem = image_file_problem(svg); !svg_problem.empty())
-    problem = "cannot write '" + svg.string() + "': " + svg_problem;
+    problem = "cannot write '" + svg.string() + "': " + reason_for_incomplete(dir, svg_problem);
   if (problem.empty()) {
     if (!messages.empty()) std::cerr << "note: gnuplot on " << script << ": " << message << '\n';
     return PlotResult::drawn;

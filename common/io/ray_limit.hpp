@@ -19,8 +19,8 @@ struct RayWork {
 };
 
 /// Throws UsageError (exit code 2) if work.predicted_rays > limit, with one line naming `flags`,
-/// the predicted count, about how long it would take on `threads` threads, the limit and
-/// `remedy` (what to change).
+/// the predicted count, about how long it would take on `threads` threads (at
+/// k_estimated_rays_per_second_per_thread), the limit and `remedy` (what to change).
 void check_ray_limit(const RayWork& work, double limit, std::string_view flags, int threads,
                      std::string_view remedy);
 
