@@ -32,38 +32,31 @@ void Scene::add_quad(const Quad& q, std::uint32_t back_material) {
     emitters_.push_back({Emitter::quad, quads_.size(), q.normal(), 0.0, one_sided});
   }
   quads_.push_back(q);
+  quad_set_.add(q);
   quad_back_materials_.push_back(back_material);
 }
 
 // Find the nearest t over every primitive first; build the Hit record once, for the winner.
-// The spheres are searched four at a time (SphereSet); ties keep the first primitive, spheres
-// before quads, as the plain loop over intersect_distance does.
+// The spheres and the quads are each searched four at a time (SphereSet, QuadSet); ties keep
+// the first primitive, spheres before quads, as the plain loop over intersect_distance does.
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval range) const {
   const SphereSet::Nearest sphere = sphere_set_.nearest(ray, range);
   range.max = sphere.t;
-  const Quad* best_quad = nullptr;
-  for (const Quad& q : quads_) {
-    if (const auto t = intersect_distance(q, ray, range)) {
-      range.max = *t;
-      best_quad = &q;
-    }
-  }
-  if (best_quad) {
-    Hit hit = hit_at(*best_quad, ray, range.max);
-    hit.material = quad_face_material(static_cast<std::size_t>(best_quad - quads_.data()),
-                                      ray.direction);
+  const QuadSet::Nearest quad = quad_set_.nearest(ray, range);
+  if (quad.index != quad_set_.size()) {
+    Hit hit = hit_at(quads_[quad.index], ray, quad.t);
+    hit.material = quad_face_material(quad.index, ray.direction);
     return hit;
   }
-  if (sphere.index != sphere_set_.size()) return hit_at(spheres_[sphere.index], ray, range.max);
+  if (sphere.index != sphere_set_.size()) return hit_at(spheres_[sphere.index], ray, sphere.t);
   return std::nullopt;
 }
 
+// Some primitive is hit in range exactly when a nearest one exists; the four-wide searches
+// answer that faster than a loop that stops at the first hit.
 bool Scene::any_hit(const Ray& ray, Interval range) const {
-  for (const Sphere& s : spheres_)
-    if (intersect_distance(s, ray, range)) return true;
-  for (const Quad& q : quads_)
-    if (intersect_distance(q, ray, range)) return true;
-  return false;
+  return sphere_set_.nearest(ray, range).index != sphere_set_.size() ||
+         quad_set_.nearest(ray, range).index != quad_set_.size();
 }
 
 const std::vector<std::string>& scene_names() {

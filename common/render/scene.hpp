@@ -12,6 +12,7 @@
 
 #include "geometry/camera.hpp"
 #include "geometry/quad.hpp"
+#include "geometry/quad_set.hpp"
 #include "geometry/sphere.hpp"
 #include "geometry/sphere_set.hpp"
 #include "render/material.hpp"
@@ -97,6 +98,7 @@ struct Scene {
   std::vector<std::uint32_t> quad_back_materials_;
   std::vector<Emitter> emitters_;
   SphereSet sphere_set_;  ///< spheres_ as a structure of arrays
+  QuadSet quad_set_;      ///< quads_ as a structure of arrays
 };
 
 /// Parameters of the built-in scenes that take them.
