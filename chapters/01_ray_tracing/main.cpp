@@ -44,7 +44,8 @@ RayWork predicted_work(const Options& o) {
   return {2.0 * o.spp * o.image.width * o.image.height, "2 rays (camera + shadow) x spp x pixels"};
 }
 
-// Direct light at a hit x from an isotropic point light of intensity I at distance r:
+// Direct light at a hit x from a point light at distance r whose intensity is the area light's
+// far field, I(theta_l) = Le A cos(theta_l) about the lamp's normal:
 //   L = Le(x) + f_r * I * cos(theta) / r^2   if the shadow ray reaches the light, else Le(x).
 Color shade(const Scene& scene, const Hit& hit, RayCount& count) {
   const Material& material = scene.material(hit);
@@ -56,7 +57,8 @@ Color shade(const Scene& scene, const Hit& hit, RayCount& count) {
   if (cos_theta <= 0.0) return radiance;  // the light is behind the surface
   ++count.rays;
   if (scene.any_hit(shadow_ray, {1e-9, distance})) return radiance;  // in shadow
-  return radiance + material.brdf() * light.intensity * cos_theta / (distance * distance);
+  return radiance + material.brdf() * light.intensity_towards(-shadow_ray.direction) * cos_theta /
+                        (distance * distance);
 }
 
 // The colour of one camera ray: the shaded closest hit, or black if it leaves the scene.
