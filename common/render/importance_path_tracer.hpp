@@ -42,6 +42,7 @@ namespace mcrt {
 inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int max_depth,
                                                const HemispherePdf& pdf, Rng& rng,
                                                RayCount& count) {
+  // ASSIGNMENT a5.2 BEGIN needs=a4.1,a2.2 stub: (void)scene; (void)ray; (void)max_depth; (void)pdf; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_importance_path_radiance);
   Color radiance(0.0);
   Color beta(1.0);  // path weight: product of f_r cos(theta_i) / p(wi) so far
   for (int bounce = 0;; ++bounce) {
@@ -63,6 +64,7 @@ inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int 
     ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
   }
   return radiance;
+  // ASSIGNMENT a5.2 END
 }
 
 /// b = E[w^2] of one furnace bounce's weight w = a cos / (pi p) (table at the top of this file);

@@ -62,6 +62,7 @@ struct DirectSample {
 /// in `count`) when y could light the hit: in front of the surface and of the light.
 inline DirectSample sample_direct_light(const Scene& scene, const Hit& hit, Rng& rng,
                                         RayCount& count) {
+  // ASSIGNMENT a5.3 BEGIN stub: (void)scene; (void)hit; (void)rng; (void)count; NOT_IMPLEMENTED(sample_direct_light);
   DirectSample d;
   const std::size_t n = scene.emitters().size();
   const double u_pick = rng.uniform();
@@ -80,6 +81,7 @@ inline DirectSample sample_direct_light(const Scene& scene, const Hit& hit, Rng&
   ++count.rays;
   d.visible = !scene.any_hit(shadow_ray, {1e-9, distance * (1.0 - k_shadow_ray_shortening)});
   return d;
+  // ASSIGNMENT a5.3 END
 }
 
 /// The emitter a hit lies on (found by its material: every emitter of the built-in scenes has

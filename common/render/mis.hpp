@@ -54,6 +54,7 @@ inline double mis_weight(MisHeuristic heuristic, double p_s, double p_o) {
 /// One path's MIS estimate of the radiance arriving along `ray`.
 inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& end,
                                    MisHeuristic heuristic, Rng& rng, RayCount& count) {
+  // ASSIGNMENT a5.3 BEGIN needs=a5.1,a5.2 withheld stub: (void)scene; (void)ray; (void)end; (void)heuristic; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_mis_radiance);
   Color radiance(0.0);
   Color beta(1.0);        // path weight: product of f_r cos / (p_b q_j) = rho / q_j so far
   double pdf_bsdf = 0.0;  // p_b of the direction that reached this vertex (0: the camera ray)
@@ -92,6 +93,7 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
     ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
   }
   return radiance;
+  // ASSIGNMENT a5.3 END
 }
 
 }  // namespace mcrt

@@ -53,6 +53,7 @@ struct PathEnd {
 /// One path's NEE estimate of the radiance arriving along `ray`.
 inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& end, Rng& rng,
                                    RayCount& count) {
+  // ASSIGNMENT a5.3 BEGIN needs=a4.1,a2.2 stub: (void)scene; (void)ray; (void)end; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_nee_radiance);
   Color radiance(0.0);
   Color beta(1.0);  // path weight: product of f_r cos / (p q_j) = rho / q_j so far
   for (int bounce = 0;; ++bounce) {
@@ -81,6 +82,7 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
     ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
   }
   return radiance;
+  // ASSIGNMENT a5.3 END
 }
 
 /// The baseline NEE is measured against: BSDF (cosine) sampling alone with the same path end,
@@ -88,6 +90,7 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
 /// roulette). Its E[L] is NEE's.
 inline Color estimate_cosine_roulette_radiance(const Scene& scene, Ray ray, const PathEnd& end,
                                                Rng& rng, RayCount& count) {
+  // ASSIGNMENT a5.1 BEGIN needs=a5.2 withheld stub: (void)scene; (void)ray; (void)end; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_cosine_roulette_radiance);
   Color radiance(0.0);
   Color beta(1.0);
   for (int bounce = 0;; ++bounce) {
@@ -109,6 +112,7 @@ inline Color estimate_cosine_roulette_radiance(const Scene& scene, Ray ray, cons
     ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
   }
   return radiance;
+  // ASSIGNMENT a5.1 END
 }
 
 }  // namespace mcrt

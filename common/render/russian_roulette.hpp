@@ -86,6 +86,7 @@ inline double survival_probability(const Roulette& roulette, const Color& beta) 
 /// Unbiased for the whole series. Every closest-hit query is counted in `count`.
 inline Color estimate_path_radiance_roulette(const Scene& scene, Ray ray, const Roulette& roulette,
                                              Rng& rng, RayCount& count) {
+  // ASSIGNMENT a5.1 BEGIN needs=a4.1 stub: (void)scene; (void)ray; (void)roulette; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_path_radiance_roulette);
   Color radiance(0.0);
   Color beta(1.0);  // path weight: product of f_r cos(theta_i) / (pdf(wi) q_j) so far
   for (int bounce = 0;; ++bounce) {
@@ -109,6 +110,7 @@ inline Color estimate_path_radiance_roulette(const Scene& scene, Ray ray, const 
     ray = spawn_ray(*hit, wi);
   }
   return radiance;
+  // ASSIGNMENT a5.1 END
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -23,14 +23,18 @@ namespace mcrt {
 /// p_m: solid angle is dw = d(cos theta) d(phi), so cos theta has density (m + 1) z^m on [0, 1]
 /// and CDF z^(m + 1) = u0: cos theta = u0^(1 / (m + 1)), phi = 2 pi u1.
 inline Vec3 sample_cosine_power_hemisphere(Vec2 u, int m) {
+  // ASSIGNMENT a2.2 BEGIN needs=a2.1 withheld stub: (void)u; (void)m; NOT_IMPLEMENTED(sample_cosine_power_hemisphere);
   const double cos_theta = std::pow(u.x, 1.0 / (m + 1.0));
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   const double phi = k_two_pi * u.y;
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  // ASSIGNMENT a2.2 END
 }
 /// (m + 1) / (2 pi) cos^m(theta): the integral of cos^m over the hemisphere is 2 pi / (m + 1).
 inline double cosine_power_hemisphere_pdf(double cos_theta, int m) {
+  // ASSIGNMENT a2.2 BEGIN needs=a2.1 withheld stub: (void)cos_theta; (void)m; NOT_IMPLEMENTED(cosine_power_hemisphere_pdf);
   return (m + 1.0) * k_inv_two_pi * std::pow(std::max(0.0, cos_theta), m);
+  // ASSIGNMENT a2.2 END
 }
 
 /// p_g = 2 sin(theta) / pi^2. theta has density p_g sin(theta) 2 pi = (4 / pi) sin^2(theta) on

@@ -8,10 +8,14 @@
 #include "assignments/a2/a2_checks.hpp"
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
+#include "assignments/a5/a5_checks.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
 #include "known_bugs/estimators.hpp"
+#include "known_bugs/importance_sampling.hpp"
+#include "known_bugs/nee.hpp"
 #include "known_bugs/path_tracers.hpp"
+#include "known_bugs/russian_roulette.hpp"
 #include "known_bugs/samplers.hpp"
 #include "stats/report.hpp"
 
@@ -120,6 +124,61 @@ TEST_F(Diagnoses, A4SpherePdf) {
 TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
   expect_diagnosis(check_path_furnace(path_radiance_cosine_directions_uniform_pdf), "the per-bounce weight averages 4a/3");
   EXPECT_FALSE(check_reference_regions(path_radiance_cosine_directions_uniform_pdf).passed);
+}
+
+TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
+  expect_diagnosis(check_roulette_furnace(roulette_without_division), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
+}
+
+TEST_F(Diagnoses, A5RouletteBeforeTheEmission) {
+  expect_diagnosis(check_roulette_furnace(roulette_before_emission), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
+}
+
+TEST_F(Diagnoses, A5RouletteFromVertexZero) {
+  expect_diagnosis(check_roulette_furnace(roulette_from_depth_zero), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
+}
+
+/// A known-wrong path tracer as a5.2's estimator: it ignores the pdf it is handed.
+template <class Tracer>
+auto ignoring_the_pdf(Tracer tracer) {
+  return [tracer](const Scene& scene, Ray ray, int max_depth, const HemispherePdf&, Rng& rng, RayCount& count) {
+    return tracer(scene, ray, max_depth, rng, count);
+  };
+}
+
+TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
+  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi)),
+                   "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
+}
+
+TEST_F(Diagnoses, A5CosineDirectionsUniformPdf) {
+  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)),
+                   "the per-bounce weight averages 4a/3 and varies");
+}
+
+/// A known-wrong NEE as a5.3's estimator: its depth cut taken from the PathEnd.
+template <class Nee>
+auto with_path_end(Nee nee) {
+  return [nee](const Scene& scene, Ray ray, const PathEnd& end, Rng& rng, RayCount& count) {
+    return nee(scene, ray, end.max_depth, rng, count);
+  };
+}
+
+TEST_F(Diagnoses, A5NeeEmissionTwice) {
+  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_emission_twice)),
+                   "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
+  EXPECT_FALSE(check_nee_regions(with_path_end(nee_emission_twice)).passed);
+}
+
+TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {
+  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_without_jacobian)),
+                   "direct light is 2.70x and varies from path to path; every light sample here should give exactly a Le: is p_A converted to solid angle");
+  EXPECT_FALSE(check_nee_regions(with_path_end(nee_without_jacobian)).passed);
+}
+
+TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
+  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_shadow_ray_hits_light)),
+                   "direct light is 0.08x: almost no shadow ray reaches the light");
 }
 
 }  // namespace

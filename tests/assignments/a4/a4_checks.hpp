@@ -11,8 +11,8 @@
 #include "assignments/grading.hpp"
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
-#include "render/importance_path_tracer.hpp"
 #include "render/path_tracer.hpp"
+#include "render/recursive_estimator.hpp"
 #include "render/scene.hpp"
 #include "sampling/sphere.hpp"
 #include "stats/hypothesis.hpp"
@@ -103,10 +103,10 @@ TaskResult check_path_furnace(Radiance&& radiance) {
 
 /// Region by region against a reference: the sky scene at 16 x 16 pixels, k = 4, cut into
 /// 4 x 4 regions of 4 x 4 pixels. Each region's mean over 4096 paths (256 per pixel) is
-/// z-tested against the reference tracer's (cosine-weighted directions, 1024 per pixel, an
-/// independent estimator of the same expectation, drawn anew at each seed), the standard
-/// error of the difference
-/// taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
+/// z-tested against the reference's (a3's recursion with N = 1 branch, 1024 paths per pixel
+/// at another seed, drawn anew at each grading seed: independent of the student's, and in
+/// every kit of a4, where the tracers of chapters 06-08 are withheld), the standard error of
+/// the difference taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
 template <class Radiance>
 TaskResult check_reference_regions(Radiance&& radiance) {
   constexpr int size = 16, region = 4, regions = size / region, k = 4;
@@ -126,7 +126,7 @@ TaskResult check_reference_regions(Radiance&& radiance) {
     return stats;
   };
   const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_importance_path_radiance(scene, ray, k, HemispherePdf{HemispherePdf::cosine, 0}, rng, count);
+    return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);
   };
   int worst = 0;
   double worst_z = 0.0;

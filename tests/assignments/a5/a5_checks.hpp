@@ -1,0 +1,336 @@
+#pragma once
+// The grading procedures of assignment a5 (variance reduction), templated on the estimator
+// under test, with the signatures of the solution's:
+//   a5.1 estimate_path_radiance_roulette(scene, ray, roulette, rng, count)
+//   a5.2 estimate_importance_path_radiance(scene, ray, max_depth, pdf, rng, count)
+//   a5.3 estimate_nee_radiance(scene, ray, path_end, rng, count)
+// The furnace (albedo a, Le = 1 everywhere) has closed forms for all three; NEE is also
+// compared, region by region, with a4's path tracer on a small Cornell box.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "assignments/a4/a4_checks.hpp"
+#include "assignments/grading.hpp"
+#include "geometry/camera.hpp"
+#include "integration/statistics.hpp"
+#include "render/importance_path_tracer.hpp"
+#include "render/next_event_estimation.hpp"
+#include "render/path_tracer.hpp"
+#include "render/russian_roulette.hpp"
+#include "render/scene.hpp"
+#include "sampling/cosine_power.hpp"
+#include "stats/hypothesis.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// n furnace paths (path i in a uniformly random direction, stream (block, i) of seed) of
+/// `estimate(ray, rng, count)`: their radiance and rays.
+template <class Estimate>
+std::vector<FurnacePath> a5_furnace_paths(const Scene& furnace, int n, std::uint64_t seed,
+                                          std::uint64_t block, Estimate&& estimate) {
+  std::vector<FurnacePath> paths(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
+    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
+    RayCount count;
+    paths[static_cast<std::size_t>(i)] = {average(estimate(furnace, ray, rng, count)), count.rays};
+  }
+  return paths;
+}
+
+// ---------------------------------------------------------------------------------------------
+// a5.1 Russian roulette
+
+/// E[L] in the furnace of fixed-q roulette whose survivors are NOT divided by q: vertex j > d
+/// is reached with probability q^(j-d) and keeps the weight a^j, so
+///   Le ((1 - a^(d+1)) / (1 - a) + a^d a q / (1 - a q)).
+inline double furnace_roulette_mean_without_division(double a, int d, double q) {
+  return furnace_radiance(a, 1.0, d) + std::pow(a, d) * a * q / (1.0 - a * q);
+}
+
+/// E[L] when roulette runs before Le(x_j) is added: a path stopped at x_j (j >= d) loses it, so
+/// term j keeps a^j q: Le ((1 - a^d) / (1 - a) + q a^d / (1 - a)).
+inline double furnace_roulette_mean_before_emission(double a, int d, double q) {
+  return (d > 0 ? furnace_radiance(a, 1.0, d - 1) : 0.0) + q * std::pow(a, d) / (1.0 - a);
+}
+
+/// The roulette furnace of check_roulette_furnace at one seed: its p-value (adding the mean
+/// radiance and mean rays to the sums given).
+template <class Roulette_>
+double roulette_furnace_p_value(Roulette_&& radiance, std::uint64_t seed, double& mean_sum, double& rays_sum) {
+  constexpr double a = 0.5, q = 0.7;
+  constexpr int d = 2, n = 20000;
+  const Roulette roulette{d, RoulettePolicy::fixed, q, 0.05};
+  const Scene furnace = make_furnace(a, 1.0);
+  const double expected = furnace_radiance_untruncated(a, 1.0);
+  const double variance = furnace_roulette_variance(a, 1.0, d, q);
+  const double rays = furnace_roulette_mean_rays(d, q), rays_variance = q / ((1.0 - q) * (1.0 - q));
+  const auto paths = a5_furnace_paths(furnace, n, seed, 61, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
+    return radiance(s, r, roulette, rng, c);
+  });
+  std::vector<double> values;
+  RunningStats L, R;
+  for (const FurnacePath& p : paths) {
+    values.push_back(p.radiance);
+    L.add(p.radiance);
+    R.add(static_cast<double>(p.rays));
+  }
+  mean_sum += L.mean();
+  rays_sum += R.mean();
+  const double p_mean = z_test_p_value(L.mean(), expected, std::sqrt(variance / n));
+  const double p_rays = z_test_p_value(R.mean(), rays, std::sqrt(rays_variance / n));
+  return sidak_p_value(std::min({p_mean, p_rays, variance_z_test_p_value(values, variance)}), 3);
+}
+
+/// The furnace (a = 0.5, Le = 1), fixed q = 0.7 after d = 2: 20000 paths' mean z-tested
+/// against Le / (1 - a) = 2 (no depth cut, no bias), their variance against the closed form
+/// (finite: q > 4 a^2 / 3), and their mean ray count against d + 1/(1 - q) (a geometric
+/// length, variance q / (1 - q)^2); Sidak-combined, at the three grading seeds.
+template <class Roulette_>
+TaskResult check_roulette_furnace(Roulette_&& radiance) {
+  constexpr double a = 0.5, q = 0.7;
+  constexpr int d = 2;
+  const double expected = furnace_radiance_untruncated(a, 1.0), rays = furnace_roulette_mean_rays(d, q);
+  double mean_sum = 0.0, rays_sum = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    return roulette_furnace_p_value(radiance, seed, mean_sum, rays_sum);
+  });
+  const double mean = mean_sum / k_seeds, mean_rays = rays_sum / k_seeds;
+  std::string d_text;
+  if (!v.passed()) {
+    const double r = mean / expected;
+    if (near(mean, furnace_roulette_mean_without_division(a, d, q), 0.01))
+      d_text = diagnosis(fmt::format("your mean is {:.3f}x the expected value, that of roulette whose survivors keep "
+                                     "their weight: is the survivor's weight divided by q?", r));
+    else if (near(mean, furnace_roulette_mean_before_emission(a, d, q), 0.01))
+      d_text = diagnosis(fmt::format("your mean is {:.3f}x the expected value: a path stopped at x_j loses Le(x_j): "
+                                     "add the emission before the roulette", r));
+    else if (near(mean, expected, 0.01) && near(mean_rays, 1.0 / (1.0 - q), 0.02))
+      d_text = diagnosis(fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: "
+                                     "does the roulette start at vertex min_depth, not at 0?", mean_rays, rays));
+    else if (near(mean, expected, 0.01) && !near(mean_rays, rays, 0.02))
+      d_text = diagnosis(fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: does "
+                                     "a path go on with probability q (u < q), from vertex min_depth on?", mean_rays, rays));
+    else
+      d_text = diagnose_mean_ratio(mean, expected);
+  }
+  return {v.passed(), fmt::format("furnace a = 0.5, fixed q = 0.7 after d = 2: mean {:.5f} (expected {:.5f}), "
+                                  "rays {:.3f} (expected {:.3f}); {}\n{}",
+                                  mean, expected, mean_rays, rays, v.describe(), d_text)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// a5.2 importance sampling
+
+/// The furnace's per-bounce weight w = f_r cos / p at depth 1 (L = 1 + w): its mean and
+/// spread over 4000 paths, in units of a, with the pdf `pdf`.
+template <class Radiance>
+RunningStats furnace_bounce_weights(Radiance&& radiance, const HemispherePdf& pdf, double a) {
+  RunningStats w;
+  const Scene furnace = make_furnace(a, 1.0);
+  for (const FurnacePath& p : a5_furnace_paths(furnace, 4000, 99, 78, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
+         return radiance(s, r, 1, pdf, rng, c);
+       }))
+    w.add((p.radiance - 1.0) / a);
+  return w;
+}
+
+/// With the cosine pdf the weight is f_r cos / p = (a / pi) cos / (cos / pi) = a exactly, so
+/// in the furnace (a = 0.5, k = 3) every one of 2000 paths returns Le (1 + a + a^2 + a^3):
+/// checked path by path (to 1e-9), no statistics, nothing to fail by chance.
+template <class Radiance>
+TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
+  constexpr double a = 0.5;
+  constexpr int k = 3;
+  const HemispherePdf cosine = cosine_power_pdf(1);
+  const Scene furnace = make_furnace(a, 1.0);
+  const double expected = furnace_radiance(a, 1.0, k);
+  int wrong = 0;
+  double first_wrong = 0.0;
+  for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 7, 79, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
+         return radiance(s, r, k, cosine, rng, c);
+       }))
+    if (!(std::abs(p.radiance - expected) <= 1e-9 * expected) && wrong++ == 0) first_wrong = p.radiance;
+  if (wrong == 0)
+    return {true, fmt::format("furnace a = 0.5, k = 3, cosine pdf: all 2000 paths return {:.6f}", expected)};
+  const RunningStats w = furnace_bounce_weights(radiance, cosine, a);
+  std::string d;
+  const double spread = std::sqrt(w.variance());
+  if (!std::isfinite(w.mean()))
+    d = diagnosis("the weight is not finite (NaN or inf): a division by a pdf of 0?");
+  else if (spread < 1e-9 && near(w.mean(), k_inv_pi, 0.01))
+    d = diagnosis("the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi (p = cos(theta)/pi)?");
+  else if (spread < 1e-9 && near(w.mean(), k_pi, 0.01))
+    d = diagnosis("the per-bounce weight is pi a instead of a: is the cosine pdf cos(theta) pi instead of cos(theta)/pi?");
+  else if (spread < 1e-9)
+    d = diagnosis(fmt::format("the per-bounce weight is {:.3f}a at every bounce instead of a = f_r cos / p", w.mean()));
+  else if (near(w.mean(), 4.0 / 3.0, 0.05))
+    d = diagnosis("the per-bounce weight averages 4a/3 and varies: cosine directions divided by the uniform pdf 1/(2 pi)?");
+  else
+    d = diagnosis(fmt::format("the per-bounce weight averages {:.3f}a with spread {:.3f}a; with the cosine pdf it is a, "
+                              "always: are the direction drawn and the pdf divided by the same (sample_hemisphere, "
+                              "hemisphere_pdf of the same pdf)?", w.mean(), spread));
+  return {false, fmt::format("furnace a = 0.5, k = 3, cosine pdf: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = "
+                             "{:.6f} (the first: {:.6f})\n{}", wrong, expected, first_wrong, d)};
+}
+
+/// Any pdf gives the same mean; the variance is the pdf's (importance_path_tracer.hpp). The
+/// furnace (a = 0.5, k = 3) with `pdf`: 20000 paths' mean and variance z-tested against the
+/// closed forms, Sidak-combined, at the three grading seeds.
+template <class Radiance>
+double importance_furnace_p_value(Radiance&& radiance, const HemispherePdf& pdf, std::uint64_t seed, double& mean_sum) {
+  constexpr double a = 0.5;
+  constexpr int k = 3, n = 20000;
+  const Scene furnace = make_furnace(a, 1.0);
+  const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(pdf, a, 1.0, k);
+  std::vector<double> values;
+  RunningStats s;
+  for (const FurnacePath& p : a5_furnace_paths(furnace, n, seed, 62, [&](const Scene& sc, const Ray& r, Rng& rng, RayCount& c) {
+         return radiance(sc, r, k, pdf, rng, c);
+       })) {
+    values.push_back(p.radiance);
+    s.add(p.radiance);
+  }
+  mean_sum += s.mean();
+  const double p_mean = z_test_p_value(s.mean(), expected, std::sqrt(variance / n));
+  return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
+}
+
+template <class Radiance>
+TaskResult check_importance_furnace(Radiance&& radiance, const HemispherePdf& pdf) {
+  const double expected = furnace_radiance(0.5, 1.0, 3);
+  double mean_sum = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    return importance_furnace_p_value(radiance, pdf, seed, mean_sum);
+  });
+  const double mean = mean_sum / k_seeds;
+  std::string d;
+  if (!v.passed()) {
+    const RunningStats w = furnace_bounce_weights(radiance, pdf, 0.5);
+    if (!near(w.mean(), 1.0, 0.05))
+      d = diagnosis(fmt::format("with the {} pdf the per-bounce weight averages {:.3f}a instead of a: is f_r cos / p "
+                                "divided by the pdf of the direction drawn (hemisphere_pdf(pdf, cos theta))?",
+                                pdf_name(pdf), w.mean()));
+    else
+      d = diagnosis(fmt::format("the mean is right but not the variance with the {} pdf: are the directions drawn "
+                                "from that pdf (sample_hemisphere(pdf, u))?", pdf_name(pdf)));
+  }
+  return {v.passed(), fmt::format("furnace a = 0.5, k = 3, {} pdf: mean {:.5f} (expected {:.5f}); {}\n{}", pdf_name(pdf),
+                                  mean, expected, v.describe(), d)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// a5.3 next-event estimation
+
+/// NEE at depth k without roulette (the path tracer's truncation).
+inline PathEnd nee_depth_cut(int k) {
+  PathEnd end;
+  end.roulette.min_depth = 1 << 20;  // never reached: no roulette
+  end.max_depth = k;
+  return end;
+}
+
+/// In the furnace (unit sphere, the whole sphere the light) every light sample gives exactly
+/// f_r Le cos_x cos_y / (r^2 p_A) = a Le, and the cosine bounce weighs a: each of 2000 paths at
+/// k = 3 returns Le (1 + a + a^2 + a^3), checked path by path (to 1e-6).
+template <class Nee>
+TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
+  constexpr double a = 0.5;
+  constexpr int k = 3;
+  const Scene furnace = make_furnace(a, 1.0);
+  const double expected = furnace_radiance(a, 1.0, k);
+  RunningStats all;
+  int wrong = 0;
+  for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 11, 80, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
+         return radiance(s, r, nee_depth_cut(k), rng, c);
+       })) {
+    all.add(p.radiance);
+    wrong += !(std::abs(p.radiance - expected) <= 1e-6 * expected);
+  }
+  if (wrong == 0)
+    return {true, fmt::format("furnace a = 0.5, k = 3: all 2000 paths return {:.6f}", expected)};
+  // The direct light's share: L - Le over (1 + a + a^2 + a^3) - 1, the sum of the direct terms.
+  const double direct = (all.mean() - 1.0) / (expected - 1.0), spread = std::sqrt(all.variance());
+  std::string d;
+  if (!std::isfinite(all.mean()))
+    d = diagnosis("your result is not finite (NaN or inf): a division by a pdf of 0?");
+  else if (near(direct, 2.0, 0.01) && spread < 1e-6)
+    d = diagnosis("direct light is 2x: is emission counted by both the light sample and the BSDF ray? (after the camera "
+                  "ray, only the shadow ray adds Le)");
+  else if (near(direct, 0.0, 1e-3) || direct < 0.1)
+    d = diagnosis(fmt::format("direct light is {:.2f}x: almost no shadow ray reaches the light: does it stop short of the "
+                              "light point (the light itself must not block it)?", direct));
+  else if (spread > 1e-3 && !near(direct, 1.0, 0.05))
+    d = diagnosis(fmt::format("direct light is {:.2f}x and varies from path to path; every light sample here should give "
+                              "exactly a Le: is p_A converted to solid angle, p_w = p_A r^2 / cos(theta_y)?", direct));
+  else
+    d = diagnose_mean_ratio(all.mean(), expected);
+  return {false, fmt::format("furnace a = 0.5, k = 3: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = {:.6f} "
+                             "(mean {:.6f}, spread {:.3g})\n{}", wrong, expected, all.mean(), spread, d)};
+}
+
+/// Region by region against a4's path tracer: the Cornell box (its lamp at 3x its area, same
+/// power) at 16 x 16 pixels, k = 3, cut into 4 x 4 regions of 4 x 4 pixels. Each region's NEE
+/// mean over 1024 paths (64 per pixel) is z-tested against the path tracer's (uniform
+/// directions, 1024 per pixel, at another seed: the same expectation, independent), the
+/// standard error from both sample variances; the 16 p-values Sidak-combined, at the three
+/// grading seeds.
+/// One seed of check_nee_regions: the Sidak-combined p-value of the 16 regions (and the worst
+/// region: its index, z and ratio of means, when it is worse than `worst_z`).
+template <class Nee>
+double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio) {
+  constexpr int size = 16, region = 4, regions = size / region, k = 3;
+  const Scene scene = make_cornell_box(3.0);
+  const Camera camera(scene.camera, size, size);
+  using Stats = std::array<RunningStats, regions * regions>;
+  const auto collect = [&](auto&& estimate, int spp, std::uint64_t at_seed) {
+    Stats stats;
+    RayCount count;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        for (int s = 0; s < spp; ++s) {
+          Rng rng(at_seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
+          const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+          stats[static_cast<std::size_t>((y / region) * regions + x / region)].add(average(estimate(ray, rng, count)));
+        }
+    return stats;
+  };
+  const Stats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
+    return estimate_path_radiance(scene, ray, k, rng, count);
+  }, 1024, seed ^ 0xa5a5ULL);
+  const Stats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
+    return radiance(scene, ray, nee_depth_cut(k), rng, count);
+  }, 64, seed);
+  double p_min = 1.0;
+  for (int r = 0; r < regions * regions; ++r) {
+    const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
+    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
+    const double p = z_test_p_value(s.mean(), t.mean(), se);
+    if (!(p >= p_min)) {
+      p_min = p;
+      const double z = std::abs(s.mean() - t.mean()) / se;
+      if (!(z <= worst_z)) worst_z = z, worst = r, worst_ratio = s.mean() / t.mean();
+    }
+  }
+  return sidak_p_value(p_min, regions * regions);
+}
+
+template <class Nee>
+TaskResult check_nee_regions(Nee&& radiance) {
+  constexpr int regions = 4;
+  int worst = 0;
+  double worst_z = 0.0, worst_ratio = 1.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    return nee_regions_p_value(radiance, seed, worst, worst_z, worst_ratio);
+  });
+  return {v.passed(), fmt::format("Cornell box 16 x 16, k = 3, regions of 4 x 4 pixels: {}{}", v.describe(),
+                                  v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from "
+                                                                "the path tracer ({:.2f}x its mean)",
+                                                                worst % regions, worst / regions, worst_z, worst_ratio))};
+}
+
+}  // namespace mcrt::testing::assignment

@@ -1,0 +1,51 @@
+// Assignment a5, variance reduction: the public tests (CTest label a5). Russian roulette and
+// importance sampling are graded on the furnace's closed forms, next-event estimation on the
+// furnace (where it is exact) and region by region against a4's path tracer (a5_checks.hpp).
+
+#include <gtest/gtest.h>
+
+#include "assignments/a5/a5_checks.hpp"
+
+namespace mcrt::testing::assignment {
+namespace {
+
+TEST(A5, Task1RouletteFurnaceMatchesTheClosedForms) {
+  const TaskResult r = check_roulette_furnace(estimate_path_radiance_roulette);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A5, Task1NoRouletteBeforeMinDepth) {
+  // q = 0 after d = 4: every path stops at vertex 4, after its Le(x_4) is added.
+  const Scene furnace = make_furnace(0.5, 1.0);
+  const Roulette roulette{4, RoulettePolicy::fixed, 0.0, 0.05};
+  Rng rng(5, 5);
+  RayCount count;
+  const double L = average(estimate_path_radiance_roulette(furnace, {Vec3(0.0), {0.0, 0.0, 1.0}}, roulette, rng, count));
+  EXPECT_EQ(count.rays, 5u) << "min_depth d = 4, q = 0: vertices 0..4 always go on to their Le, then the path stops";
+  EXPECT_GT(L, 1.0) << "Le(x_0) = 1 and the later vertices' emission";
+}
+
+TEST(A5, Task2CosineFurnaceIsExact) {
+  const TaskResult r = check_cosine_furnace_is_exact(estimate_importance_path_radiance);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A5, Task2UniformAndCosineSquaredFurnaces) {
+  for (const int m : {0, 2}) {
+    const TaskResult r = check_importance_furnace(estimate_importance_path_radiance, cosine_power_pdf(m));
+    EXPECT_TRUE(r.passed) << r.message;
+  }
+}
+
+TEST(A5, Task3FurnaceIsExact) {
+  const TaskResult r = check_nee_furnace_is_exact(estimate_nee_radiance);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A5, Task3RegionsAgreeWithThePathTracer) {
+  const TaskResult r = check_nee_regions(estimate_nee_radiance);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+}  // namespace
+}  // namespace mcrt::testing::assignment
