@@ -88,7 +88,8 @@ Reference render_reference(const ReferenceSpec& spec) {
   r.image = Image(spec.width, spec.height);
   double relative_variance = 0.0;  // mean of Var[R] / (R^2 + 0.01): its own relative MSE
   for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-    r.image.pixels[i] = 0.5 * (a.image.pixels[i] + b.image.pixels[i]);
+    // Rounded to float, as the PFM stores it: a fresh reference and a cached one are the same.
+    r.image.pixels[i] = Color(glm::vec3(0.5 * (a.image.pixels[i] + b.image.pixels[i])));
     for (int c = 0; c < 3; ++c) {
       const double d = a.image.pixels[i][c] - b.image.pixels[i][c], m = r.image.pixels[i][c];
       relative_variance += d * d / 4.0 / (m * m + 0.01);  // (A - B)^2 / 4 estimates Var[R]

@@ -26,8 +26,8 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
 
   const CsvFile csv(dir / "rmse_vs_spp.csv");
-  EXPECT_EQ(csv.header(),
-            (std::vector<std::string>{"spp", "rmse", "seconds", "rays", "rays_per_second"}));
+  EXPECT_EQ(csv.header(), (std::vector<std::string>{"spp", "rmse", "rmse_vs_reference", "seconds",
+                                                     "rays", "rays_per_second"}));
   ASSERT_EQ(csv.size(), 3u);
   const std::vector<double> rmse = csv.numbers("rmse");
   const int pixels = 24 * 18, spp[] = {1, 4, 16};
@@ -72,6 +72,39 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
 }
 
+// The error against the reference sees what the two-render estimate cannot: the light a depth
+// cut drops. At --depth 0 only the lamp seen directly is left, so the image misses the whole
+// reflected light, and at 256 spp that bias dominates the error against the reference.
+TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
+  const auto dir = fresh_dir("ch05_reference");
+  const std::string reference_dir = (dir.parent_path() / "ch05_reference_cache").string();
+  const ProgramRun run = run_program(
+      k_program, "--width 32 --height 24 --spp 4,256 --depth 0 --reference-spp 64 --quiet "
+                 "--reference-dir " + reference_dir + " --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CsvFile csv(dir / "rmse_vs_spp.csv");
+  ASSERT_EQ(csv.size(), 2u);
+  // The two-render error falls 8x from 4 to 256 spp; the error against the reference keeps
+  // the bias (about 0.09 RMS here against a noise of 0.02): 2x is far from both.
+  EXPECT_GT(csv.number(1, "rmse_vs_reference"), 2.0 * csv.number(1, "rmse"));
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["reference"]["settings"]["max_depth"], -1);
+  EXPECT_EQ(summary["reference"]["spp"], 64);
+  // The reflected light of the Cornell box is about as bright as what the lamp adds directly
+  // over the image (0.117 against 0.064 at 64x48); 1.3x leaves room for a tiny image's noise.
+  EXPECT_GT(summary["mean_radiance_reference"].get<double>(),
+            1.3 * summary["mean_radiance"].get<double>());
+  EXPECT_GT(summary["depth_cut_bias_rms"].get<double>(), csv.number(1, "rmse"));
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(reference_dir) / "cornell_ls1_32x24.pfm"));
+
+  // Without a reference the column stays, empty, and so do the summary's fields, as null.
+  const auto none = fresh_dir("ch05_no_reference");
+  ASSERT_EQ(run_program(k_program, "--width 8 --height 6 --spp 1 --reference-spp 0 --quiet --out " +
+                                       none.string()).exit_code, 0);
+  EXPECT_EQ(CsvFile(none / "rmse_vs_spp.csv").text(0, "rmse_vs_reference"), "");
+  EXPECT_TRUE(read_json(none / "summary.json")["reference"].is_null());
+}
+
 TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   const auto one = fresh_dir("ch05_threads1"), two = fresh_dir("ch05_threads2");
   const std::string flags = "--width 20 --height 16 --spp 2 --depth 6 --seed 5 --quiet";
@@ -87,7 +120,7 @@ TEST(Ch05Test, HelpNamesEveryFlag) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--scene", "--width", "--height", "--spp", "--depth", "--seed",
-                           "--threads", "--out", "--quiet"})
+                           "--threads", "--out", "--quiet", "--reference-spp", "--reference-dir"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -102,6 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--spp 1,0,4", "--spp"},
                       BadInput{"--spp x", "--spp"}, BadInput{"--depth -1", "--depth"},
                       BadInput{"--scene moon", "--scene"},
+                      BadInput{"--reference-spp -1", "--reference-spp"},
+                      BadInput{"--reference-spp 2000000", "--reference-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
                       BadInput{"--threads 0", "--threads"},
