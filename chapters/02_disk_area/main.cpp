@@ -111,15 +111,18 @@ Table ball_study(const Options& o, ProgressBar& progress) {
 Table ball_error_study(const std::vector<std::uint64_t>& grid, const Options& o,
                        ProgressBar& progress, Table& slopes) {
   Table table({integer("k"), integer("n"), integer("trials"), real("mean_estimate"),
-               real("empirical_std"), real("theory_std"), real("rmse")});
+               real("empirical_std"), real("theory_std"), real("rmse"), real("exact_volume"),
+               real("relative_theory_std"), real("relative_rmse")});
   for (int k : {2, 5, 10}) {
+    const double exact = unit_ball_volume(k);
     std::vector<double> n, rmse;
     for (std::uint64_t i = 0; i < grid.size(); ++i) {
       const auto kk = static_cast<std::uint64_t>(k);
       const ErrorStats e = ball_trials(
           k, grid[i], o, progress, stream_key({{ball_error, k_parts}, {kk, 1 << 16}, {i, 256}}));
-      table.add_row({k, grid[i], o.trials, e.mean(), e.stddev(),
-                     ball_volume_theory_std(k, grid[i]), e.rmse()});
+      const double theory = ball_volume_theory_std(k, grid[i]);
+      table.add_row({k, grid[i], o.trials, e.mean(), e.stddev(), theory, e.rmse(), exact,
+                     theory / exact, e.rmse() / exact});
       n.push_back(static_cast<double>(grid[i]));
       rmse.push_back(e.rmse());
     }

@@ -20,7 +20,8 @@ inline Plot error_plot(double fitted_slope, double guide_constant) {
   plot.x_label = "points N";
   plot.y_label = "rms error of 4M/N";
   plot.log_x = plot.log_y = true;
-  plot.settings = fmt::format("set key bottom left\nguide(n) = {:.6g} / sqrt(n)\n", guide_constant);
+  plot.settings = fmt::format("set key bottom left\nset autoscale xfix\nguide(n) = {:.6g} / sqrt(n)\n",
+                              guide_constant);
   plot.plot =
       "plot 'disk_area.csv' using \"n\":\"rmse\":(column(\"rmse\") / sqrt(2 * column(\"trials\"))) "
       "with yerrorbars pt 7 lc rgb '#1f77b4' title 'rmse over the trials', \\\n"
@@ -49,23 +50,25 @@ inline Plot picture_plot(int points, double estimate) {
   return plot;
 }
 
-// rmse against N for each k of the ball error study, with its theory line.
+// The relative error rmse / V_k against N for each k of the ball error study, with its theory
+// line sqrt((1 - q) / (q N)), q = V_k / 2^k: parallel lines of slope -1/2 whose constant grows
+// with k, the lesson of the ball.
 inline Plot ball_error_plot(const std::vector<int>& dims) {
   Plot plot;
   plot.name = "ball_error_vs_n";
-  plot.title = "k-ball volume 2^k M/N: rms error against N";
+  plot.title = "k-ball volume 2^k M/N: relative rms error against N (the constant grows with k)";
   plot.x_label = "points N";
-  plot.y_label = "rms error of 2^k M/N";
+  plot.y_label = "relative rms error of 2^k M/N  (rmse / V_k)";
   plot.log_x = plot.log_y = true;
-  plot.settings = "set key bottom left\n";
+  plot.settings = "set key bottom left\nset autoscale xfix\n";
   const char* colours[] = {"#1f77b4", "#2ca02c", "#d62728"};
   plot.plot = "plot ";
   for (std::size_t s = 0; s < dims.size(); ++s)
     plot.plot += fmt::format(
-        "{0}'ball_error_vs_n.csv' using \"n\":(column(\"k\") == {1} ? column(\"rmse\") : 1/0) "
-        "with points pt 7 lc rgb '{2}' title 'k = {1} rmse', \\\n"
-        "  '' using \"n\":(column(\"k\") == {1} ? column(\"theory_std\") : 1/0) with lines "
-        "lc rgb '{2}' title 'k = {1} theory'",
+        "{0}'ball_error_vs_n.csv' using \"n\":(column(\"k\") == {1} ? column(\"relative_rmse\") : "
+        "1/0) with points pt 7 lc rgb '{2}' title 'k = {1} rmse / V_{{{1}}}', \\\n"
+        "  '' using \"n\":(column(\"k\") == {1} ? column(\"relative_theory_std\") : 1/0) with "
+        "lines lw 2 lc rgb '{2}' title 'k = {1} theory'",
         s ? ", \\\n  " : "", dims[s], colours[s % 3]);
   return plot;
 }

@@ -65,8 +65,19 @@ TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
   }
 
   const CsvFile ball_error(dir / "ball_error_vs_n.csv");
-  EXPECT_EQ(header(ball_error), "k,n,trials,mean_estimate,empirical_std,theory_std,rmse");
-  EXPECT_EQ(ball_error.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
+  EXPECT_EQ(header(ball_error), "k,n,trials,mean_estimate,empirical_std,theory_std,rmse,"
+                                "exact_volume,relative_theory_std,relative_rmse");
+  ASSERT_EQ(ball_error.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
+  for (std::size_t r = 0; r < ball_error.size(); ++r) {  // the plot's relative errors
+    const double exact = ball_error.number(r, "exact_volume");
+    EXPECT_NEAR(exact, mcrt::unit_ball_volume(static_cast<int>(ball_error.number(r, "k"))),
+                1e-8 * exact);
+    EXPECT_NEAR(ball_error.number(r, "relative_rmse"), ball_error.number(r, "rmse") / exact,
+                1e-6 * ball_error.number(r, "relative_rmse"));
+    EXPECT_NEAR(ball_error.number(r, "relative_theory_std"),
+                ball_error.number(r, "theory_std") / exact,
+                1e-6 * ball_error.number(r, "relative_theory_std"));
+  }
 
   const CsvFile points(dir / "points.csv");
   EXPECT_EQ(header(points), "x,y,inside");
