@@ -78,7 +78,8 @@ Column real(const char* name, int digits, Column::Style style) {
   return {name, Column::real, digits, style};
 }
 
-// What the run found: errors.csv, slopes.csv and each slope's guide line for the plots.
+// What the run found: errors.csv, slopes.csv, budget.csv (each k-dimensional study's error at
+// the largest N, the fixed budget) and each slope's guide line for the plots.
 struct Results {
   Table errors{{text("integrand"), integer("dims"), text("method"), integer("points_per_axis"),
                 integer("evaluations"), real("estimate", 17, Column::general),
@@ -87,6 +88,10 @@ struct Results {
   Table slopes{{text("integrand"), integer("dims"), text("method"),
                 real("fitted_slope", 6, Column::fixed), real("standard_error", 6, Column::fixed),
                 real("theory_slope", 6, Column::fixed), integer("points")}};
+  Table budget{{text("integrand"), integer("dims"), real("reference", 17, Column::general),
+                integer("points_per_axis"),
+                integer("trapezoid_evaluations"), real("trapezoid_error", 6, Column::scientific),
+                integer("monte_carlo_evaluations"), real("monte_carlo_rmse", 6, Column::scientific)}};
   std::vector<SlopeLine> lines;  // one per row of slopes
   double seconds = 0.0;
 };
@@ -98,6 +103,7 @@ Results tabulate(const Plan& plan, const std::vector<Estimate>& estimates, doubl
   for (std::size_t s = 0; s < plan.studies.size(); ++s) {
     const Study& study = plan.studies[s];
     const double exact = reference(study);
+    std::vector<Cell> at_budget{study.name(), study.dims, exact};  // each method's last row
     for (bool trapezoid : {true, false}) {
       const char* method = trapezoid ? "trapezoid" : "monte_carlo";
       std::vector<double> n, error;
@@ -111,12 +117,17 @@ Results tabulate(const Plan& plan, const std::vector<Estimate>& estimates, doubl
         n.push_back(static_cast<double>(trapezoid ? t.evaluations : t.n));
         error.push_back(trapezoid ? std::abs(value - exact) : rmse);
       }
+      if (trapezoid) at_budget.push_back(r.errors.at(r.errors.size() - 1, "points_per_axis"));
+      at_budget.push_back(static_cast<std::uint64_t>(n.back()));
+      at_budget.push_back(error.back());
       const double theory = study.theory_slope(trapezoid);
       const ErrorSlope slope = fit_error_slope(n, error, theory);
       r.slopes.add_row({study.name(), study.dims, method, slope.fit.slope,
                         slope.fit.slope_standard_error, theory, slope.points});
       r.lines.push_back({slope.fit.slope, theory, slope.guide_constant});
     }
+    if (study.kind == Kind::gaussian_kd || study.kind == Kind::unit_ball_kd)
+      r.budget.add_row(at_budget);
   }
   return r;
 }
@@ -134,7 +145,8 @@ void write_plots(const Options& o, const Plan& plan, const Results& r) {
   plot("smooth_1d", "e^{-x^2} on [0,1]: error against N", 0, "N^{-2}");
   plot("discontinuous_1d", "ceil(sin x^2) on [0,3]: error against N", 1, "N^{-1}");
   plot("disk_2d", "Unit disk in [-1,1]^2: error against N", disk, "N^{-1/2} (n^{-1})");
-  write_plot(o.common.dir, slopes_plot(std::max(o.dims.back(), k_disk_dims)));
+  write_plot(o.common.dir, slopes_plot(r.budget.numbers("dims")));
+  write_plot(o.common.dir, budget_plot(o.max_evaluations, r.budget));
 }
 
 Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const Results& r) {
@@ -148,6 +160,7 @@ Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const R
     references[study.name() + "_" + std::to_string(study.dims)] = reference(study);
   summary["references"] = references;
   summary["slopes"] = r.slopes.json();
+  summary["at_budget"] = r.budget.json();
   summary["flags"] = flags_json(app);
   return summary;
 }
@@ -165,7 +178,7 @@ void print_report(const Options& o, const Plan& plan, const Results& r) {
              r.slopes.console({"integrand", "dims", "method", "fitted_slope", "standard_error",
                                "theory_slope"}));
   fmt::print("  {:.3g} evaluations in {:.2f} s ({:.3g} per second)\n"
-             "  wrote {}/{{errors.csv,slopes.csv,summary.json,timings.json}} and plots\n",
+             "  wrote {}/{{errors,slopes,budget}}.csv, summary.json, timings.json and plots\n",
              plan.total_evaluations, r.seconds,
              r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0, o.common.out.string());
 }
@@ -187,6 +200,7 @@ void run(const CLI::App& app, const Options& o) {
 
   write_csv(o.common.dir / "errors.csv", r.errors);
   write_csv(o.common.dir / "slopes.csv", r.slopes);
+  write_csv(o.common.dir / "budget.csv", r.budget);
   write_plots(o, plan, r);
   write_json(o.common.dir / "summary.json", summary_of(app, o, plan, r));
   write_timings(o.common.dir, timings_of(o, plan, r), app);

@@ -107,8 +107,38 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   EXPECT_EQ(summary["flags"]["max-evaluations"], "3000");
   EXPECT_GT(summary["evaluations"].get<double>(), 0.0);
 
-  int expected_files = 4;  // errors.csv, slopes.csv, summary.json, timings.json
-  for (const char* plot : {"smooth_1d", "discontinuous_1d", "disk_2d", "slopes_vs_k"}) {
+  // budget.csv: each k-dimensional study's last (largest) grid and N of errors.csv.
+  const CsvFile budget(dir / "budget.csv");
+  EXPECT_EQ(budget.header(), (std::vector<std::string>{"integrand", "dims", "reference",
+                                                       "points_per_axis", "trapezoid_evaluations",
+                                                       "trapezoid_error", "monte_carlo_evaluations",
+                                                       "monte_carlo_rmse"}));
+  ASSERT_EQ(budget.size(), 5u);  // gaussian_kd at k = 1..3, unit_ball_kd at k = 2..3
+  for (std::size_t b = 0; b < budget.size(); ++b) {
+    const int dims = static_cast<int>(budget.number(b, "dims"));
+    const double n = budget.number(b, "points_per_axis");
+    EXPECT_EQ(budget.number(b, "reference"), closed_form(budget.text(b, "integrand"), dims));
+    EXPECT_EQ(budget.number(b, "trapezoid_evaluations"), std::pow(n, dims));
+    EXPECT_LE(std::pow(n, dims), 3000.0);  // the largest grid within the budget
+    EXPECT_GT(std::pow(n + 1, dims), 3000.0);
+    EXPECT_EQ(budget.number(b, "monte_carlo_evaluations"), 3000.0);
+    for (std::size_t r = 0; r < errors.size(); ++r) {
+      if (errors.text(r, "integrand") != budget.text(b, "integrand") ||
+          errors.number(r, "dims") != dims)
+        continue;
+      if (errors.text(r, "method") == "trapezoid" && errors.number(r, "points_per_axis") == n) {
+        EXPECT_EQ(errors.text(r, "abs_error"), budget.text(b, "trapezoid_error"));
+      }
+      if (errors.text(r, "method") == "monte_carlo" && errors.number(r, "evaluations") == 3000.0) {
+        EXPECT_EQ(errors.text(r, "rmse"), budget.text(b, "monte_carlo_rmse"));
+      }
+    }
+  }
+  EXPECT_EQ(summary["at_budget"].size(), 5u);
+
+  int expected_files = 5;  // errors.csv, slopes.csv, budget.csv, summary.json, timings.json
+  for (const char* plot :
+       {"smooth_1d", "discontinuous_1d", "disk_2d", "slopes_vs_k", "error_at_budget_vs_k"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".gp"))) << plot;
     ++expected_files;
     if (mcrt::gnuplot_available()) {
@@ -145,6 +175,7 @@ TEST(Ch03Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   EXPECT_EQ(read_text(one / "errors.csv"), read_text(two / "errors.csv"));
   EXPECT_EQ(read_text(one / "slopes.csv"), read_text(two / "slopes.csv"));
+  EXPECT_EQ(read_text(one / "budget.csv"), read_text(two / "budget.csv"));
   const auto other = fresh_dir("ch03_seed6");
   ASSERT_EQ(run_program(k_program, k_tiny + " --seed 6 --out " + other.string()).exit_code, 0);
   EXPECT_NE(read_text(one / "errors.csv"), read_text(other / "errors.csv"));  // Monte Carlo rows
