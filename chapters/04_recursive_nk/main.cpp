@@ -10,6 +10,7 @@
 //     image = render with incidentRadiance (N branches per hit, cut at depth k)
 //     record its rays (closest-hit queries), its time and its mean radiance
 //   limit = the mean radiance with N = 1 cut far deeper: what every cut at k is missing
+//   the grid of images: every (N, k) at about one cost (--grid-budget rays per pixel)
 //   at one ray budget per pixel: N = 1 with many camera samples against N > 1 with few
 //
 // Its three problems become numbers: the rays grow as N^k, the cut at depth k drops the light
@@ -57,6 +58,9 @@ const Chapter k_chapter{"ch04_recursive_nk",
 // cut at k + 1 extends the path cut at k, so their differences are far less noisy than they.
 constexpr int k_limit_depth = 32;
 constexpr int k_light_spp = 64;
+// grid.png's radiance is multiplied by this before the sRGB encoding (2 stops), so that the
+// walls, which receive a few percent of the lamp's radiance, are not black.
+constexpr double k_grid_exposure = 2.0;
 
 struct Options {
   CommonOptions common;
@@ -68,10 +72,13 @@ struct Options {
   double max_rays = 2e9;                   // refuse runs predicted to trace more rays
   int equal_cost_depth = 3;                // k of the equal-cost comparison
   int budget = 600;                        // rays per pixel of each equal-cost render
+  int grid_budget = 1024;                  // rays per pixel of each panel of grid.png
 };
 
-// 1. The explosion, and 3. the images: every N, every k (rays.csv, grid.png).
-Table sweep(RecursiveRenderer& render_recursive, const Options& o, std::vector<Image>& images) {
+// 1. The explosion, and 3. the images: every N, every k (rays.csv, grid.png). A panel of the
+// grid is the sweep's image, or where --grid-budget pays for more samples, a render of its own.
+Table sweep(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan,
+            std::vector<Image>& images) {
   Table rays({{"branching", Column::integer}, {"depth", Column::integer}, {"rays", Column::integer},
               {"predicted_max_rays", Column::integer}, {"seconds", Column::real, 6},
               {"rays_per_second", Column::real, 6}, {"mean_radiance", Column::real, 9}});
@@ -81,7 +88,9 @@ Table sweep(RecursiveRenderer& render_recursive, const Options& o, std::vector<I
       RenderResult r = render_recursive({n, k}, o.spp, 0);
       rays.add_row({n, k, r.rays, pixels * o.spp * max_rays_per_sample(n, k), r.seconds,
                     r.rays_per_second(), mean_radiance(r.image)});
-      images.push_back(std::move(r.image));
+      const int panel_spp = plan.grid_spp[images.size()];
+      images.push_back(panel_spp > o.spp ? render_recursive({n, k}, panel_spp, 0).image
+                                         : std::move(r.image));
     }
   return rays;
 }
@@ -152,7 +161,7 @@ void run(const CLI::App& app, const Options& o) {
   ProgressBar progress("ch04 sweep", static_cast<std::uint64_t>(plan.predicted_rays), o.common.quiet);
   RecursiveRenderer render_recursive{scene, camera, o.common.seed, o.common.threads, &progress, {}};
   std::vector<Image> images;
-  const Table rays = sweep(render_recursive, o, images);
+  const Table rays = sweep(render_recursive, o, plan, images);
   const Table missing = missing_light(render_recursive, o, plan);
   const Table equal = equal_cost(render_recursive, o, plan);
   progress.finish();
@@ -166,7 +175,12 @@ void run(const CLI::App& app, const Options& o) {
   write_plots(o.common.dir, o.branching, o.spp, k_light_spp,
               missing.at(0, "limit_mean_radiance").number(), plan.limit_depth, o.budget,
               o.equal_cost_depth, rays.numbers("mean_radiance"), error);
-  write_grid(o.common.dir, images, o.branching, o.max_depth, o.spp, o.image.width);
+  write_grid(o.common.dir, std::move(images), o.branching, o.max_depth, plan.grid_spp,
+             o.grid_budget, k_grid_exposure, o.image.width);
+  write_plot(o.common.dir,
+             missing_light_plot(missing.numbers("missing_fraction"),
+                                o.scene.scene == "furnace" ? o.scene.params.furnace_albedo : 0.0,
+                                k_light_spp, plan.limit_depth));
   write_summary(k_chapter, app, o, plan, render_recursive, rays, missing, equal, best, verdict,
                 k_light_spp);
   if (!o.common.quiet)
@@ -190,5 +204,7 @@ int main(int argc, char** argv) {
                     "Depth k of the equal-cost comparison", 0, 64);
   add_number_option(app, "--budget", o.budget, "Rays per pixel of each equal-cost render", 1,
                     1 << 20);
+  add_number_option(app, "--grid-budget", o.grid_budget,
+                    "Rays per pixel of each panel of grid.png (at least --spp samples)", 1, 1 << 20);
   return app.run(argc, argv, [&] { run(app, o); });
 }

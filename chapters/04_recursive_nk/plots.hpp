@@ -3,6 +3,7 @@
 // every image of the sweep.
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +18,43 @@
 
 namespace mcrt {
 
+// The a of the guide a^(k+1) to the missing fractions m_k = 1 - L(k) / limit: the least-squares
+// fit of log m_k = (k + 1) log a over the positive m_k (in the furnace m_k = a^(k+1) exactly,
+// a its albedo); 0 when none is positive.
+inline double fitted_albedo(const std::vector<double>& missing) {
+  double sum_xy = 0.0, sum_xx = 0.0;
+  for (std::size_t k = 0; k < missing.size(); ++k)
+    if (missing[k] > 0.0) {
+      const double x = static_cast<double>(k + 1);
+      sum_xy += x * std::log(missing[k]);
+      sum_xx += x * x;
+    }
+  return sum_xx > 0.0 ? std::exp(sum_xy / sum_xx) : 0.0;
+}
+
+// The missing light 1 - L(k) / limit against k on a log axis, where a geometric decay a^(k+1)
+// is a straight line, with that guide. `albedo`: the furnace's a, or 0 to fit it.
+inline Plot missing_light_plot(const std::vector<double>& missing, double albedo, int light_spp,
+                               int limit_depth) {
+  const bool fitted = albedo <= 0.0;
+  const double a = fitted ? fitted_albedo(missing) : albedo;
+  Plot plot{"missing_light_vs_depth",
+            "Missing light against depth: it decays geometrically, a straight line on a log axis",
+            "depth k", "missing fraction 1 - L(k) / limit", false, true,
+            fmt::format("a = {:.6g}\nset xtics 1\nset autoscale xfix\nset key top right\n", a),
+            fmt::format("plot 'missing_light.csv' using \"depth\":(column(\"missing_fraction\") > 0 ? "
+                        "column(\"missing_fraction\") : 1/0) with linespoints pt 7 lw 3 lc 'black' "
+                        "title 'N = 1, {} spp, against the limit at k = {}', a**(x + 1) with lines "
+                        "dt 2 lw 2 lc rgb '#d62728' title 'a^{{k+1}}, a = {:.3f}{}'",
+                        light_spp, limit_depth, a,
+                        fitted ? " (fitted: the effective albedo of the scene)" : " (the albedo)")};
+  plot.y_values = missing;
+  if (a > 0.0)
+    for (std::size_t k = 0; k < missing.size(); ++k)
+      plot.y_values.push_back(std::pow(a, static_cast<double>(k + 1)));
+  return plot;
+}
+
 // rays_vs_depth, mean_radiance_vs_depth and equal_cost, over rays.csv, missing_light.csv and
 // equal_cost.csv; one line per N, picked out by the branching column.
 // `radiances` and `errors` are the values the second and third plots draw (all zero without
@@ -25,7 +63,8 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
                         int spp, int light_spp, double limit, int limit_depth, int budget,
                         int equal_cost_depth, const std::vector<double>& radiances,
                         const std::vector<double>& errors) {
-  const std::string per_n = fmt::format("Ns = '{}'\nset xtics 1\n", fmt::join(branching, " "));
+  const std::string per_n =
+      fmt::format("Ns = '{}'\nset xtics 1\nset autoscale xfix\n", fmt::join(branching, " "));
   const auto of_n = [](const char* column) {
     return fmt::format("'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
                        "column(\"{}\") : NaN)", column);
@@ -52,27 +91,37 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
   Plot equal{"equal_cost",
               fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
               "branching N", "RMS error at the budget", true, true,
-              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [0.8:{}]\n",
-                          fmt::join(branching, ", "), 1.25 * branching.back()),
+              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [{}:{}]\n",
+                          fmt::join(branching, ", "), branching.front(), branching.back()),
               "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
               "pt 7 lw 2 title 'RMS error'"};
   equal.y_values = errors;
+  equal.x_values.assign(branching.begin(), branching.end());  // one N: a range around it
   write_plot(out, equal);
 }
 
-// grid.png: every image of the sweep, rows N and columns k. Small images are blown up (nearest
+// grid.png: every image of the sweep, rows N and columns k, each panel at its own spp (about
+// one cost each: --grid-budget rays per pixel) and brightened by `exposure` (radiance times it
+// before the sRGB encoding) so the dim walls show. Small images are blown up (nearest
 // neighbour, so the noise stays visible) to about 256 wide.
-inline void write_grid(const std::filesystem::path& out, const std::vector<Image>& images,
-                       const std::vector<int>& branching, int max_depth, int spp, int width) {
+inline void write_grid(const std::filesystem::path& out, std::vector<Image> images,
+                       const std::vector<int>& branching, int max_depth,
+                       const std::vector<int>& spp, int grid_budget, double exposure, int width) {
   std::vector<std::string> labels;  // in the sweep's order
   for (int n : branching)
-    for (int k = 0; k <= max_depth; ++k) labels.push_back(fmt::format("N={} k={}", n, k));
+    for (int k = 0; k <= max_depth; ++k)
+      labels.push_back(fmt::format("N={} k={} {}spp", n, k, spp[labels.size()]));
+  for (Image& image : images)
+    for (Color& c : image.pixels) c *= exposure;
   const int factor = std::clamp(256 / width, 1, 4);
   SheetLayout layout;
   layout.columns = max_depth + 1;
   layout.label_scale = width * factor >= 120 ? 2 : 1;
-  layout.title = fmt::format("rows: N = {}   columns: depth k = 0..{}   {} spp",
-                             fmt::join(branching, ","), max_depth, spp);
+  const double stops = std::log2(exposure);
+  layout.title = fmt::format("rows N = {}, columns k = 0..{}; each ~{} rays/pixel; exposure x{:g} "
+                             "({:+g} stop{})",
+                             fmt::join(branching, ","), max_depth, grid_budget, exposure, stops,
+                             std::abs(stops) == 1.0 ? "" : "s");
   write_png(out / "grid.png", labelled_grid(images, labels, factor, layout));
 }
 

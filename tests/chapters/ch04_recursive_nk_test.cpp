@@ -1,6 +1,7 @@
 // Chapter 04 as a student runs it: a tiny sweep and its tables, exact ray counts in the
 // furnace, reproducibility across thread counts, the --max-rays refusal and bad input.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -18,9 +19,10 @@ namespace {
 
 const std::string k_program = "ch04_recursive_nk";
 // 8 x 6 pixels, N = 1 and 2, k = 0..2; equal cost at depth 1 with 6 rays per pixel, which
-// buys N = 1 three samples (2 rays each) and N = 2 two samples (3 rays each).
+// buys N = 1 three samples (2 rays each) and N = 2 two samples (3 rays each); grid panels of
+// 64 rays per pixel.
 const std::string k_tiny = "--width 8 --height 6 --spp 1 --branching 2,1 --max-depth 2 "
-                           "--equal-cost-depth 1 --budget 6 --quiet";
+                           "--equal-cost-depth 1 --budget 6 --grid-budget 64 --quiet";
 constexpr std::uint64_t k_pixels = 8 * 6;
 
 // The header row of a CSV file, as written.
@@ -95,8 +97,17 @@ TEST(Ch04Test, TinySweepWritesItsTablesPlotsAndSummary) {
   EXPECT_TRUE(best == 1 || best == 2);
   EXPECT_FALSE(summary["equal_cost"]["conclusion"].get<std::string>().empty());
   EXPECT_EQ(summary["flags"]["max-depth"], "2");
+  // The grid's panels cost about --grid-budget (64) rays per pixel each, at least 1 spp.
+  ASSERT_EQ(summary["grid"]["spp"].size(), 6u);
+  EXPECT_EQ(summary["grid"]["rays_per_pixel"], 64);
+  std::size_t panel = 0;
+  for (int n : {1, 2})  // --branching is sorted
+    for (int k = 0; k <= 2; ++k, ++panel)
+      EXPECT_EQ(summary["grid"]["spp"][panel].get<std::uint64_t>(),
+                std::max<std::uint64_t>(1, 64 / mcrt::max_rays_per_sample(n, k)))
+          << n << " " << k;
   for (const char* file : {"grid.png", "rays_vs_depth.gp", "mean_radiance_vs_depth.gp",
-                           "equal_cost.gp"})
+                           "missing_light_vs_depth.gp", "equal_cost.gp"})
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
 }
 
@@ -112,6 +123,8 @@ TEST(Ch04Test, FurnaceRayCountsEqualThePrediction) {
   ASSERT_EQ(rays.size(), 6u);
   for (std::size_t i = 0; i < rays.size(); ++i)
     EXPECT_EQ(rays.text(i, "rays"), rays.text(i, "predicted_max_rays"));
+  // The missing light's guide is a^(k+1) with the furnace's albedo, not a fitted one.
+  EXPECT_NE(read_text(dir / "missing_light_vs_depth.gp").find("a = 0.6\n"), std::string::npos);
 }
 
 TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
@@ -125,7 +138,7 @@ TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--branching", "--max-depth", "--max-rays", "--spp", "--budget",
-                           "--equal-cost-depth", "--scene", "--seed", "--threads", "--out"})
+                           "--equal-cost-depth", "--grid-budget", "--scene", "--seed", "--threads", "--out"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -195,6 +208,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--budget x", "--budget"},
                       BadInput{"--budget 3 --equal-cost-depth 3", "--budget"},
                       BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
+                      BadInput{"--grid-budget 0", "--grid-budget"},
                       BadInput{"--width 0", "--width"}, BadInput{"--scene moon", "--scene"},
                       BadInput{"--threads 0", "--threads"},
                       // Numbers are read as written: a nan limit no longer lets 1e27 rays start.
