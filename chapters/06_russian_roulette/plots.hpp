@@ -31,7 +31,7 @@ inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s
   Plot plot{"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
                     "k loses nothing",
             "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
-            fmt::format("set key bottom right\nset xrange [-0.5:{}]\n{}", s.depth + 0.5,
+            fmt::format("set key bottom right\nset autoscale xfix\n{}",
                         s.depth <= 20 ? "set xtics 1\n" : ""),
             "plot 0 with lines lc 'gray' notitle, "
             "'bias.csv' using \"k\":\"cut_bias_theory\" with lines dt 2 lw 2 lc 'black' "
@@ -48,14 +48,16 @@ inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s
 
 // efficiency.png: measured 1 / (variance x seconds per path) of each fixed q, the closed form
 // as a curve, the best q ringed, the throughput policy as a line, and the q <= 4a^2/3 band
-// where the variance is infinite shaded.
+// where the variance is infinite shaded. The q axis runs from 0 (the band starts there) to the
+// largest q measured.
 inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSetup& s,
                                   const Table& efficiency) {
-  double best_q = std::nan(""), best = 0.0, throughput = 0.0, highest = 0.0;
+  double best_q = std::nan(""), best = 0.0, throughput = 0.0, highest = 0.0, largest_q = 0.0;
   // Without light every variance is 0 and every efficiency infinite: nothing finite to draw.
   const auto finite = [](double x) { return std::isfinite(x) ? x : 0.0; };
   for (std::size_t i = 0; i < efficiency.size(); ++i) {
     highest = std::max(highest, finite(efficiency.at(i, "efficiency").number()));
+    largest_q = std::max(largest_q, efficiency.at(i, "q").number());
     if (efficiency.at(i, "best_efficiency").number() == 1.0) {
       best_q = efficiency.at(i, "q").number();
       best = efficiency.at(i, "efficiency").number();
@@ -70,13 +72,14 @@ inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSe
       "S(q) = (1 - b**(d + 1)) / (1 - b) + b**(d + 1) / (q - b)\n"
       "V(q) = Le**2 * ((1 + a) / (1 - a) * S(q) - 1 / (1 - a)**2)\n"
       "eff(q) = q > b ? 1 / (V(q) * (d + 1 / (1 - q)) * tray) : NaN\n"
-      "set samples 500\nset xrange [0:1]\nset yrange [0:{:.9g}]\nset key top right\n"
+      "set samples 500\nset xrange [0:{:.9g}]\nset yrange [0:{:.9g}]\nset key top right\n"
       "if (b < 1) set object 1 rect from first 0, graph 0 to first b, graph 1 "
       "fc rgb '#e0e0e0' fs solid noborder behind\n"
       "if (b < 1) set label 2 'q <= 4a^2/3: infinite variance' at first b / 2, graph 0.45 "
       "center rotate by 90 noenhanced\n"
       "{}",
-      s.albedo, s.emission, s.min_depth, s.seconds_per_ray, highest > 0.0 ? 1.35 * highest : 1.0,
+      s.albedo, s.emission, s.min_depth, s.seconds_per_ray, largest_q > 0.0 ? largest_q : 1.0,
+      highest > 0.0 ? 1.35 * highest : 1.0,
       std::isfinite(best_q)
           ? fmt::format("set label 1 'best q = {:g}' at first {:.9g}, first {:.9g} point pt 6 "
                         "ps 3 lw 2 offset 1.5, 1.5\n", best_q, best_q, best)
@@ -90,17 +93,20 @@ inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSe
                           "dt 3 lw 2 lc 2 title 'throughput policy (measured)'", throughput)});
 }
 
-// path_length.png: the fraction of paths that traced r rays against the geometric law.
+// path_length.png: the fraction of paths that traced r rays against the geometric law (rows of
+// no paths, r <= d, left out: the axis starts where the paths do).
 inline void write_path_length_plot(const std::filesystem::path& out, const PlotSetup& s) {
   write_plot(out,
              {"path_length",
               fmt::format("Path lengths at q = {:g}, d = {}: geometric after d + 1 rays",
                           s.fixed_q, s.min_depth),
               "rays traced by the path", "fraction of paths", false, true,
-              "set key top right\nset style fill solid 0.4\n",
-              fmt::format("plot 'path_length.csv' using \"rays\":\"fraction\" with points pt 7 "
-                          "ps 1.2 lc 1 title 'measured', '' using \"rays\":\"probability\" with "
-                          "lines lw 2 lc 'black' title 'q^{{r-d-1}} (1-q), q = {:g}'",
+              "set key top right\nset autoscale xfix\nset style fill solid 0.4\n",
+              fmt::format("plot 'path_length.csv' using (column(\"fraction\") > 0 ? "
+                          "column(\"rays\") : 1/0):\"fraction\" with points pt 7 ps 1.2 lc 1 "
+                          "title 'measured', '' using (column(\"probability\") > 0 ? "
+                          "column(\"rays\") : 1/0):\"probability\" with lines lw 2 lc 'black' "
+                          "title 'q^{{r-d-1}} (1-q), q = {:g}'",
                           s.fixed_q)});
 }
 
