@@ -18,7 +18,8 @@
 namespace mcrt {
 
 // relmse_vs_time_<n>.png for shoot-out scene n: one line per estimator, and a line of slope -1
-// through the first NEE point (an unbiased estimator's relMSE falls as 1/time).
+// through the first NEE point (an unbiased estimator's relMSE falls as 1/time). The time axis
+// ends where the runs do, often within a decade: tics at 1, 2, 5 times the powers of 10.
 inline void write_relmse_plot(const std::filesystem::path& dir, const ShootoutScene& s,
                               std::size_t n) {
   std::string plot = "plot ";
@@ -30,7 +31,9 @@ inline void write_relmse_plot(const std::filesystem::path& dir, const ShootoutSc
         s.scene, s.light_scale, e.name, e.label);
   plot += "c / x with lines dt 2 lc 'black' title 'slope -1'";
   const std::string settings = fmt::format(
-      "set key outside right\nstats 'efficiency.csv' using (strcol(\"scene\") eq \"{}\" && "
+      "set key outside right\nset autoscale xfix\nset format x '%g'\n"
+      "set xtics add (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200, 500)\n"
+      "stats 'efficiency.csv' using (strcol(\"scene\") eq \"{}\" && "
       "abs(column(\"light_scale\") - {}) < 1e-9 && strcol(\"estimator\") eq \"nee\" ? "
       "column(\"rel_mse\") * column(\"seconds\") : 1/0) nooutput\nc = STATS_min\n",
       s.scene, s.light_scale);
