@@ -51,7 +51,8 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
 
 // The compared images (uniform, cosine, cosine at equal time, reference) as PNG and PFM, and
 // the noise strip: the centre of each pdf's
-// scene render (in the order of pdfs) beside the reference's.
+// scene render (in the order of pdfs) beside the reference's, and below them the same centres
+// as 8x8 block means, where the sparse bright pixels' light shows as brightness.
 inline void write_images(const std::filesystem::path& out, const std::vector<HemispherePdf>& pdfs,
                          const std::vector<RenderResult>& scene, const Image& cosine_equal_time,
                          const Image& reference, int spp) {
@@ -72,7 +73,7 @@ inline void write_images(const std::filesystem::path& out, const std::vector<Hem
   strip.push_back(reference);
   labels.push_back("reference");
   write_png(out / "noise_strip.png",
-            centre_detail_strip(strip, labels, fmt::format("at {} spp per pdf", spp)));
+            centre_detail_strip(strip, labels, fmt::format("at {} spp per pdf", spp), 8));
 }
 
 }  // namespace mcrt
