@@ -20,8 +20,8 @@ inline Plot error_plot(double fitted_slope, double guide_constant) {
   plot.x_label = "points N";
   plot.y_label = "rms error of 4M/N";
   plot.log_x = plot.log_y = true;
-  plot.settings = fmt::format("set key bottom left\nset autoscale xfix\nguide(n) = {:.6g} / sqrt(n)\n",
-                              guide_constant);
+  plot.settings = fmt::format(
+      "set key bottom left\nset autoscale xfix\nguide(n) = {:.6g} / sqrt(n)\n", guide_constant);
   plot.plot =
       "plot 'disk_area.csv' using \"n\":\"rmse\":(column(\"rmse\") / sqrt(2 * column(\"trials\"))) "
       "with yerrorbars pt 7 lc rgb '#1f77b4' title 'rmse over the trials', \\\n"

@@ -91,7 +91,8 @@ struct Results {
   Table budget{{text("integrand"), integer("dims"), real("reference", 17, Column::general),
                 integer("points_per_axis"),
                 integer("trapezoid_evaluations"), real("trapezoid_error", 6, Column::scientific),
-                integer("monte_carlo_evaluations"), real("monte_carlo_rmse", 6, Column::scientific)}};
+                integer("monte_carlo_evaluations"),
+                real("monte_carlo_rmse", 6, Column::scientific)}};
   std::vector<SlopeLine> lines;  // one per row of slopes
   double seconds = 0.0;
 };

@@ -42,7 +42,8 @@ inline Plot error_plot(const std::string& name, const std::string& title,
   plot.x_label = "function evaluations N";
   plot.y_label = "error";
   plot.log_x = plot.log_y = true;
-  plot.settings = fmt::format("set key bottom left\nset autoscale xfix\nset style data linespoints\n"
+  plot.settings = fmt::format("set key bottom left\nset autoscale xfix\n"
+                              "set style data linespoints\n"
                               "c_trap = {:.17g}\nc_mc = {:.17g}\n",
                               trapezoid.constant, monte_carlo.constant);
   plot.plot = fmt::format(
@@ -64,7 +65,8 @@ inline Plot error_plot(const std::string& name, const std::string& title,
 inline Plot slopes_plot(const std::vector<double>& dims) {
   const auto series = [](const char* integrand, const char* method) {
     return fmt::format("using (strcol(\"integrand\") eq '{}' && strcol(\"method\") eq '{}' ? "
-                       "column(\"dims\") : 1/0):\"fitted_slope\":\"standard_error\" with yerrorlines",
+                       "column(\"dims\") : 1/0):\"fitted_slope\":\"standard_error\" "
+                       "with yerrorlines",
                        integrand, method);
   };
   Plot plot;

@@ -205,6 +205,7 @@ int main(int argc, char** argv) {
   add_number_option(app, "--budget", o.budget, "Rays per pixel of each equal-cost render", 1,
                     1 << 20);
   add_number_option(app, "--grid-budget", o.grid_budget,
-                    "Rays per pixel of each panel of grid.png (at least --spp samples)", 1, 1 << 20);
+                    "Rays per pixel of each panel of grid.png (at least --spp samples)", 1,
+                    1 << 20);
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -40,8 +40,9 @@ inline Plan make_plan(const auto& o, int limit_depth, int light_spp) {
       // The grid's panels cost about --grid-budget rays per pixel each: as many samples as
       // that pays for, and at least the sweep's (whose image the panel is then).
       const std::uint64_t per_sample = max_rays_per_sample(n, k);
-      const auto spp = static_cast<int>(std::max<std::uint64_t>(
-          static_cast<std::uint64_t>(o.spp), static_cast<std::uint64_t>(o.grid_budget) / per_sample));
+      const auto spp = static_cast<int>(
+          std::max<std::uint64_t>(static_cast<std::uint64_t>(o.spp),
+                                  static_cast<std::uint64_t>(o.grid_budget) / per_sample));
       plan.grid_spp.push_back(spp);
       if (spp > o.spp) plan.predicted_rays += rays(n, k, spp);
     }

@@ -42,8 +42,9 @@ inline Plot missing_light_plot(const std::vector<double>& missing, double albedo
             "Missing light against depth: it decays geometrically, a straight line on a log axis",
             "depth k", "missing fraction 1 - L(k) / limit", false, true,
             fmt::format("a = {:.6g}\nset xtics 1\nset autoscale xfix\nset key top right\n", a),
-            fmt::format("plot 'missing_light.csv' using \"depth\":(column(\"missing_fraction\") > 0 ? "
-                        "column(\"missing_fraction\") : 1/0) with linespoints pt 7 lw 3 lc 'black' "
+            fmt::format("plot 'missing_light.csv' using \"depth\":"
+                        "(column(\"missing_fraction\") > 0 ? column(\"missing_fraction\") : 1/0) "
+                        "with linespoints pt 7 lw 3 lc 'black' "
                         "title 'N = 1, {} spp, against the limit at k = {}', a**(x + 1) with lines "
                         "dt 2 lw 2 lc rgb '#d62728' title 'a^{{k+1}}, a = {:.3f}{}'",
                         light_spp, limit_depth, a,
@@ -91,7 +92,8 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
   Plot equal{"equal_cost",
               fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
               "branching N", "RMS error at the budget", true, true,
-              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\nset xrange [{}:{}]\n",
+              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\n"
+                          "set xrange [{}:{}]\n",
                           fmt::join(branching, ", "), branching.front(), branching.back()),
               "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
               "pt 7 lw 2 title 'RMS error'"};

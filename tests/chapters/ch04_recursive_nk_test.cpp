@@ -138,7 +138,8 @@ TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--branching", "--max-depth", "--max-rays", "--spp", "--budget",
-                           "--equal-cost-depth", "--grid-budget", "--scene", "--seed", "--threads", "--out"})
+                           "--equal-cost-depth", "--grid-budget", "--scene", "--seed",
+                           "--threads", "--out"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
