@@ -9,7 +9,7 @@
 //     fit the slope of log(error) against log(N), beside the slope theory predicts
 //
 // The studies, their grids and the checks on the work are in study_plan.hpp; the figures in
-// plots.hpp.
+// plots.hpp; summary.json, timings.json and the console in report.hpp.
 
 #include <cmath>
 #include <vector>
@@ -27,6 +27,7 @@
 #include "io/summary.hpp"
 #include "io/table.hpp"
 #include "plots.hpp"
+#include "report.hpp"
 #include "study_plan.hpp"
 
 using namespace mcrt;
@@ -150,40 +151,6 @@ void write_plots(const Options& o, const Plan& plan, const Results& r) {
   write_plot(o.common.dir, budget_plot(o.max_evaluations, r.budget));
 }
 
-Json summary_of(const CLI::App& app, const Options& o, const Plan& plan, const Results& r) {
-  Json summary = start_summary(k_chapter, o.common);
-  summary["trials"] = o.trials;
-  summary["max_evaluations"] = o.max_evaluations;
-  summary["dims"] = o.dims;
-  summary["evaluations"] = plan.total_evaluations;
-  Json references = Json::object();
-  for (const Study& study : plan.studies)
-    references[study.name() + "_" + std::to_string(study.dims)] = reference(study);
-  summary["references"] = references;
-  summary["slopes"] = r.slopes.json();
-  summary["at_budget"] = r.budget.json();
-  summary["flags"] = flags_json(app);
-  return summary;
-}
-
-Json timings_of(const Options& o, const Plan& plan, const Results& r) {
-  Json timings = start_timings(k_chapter, o.common);
-  timings["seconds"] = r.seconds;
-  timings["evaluations_per_second"] = r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0;
-  return timings;
-}
-
-void print_report(const Options& o, const Plan& plan, const Results& r) {
-  fmt::print("{}  N up to {}  {} trials  k = {}  {} threads\n{}", k_chapter.name,
-             o.max_evaluations, o.trials, fmt::join(o.dims, ","), o.common.threads,
-             r.slopes.console({"integrand", "dims", "method", "fitted_slope", "standard_error",
-                               "theory_slope"}));
-  fmt::print("  {:.3g} evaluations in {:.2f} s ({:.3g} per second)\n"
-             "  wrote {}/{{errors,slopes,budget}}.csv, summary.json, timings.json and plots\n",
-             plan.total_evaluations, r.seconds,
-             r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0, o.common.out.string());
-}
-
 void run(const CLI::App& app, const Options& o) {
   const Plan plan = make_plan(o.dims, o.max_evaluations, o.trials);
   // Every task (a grid n, or N with its trials) on any core, largest first; each writes
@@ -203,9 +170,9 @@ void run(const CLI::App& app, const Options& o) {
   write_csv(o.common.dir / "slopes.csv", r.slopes);
   write_csv(o.common.dir / "budget.csv", r.budget);
   write_plots(o, plan, r);
-  write_json(o.common.dir / "summary.json", summary_of(app, o, plan, r));
-  write_timings(o.common.dir, timings_of(o, plan, r), app);
-  if (!o.common.quiet) print_report(o, plan, r);
+  write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, plan, r));
+  write_timings(o.common.dir, timings_of(k_chapter, o, plan, r), app);
+  if (!o.common.quiet) print_report(k_chapter, o, plan, r);
 }
 
 }  // namespace

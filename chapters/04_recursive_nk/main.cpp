@@ -136,21 +136,6 @@ Table equal_cost(RecursiveRenderer& render_recursive, const Options& o, const Pl
   return table;
 }
 
-// The equal-cost verdict in one sentence: which N has the smallest error at the budget.
-std::string conclusion(const Options& o, const Table& equal, std::size_t best) {
-  const std::vector<double> error = equal.numbers("rms_error_at_budget");
-  const auto worst = static_cast<std::size_t>(std::max_element(error.begin(), error.end()) - error.begin());
-  const auto n = [&](std::size_t row) { return equal.at(row, "branching").number(); };
-  const auto spp = [&](std::size_t row) { return equal.at(row, "spp").number(); };
-  return fmt::format("At equal cost ({} rays per pixel, depth {}) N = {} with {} spp has the "
-                     "smallest error, {:.3g}; N = {} with {} spp has {:.2f}x more. {}",
-                     o.budget, o.equal_cost_depth, n(best), spp(best), error[best], n(worst),
-                     spp(worst), error[best] > 0.0 ? error[worst] / error[best] : 1.0,
-                     n(best) == 1 ? "Spend rays on camera samples, not on branches: one path "
-                                    "per sample is chapter 05's path tracer."
-                                  : "Here branching paid off.");
-}
-
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   const Plan plan = make_plan(o, k_limit_depth, k_light_spp);

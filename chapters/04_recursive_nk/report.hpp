@@ -1,7 +1,10 @@
 #pragma once
-// Chapter 04's report: summary.json, timings.json and the console tables, from the run's Tables.
+// Chapter 04's report: the equal-cost verdict, summary.json, timings.json and the console
+// tables, from the run's Tables.
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -13,6 +16,22 @@
 #include "render/recursive_render.hpp"
 
 namespace mcrt {
+
+// The equal-cost verdict in one sentence: which N has the smallest error at the budget.
+inline std::string conclusion(const auto& o, const Table& equal, std::size_t best) {
+  const std::vector<double> error = equal.numbers("rms_error_at_budget");
+  const auto worst =
+      static_cast<std::size_t>(std::max_element(error.begin(), error.end()) - error.begin());
+  const auto n = [&](std::size_t row) { return equal.at(row, "branching").number(); };
+  const auto spp = [&](std::size_t row) { return equal.at(row, "spp").number(); };
+  return fmt::format("At equal cost ({} rays per pixel, depth {}) N = {} with {} spp has the "
+                     "smallest error, {:.3g}; N = {} with {} spp has {:.2f}x more. {}",
+                     o.budget, o.equal_cost_depth, n(best), spp(best), error[best], n(worst),
+                     spp(worst), error[best] > 0.0 ? error[worst] / error[best] : 1.0,
+                     n(best) == 1 ? "Spend rays on camera samples, not on branches: one path "
+                                    "per sample is chapter 05's path tracer."
+                                  : "Here branching paid off.");
+}
 
 // summary.json: the setup, the totals, every table and the equal-cost verdict; timings.json.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
