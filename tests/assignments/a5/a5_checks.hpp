@@ -42,6 +42,16 @@ std::vector<FurnacePath> a5_furnace_paths(const Scene& furnace, int n, std::uint
   return paths;
 }
 
+/// Whether a furnace path's value (a = albedo, Le = 1, depth k) is exact: Le (1 + a + ... + a^k),
+/// or that of a path ended early at a direction of density 0 (u on the edge of [0,1)^2, 2^-32
+/// per bounce): Le (1 + ... + a^j), j < k, allowed at most `early` times in all.
+inline bool exact_furnace_path(double value, double a, int k, double tolerance, int& early) {
+  if (std::abs(value - furnace_radiance(a, 1.0, k)) <= tolerance * value) return true;
+  for (int j = 0; j < k; ++j)
+    if (std::abs(value - furnace_radiance(a, 1.0, j)) <= tolerance * value) return ++early <= 2;
+  return false;
+}
+
 // ---------------------------------------------------------------------------------------------
 // a5.1 Russian roulette
 
@@ -141,7 +151,8 @@ RunningStats furnace_bounce_weights(Radiance&& radiance, const HemispherePdf& pd
 
 /// With the cosine pdf the weight is f_r cos / p = (a / pi) cos / (cos / pi) = a exactly, so
 /// in the furnace (a = 0.5, k = 3) every one of 2000 paths returns Le (1 + a + a^2 + a^3):
-/// checked path by path (to 1e-9), no statistics, nothing to fail by chance.
+/// checked path by path (to 1e-9), no statistics (exact_furnace_path: but for at most two
+/// paths ended early at a direction of density 0).
 template <class Radiance>
 TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
   constexpr double a = 0.5;
@@ -149,12 +160,12 @@ TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
   const HemispherePdf cosine = cosine_power_pdf(1);
   const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance(a, 1.0, k);
-  int wrong = 0;
+  int wrong = 0, early = 0;
   double first_wrong = 0.0;
   for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 7, 79, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
          return radiance(s, r, k, cosine, rng, c);
        }))
-    if (!(std::abs(p.radiance - expected) <= 1e-9 * expected) && wrong++ == 0) first_wrong = p.radiance;
+    if (!exact_furnace_path(p.radiance, a, k, 1e-9, early) && wrong++ == 0) first_wrong = p.radiance;
   if (wrong == 0)
     return {true, fmt::format("furnace a = 0.5, k = 3, cosine pdf: all 2000 paths return {:.6f}", expected)};
   const RunningStats w = furnace_bounce_weights(radiance, cosine, a);
@@ -179,8 +190,10 @@ TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
 }
 
 /// Any pdf gives the same mean; the variance is the pdf's (importance_path_tracer.hpp). The
-/// furnace (a = 0.5, k = 3) with `pdf`: 20000 paths' mean and variance z-tested against the
-/// closed forms, Sidak-combined, at the three grading seeds.
+/// furnace (a = 0.5, k = 3) with `pdf`: 20000 paths' mean z-tested against the closed form,
+/// and for the uniform pdf their variance too (Sidak-combined), at the three grading seeds.
+/// Only the mean for cos^m, m >= 2: its weight w ~ 1/cos^(m-1) has an infinite fourth moment,
+/// so the sample variance has no standard error to test it with.
 template <class Radiance>
 double importance_furnace_p_value(Radiance&& radiance, const HemispherePdf& pdf, std::uint64_t seed, double& mean_sum) {
   constexpr double a = 0.5;
@@ -197,6 +210,7 @@ double importance_furnace_p_value(Radiance&& radiance, const HemispherePdf& pdf,
   }
   mean_sum += s.mean();
   const double p_mean = z_test_p_value(s.mean(), expected, std::sqrt(variance / n));
+  if (pdf.kind != HemispherePdf::uniform) return p_mean;
   return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
 }
 
@@ -236,7 +250,7 @@ inline PathEnd nee_depth_cut(int k) {
 
 /// In the furnace (unit sphere, the whole sphere the light) every light sample gives exactly
 /// f_r Le cos_x cos_y / (r^2 p_A) = a Le, and the cosine bounce weighs a: each of 2000 paths at
-/// k = 3 returns Le (1 + a + a^2 + a^3), checked path by path (to 1e-6).
+/// k = 3 returns Le (1 + a + a^2 + a^3), checked path by path (to 1e-6; exact_furnace_path).
 template <class Nee>
 TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
   constexpr double a = 0.5;
@@ -244,12 +258,12 @@ TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
   const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance(a, 1.0, k);
   RunningStats all;
-  int wrong = 0;
+  int wrong = 0, early = 0;
   for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 11, 80, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
          return radiance(s, r, nee_depth_cut(k), rng, c);
        })) {
     all.add(p.radiance);
-    wrong += !(std::abs(p.radiance - expected) <= 1e-6 * expected);
+    wrong += !exact_furnace_path(p.radiance, a, k, 1e-6, early);
   }
   if (wrong == 0)
     return {true, fmt::format("furnace a = 0.5, k = 3: all 2000 paths return {:.6f}", expected)};
