@@ -1,46 +1,87 @@
 #!/bin/sh
-# The a2 kit, generated into a temporary folder, built and graded (CTest assignments.a2_kit_*,
-# registered with -DMCRT_ASSIGNMENT_KIT_TESTS=ON; each builds the common libraries from
-# scratch: about 2 minutes of CPU, more on a busy machine).
-#   kit_test.sh ROOT stub       the stub kit: its stub throws "not implemented: a2.1 ...", no
-#                               marker and no hidden test is in it, and its grader fails a2.1 to
-#                               a2.4 with NOT IMPLEMENTED feedback
-#   kit_test.sh ROOT solution   the solution kit, graded with the hidden tests: full marks
+# One assignment's kit, generated into a temporary folder, built and graded (scripts/test
+# --kits runs the stub kit of every assignment; CTest assignments.a2_kit_* with
+# -DMCRT_ASSIGNMENT_KIT_TESTS=ON). Each builds the common libraries from scratch.
+#   kit_test.sh ROOT stub [aN]      the stub kit (default a2): no marker, no hidden test, no
+#                                   other handout, none of the leaks below; it builds, and its
+#                                   grader scores 0, every test failing, with NOT IMPLEMENTED
+#                                   feedback naming every task of aN
+#   kit_test.sh ROOT solution [aN]  the solution kit, graded with the hidden tests: full marks
 set -eu
-root=$1 mode=$2
+root=$1 mode=$2 a=${3:-a2}
 tmp=$(mktemp -d /tmp/mcrt-kit-test.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-fail() { echo "kit_test: $*" >&2; exit 1; }
+fail() { echo "kit_test $a: $*" >&2; exit 1; }
 
 if [ "$mode" = solution ]; then
-  "$root/scripts/make-assignment" a2 --out "$tmp/kit" --solution
-  "$root/scripts/grade" a2 --kit "$tmp/kit" --hidden "$root/tests/assignments/hidden" \
+  "$root/scripts/make-assignment" "$a" --out "$tmp/kit" --solution
+  "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$root/tests/assignments/hidden" \
       --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1 || { cat "$tmp/grade.txt"; fail "the solution kit lost points"; }
   cat "$tmp/grade.txt"
   grep -q '"visibility": "after_published"' "$tmp/results.json" || fail "no hidden test was graded"
   exit 0
 fi
 
-"$root/scripts/make-assignment" a2 --out "$tmp/kit"
+"$root/scripts/make-assignment" "$a" --out "$tmp/kit"
 kit=$tmp/kit
-grep -q 'throw std::logic_error("not implemented: a2.1 sample_uniform_hemisphere")' \
-    "$kit/common/sampling/hemisphere.hpp" || fail "the a2.1 stub is not in the kit"
-grep -q 'const double cos_theta = u.x;' "$kit/common/sampling/hemisphere.hpp" && fail "the a2.1 solution is in the kit"
 grep -rq "// ASSIGNMENT" "$kit/common" "$kit/chapters" "$kit/tests" && fail "a marker is left in the kit"
 [ -e "$kit/tests/assignments/hidden" ] && fail "hidden tests are in the kit"
-[ -e "$kit/docs/assignments/a2.md" ] || fail "the handout is missing"
-[ -e "$kit/docs/assignments/a1.md" ] && fail "another assignment's handout is in the kit"
-# The later assignments that need a2.1 are stubbed too; a1 keeps its solution.
-grep -q 'not implemented: a4.1 estimate_path_radiance' "$kit/common/render/path_tracer.hpp" || fail "a4.1 is not stubbed"
-grep -q 'not implemented: a1' "$kit/common/integration/disk_area.hpp" && fail "a1 is stubbed in the a2 kit"
+[ -e "$kit/docs/assignments/$a.md" ] || fail "the handout is missing"
+[ "$(ls "$kit/docs/assignments")" = "$a.md" ] || fail "another handout is in the kit: $(ls "$kit/docs/assignments")"
+[ -e "$kit/tests/known_bugs/assignments.hpp" ] && fail "a3's known-wrong recursions are in the kit"
 
-if "$kit/scripts/grade" a2 --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1; then
+# The leaks: a solution of the kit's own assignment anywhere in it (the grep -F strings are
+# lines of the solutions, or of near-copies of them).
+leak() {  # leak FILE-OR-DIR STRING WHAT
+  if grep -rqF -- "$2" "$kit/$1" 2>/dev/null; then fail "leak: $3 ($1: $2)"; fi
+}
+case "$a" in
+  a2)
+    grep -q 'throw std::logic_error("not implemented: a2.1 sample_uniform_hemisphere")' \
+        "$kit/common/sampling/hemisphere.hpp" || fail "the a2.1 stub is not in the kit"
+    leak common/sampling/hemisphere.hpp 'const double cos_theta = u.x;' "a2.1's sampler"
+    # cos^m at m = 0 is a2.1's sampler, at m = 1 a2.2's (by inversion); its pdf both pdfs
+    leak common/sampling/cosine_power.hpp 'std::pow(u.x, 1.0 / (m + 1.0))' "the cosine-power sampler"
+    leak common/sampling/cosine_power.hpp '(m + 1.0) * k_inv_two_pi' "the cosine-power pdf"
+    leak tests 'inline Vec2 disk_with_radius_u' "known_bugs/samplers.hpp (a2.4 but for one line)"
+    # a2.1 is used by a3.1 and a4.1: stubbed too; a1 keeps its solution
+    grep -q 'not implemented: a4.1 estimate_path_radiance' "$kit/common/render/path_tracer.hpp" || fail "a4.1 is not stubbed"
+    grep -q 'not implemented: a1' "$kit/common/integration/disk_area.hpp" && fail "a1 is stubbed in the a2 kit"
+    ;;
+  a3)
+    leak common/render/recursive_estimator.hpp 'incident_radiance(scene, spawn_ray(' "a3.1's recursion"
+    ;;
+esac
+case "$a" in
+  a2|a4)  # a4.1's path loop, and the near-copies of it
+    leak common/render/path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "a4.1's loop"
+    leak common/render/importance_path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / p_wi;' "the importance-sampled path tracer"
+    leak common/render/russian_roulette.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "the roulette path tracer"
+    leak tests 'path_radiance_with(' "known_bugs/path_tracers.hpp's path loop"
+    leak tests 'roulette_path_with(' "known_bugs/russian_roulette.hpp's path loop"
+    leak tests 'reference_radiance(const ReferenceQuadBox' "support/quad_box_reference.hpp's path tracer"
+    ;;
+esac
+case "$a" in
+  a2|a4|a5)  # a5's estimators, their copies in chapter 08's baselines and MIS, the known bugs
+    leak common 'beta /= q;' "Russian roulette's 1/q"
+    leak common 'beta *= material.albedo;' "the cosine-sampled weight f_r cos / p = rho"
+    leak common/render/light_sampling.hpp 'area_to_solid_angle_pdf(y.pdf_area' "the light sample's change of measure"
+    leak tests 'wrong_nee_radiance(' "known_bugs/nee.hpp's NEE loop"
+    leak tests 'path_radiance_cosine_pdf_without_inv_pi' "known_bugs/importance_sampling.hpp"
+    ;;
+esac
+
+# Every task's tests fail: the grader scores 0, with NOT IMPLEMENTED feedback for each task.
+if "$kit/scripts/grade" "$a" --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1; then
   cat "$tmp/grade.txt"; fail "the stub kit got full marks"
 fi
 cat "$tmp/grade.txt"
-for task in a2.1 a2.2 a2.3 a2.4; do
+grep -q "(the build failed)" "$tmp/grade.txt" && fail "the stub kit does not build"
+for task in $(python3 -c "import json,sys; print(' '.join(t for t in json.load(open(sys.argv[1]))['stubbed'] if t.startswith(sys.argv[2] + '.')))" "$kit/.assignment" "$a"); do
   grep -qF "NOT IMPLEMENTED: task $task (" "$tmp/grade.txt" || fail "no feedback names task $task"
 done
-grep -q '^a2: 0 / ' "$tmp/grade.txt" || fail "the stub kit scored points"
+grep -q "^$a: 0 / " "$tmp/grade.txt" || fail "the stub kit scored points"
 python3 -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['score']==0 and r['tests'] and all({'name','score','max_score','output','visibility'} <= set(t) for t in r['tests'])" \
     "$tmp/results.json" || fail "results.json is not in Gradescope's format"
+echo "kit_test $a: the stub kit builds, scores 0 with NOT IMPLEMENTED for every task, and leaks none of the checked solutions"
