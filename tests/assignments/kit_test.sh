@@ -69,6 +69,10 @@ case "$a" in
     leak common/render/light_sampling.hpp 'area_to_solid_angle_pdf(y.pdf_area' "the light sample's change of measure"
     leak tests 'wrong_nee_radiance(' "known_bugs/nee.hpp's NEE loop"
     leak tests 'path_radiance_cosine_pdf_without_inv_pi' "known_bugs/importance_sampling.hpp"
+    # the chapter pages quote the loops: their code blocks are left out too
+    leak docs 'beta /= q;' "chapter 06's page quoting the roulette"
+    leak docs 'if (bounce == 0) radiance += material.emission;' "chapter 08's page quoting NEE"
+    leak docs 'const double p_wi = hemisphere_pdf(pdf, cos_theta_i);' "chapter 07's page quoting its loop"
     ;;
 esac
 
