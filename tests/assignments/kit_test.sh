@@ -7,6 +7,9 @@
 #                                   grader scores 0, every test failing, with NOT IMPLEMENTED
 #                                   feedback naming every task of aN
 #   kit_test.sh ROOT solution [aN]  the solution kit, graded with the hidden tests: full marks
+# With KIT_TEST_REUSE=DIR (scripts/test --kits), the stub kit is synced into DIR/kit, only the
+# files whose content changed being rewritten, and built in DIR/build: one kit after another
+# recompiles only what their stubs change, not the whole project.
 set -eu
 root=$1 mode=$2 a=${3:-a2}
 tmp=$(mktemp -d /tmp/mcrt-kit-test.XXXXXX)
@@ -24,6 +27,29 @@ fi
 
 "$root/scripts/make-assignment" "$a" --out "$tmp/kit"
 kit=$tmp/kit
+build=$tmp/kit/build-grade
+if [ -n "${KIT_TEST_REUSE:-}" ]; then
+  python3 - "$tmp/kit" "$KIT_TEST_REUSE/kit" <<'PY'
+import filecmp, os, shutil, sys
+new, kit = sys.argv[1], sys.argv[2]
+wanted = set()
+for d, _, fs in os.walk(new):
+    for f in fs:
+        rel = os.path.relpath(os.path.join(d, f), new)
+        wanted.add(rel)
+        target = os.path.join(kit, rel)
+        if not (os.path.isfile(target) and filecmp.cmp(os.path.join(new, rel), target, shallow=False)):
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            shutil.copyfile(os.path.join(new, rel), target)
+            shutil.copymode(os.path.join(new, rel), target)
+for d, _, fs in os.walk(kit):
+    for f in fs:
+        if os.path.relpath(os.path.join(d, f), kit) not in wanted:
+            os.remove(os.path.join(d, f))
+PY
+  kit=$KIT_TEST_REUSE/kit
+  build=$KIT_TEST_REUSE/build
+fi
 grep -rq "// ASSIGNMENT" "$kit/common" "$kit/chapters" "$kit/tests" && fail "a marker is left in the kit"
 [ -e "$kit/tests/assignments/hidden" ] && fail "hidden tests are in the kit"
 [ -e "$kit/docs/assignments/$a.md" ] || fail "the handout is missing"
@@ -77,7 +103,7 @@ case "$a" in
 esac
 
 # Every task's tests fail: the grader scores 0, with NOT IMPLEMENTED feedback for each task.
-if "$kit/scripts/grade" "$a" --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1; then
+if "$kit/scripts/grade" "$a" --build "$build" --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1; then
   cat "$tmp/grade.txt"; fail "the stub kit got full marks"
 fi
 cat "$tmp/grade.txt"
