@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "io/contact_sheet.hpp"
+#include "io/labelled_grid.hpp"
 #include "io/text.hpp"
 
 using namespace mcrt;
@@ -347,6 +348,34 @@ TEST(UpscaleTest, RepeatsEachPixelFactorByFactorTimes) {
   EXPECT_TRUE(upscale_nearest(Image(), 5).pixels.empty());
   EXPECT_THROW(upscale_nearest(image, 0), std::invalid_argument);
   EXPECT_THROW(upscale_nearest(image, INT_MAX), std::invalid_argument);  // 3 * factor overflows
+}
+
+TEST(BlockMeansTest, EachBlockHoldsItsMeanAndTheLastBlocksAreClipped) {
+  // 5 x 3 pixels of value (x, y, 1) in blocks of 2: columns {0,1}, {2,3}, {4}; rows {0,1}, {2}.
+  Image image(5, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x) image.at(x, y) = Color(x, y, 1);
+  const Image means = block_means(image, 2);
+  ASSERT_EQ(means.width, 5);
+  ASSERT_EQ(means.height, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x) {
+      const double mean_x = x < 4 ? (x / 2) * 2 + 0.5 : 4.0, mean_y = y < 2 ? 0.5 : 2.0;
+      EXPECT_EQ(means.at(x, y), Color(mean_x, mean_y, 1)) << x << "," << y;
+    }
+  EXPECT_EQ(block_means(image, 1).pixels, image.pixels);
+  EXPECT_THROW(block_means(image, 0), std::invalid_argument);
+}
+
+TEST(BlockMeansTest, TheStripGetsASecondRowOfMeansOnlyWhenAsked) {
+  const std::vector<Image> images(3, Image(30, 30, Color(0.5)));
+  const std::vector<std::string> labels{"a", "b", "c"};
+  const Image one_row = centre_detail_strip(images, labels, "x");
+  const Image two_rows = centre_detail_strip(images, labels, "x", 8);
+  EXPECT_EQ(two_rows.width, one_row.width);
+  EXPECT_GT(two_rows.height, one_row.height + 100);  // a second row of 10 x 10 details, x12
+  EXPECT_THROW(centre_detail_strip(images, std::vector<std::string>{"a"}, "x"),
+               std::invalid_argument);
 }
 
 }  // namespace

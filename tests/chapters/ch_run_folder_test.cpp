@@ -31,8 +31,9 @@ int entries(const fs::path& dir) {
 TEST(RunFolderChapterTest, AnInterruptedSecondRunLeavesTheFirstWhole) {
   const fs::path dir = fresh_dir("run_folder_interrupted");
   const fs::path out = dir / "out";
-  ASSERT_EQ(run_program("ch05_path_tracer", "--width 8 --height 6 --spp 1 --quiet --out " +
-                                                out.string()).exit_code, 0);
+  // No reference image (--reference-spp 0): its cache would be a second folder beside --out.
+  ASSERT_EQ(run_program("ch05_path_tracer", "--width 8 --height 6 --spp 1 --reference-spp 0 "
+                                            "--quiet --out " + out.string()).exit_code, 0);
   const std::string first = read_text(out / "summary.json");
   // A run of several seconds, interrupted after a moment.
   const std::string program = std::string(MCRT_BIN_DIR) + "/ch05_path_tracer";
@@ -43,7 +44,8 @@ TEST(RunFolderChapterTest, AnInterruptedSecondRunLeavesTheFirstWhole) {
     ::dup2(null, STDOUT_FILENO);
     ::dup2(null, STDERR_FILENO);
     ::execl(program.c_str(), program.c_str(), "--width", "256", "--height", "192", "--spp",
-            "1,4,16,64,256", "--threads", "1", "--quiet", "--out", out.c_str(), nullptr);
+            "1,4,16,64,256", "--reference-spp", "0", "--threads", "1", "--quiet", "--out",
+            out.c_str(), nullptr);
     ::_exit(127);
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
