@@ -9,9 +9,14 @@
 //    (support/quad_box_reference.hpp), for NEE and for MIS with either heuristic;
 //  - the furnace with Russian roulette: the mean is Le / (1 - a) (z-test);
 //  - NEE and MIS agree with chapter 07's cosine estimator block by block on a small cornell
-//    image, at light scales 1 and 3 (z-tests of block means, Sidak). (Not at small light
+//    image, at light scales 1 and 3 (z-tests of block means, Sidak). Not at small light
 //    scales: there the cosine estimator's rare hits on a bright lamp make its block means too
-//    skewed for the normal approximation at these sample counts.)
+//    skewed for the normal approximation at these sample counts. Measured at light scale 0.3
+//    (NEE against cosine, 8 seeds each): 7 of 8 rejected at 1e-4 with 600 samples per pixel,
+//    1 of 8 with 6000, none with 30000. A bias would be rejected more often as the samples
+//    grow; this falls, as the skew of a mean of rare hits does. The calibration run also found
+//    cosine against cosine and NEE against MIS consistent at that scale (no rejection at 1e-4
+//    in 200 seeds each).
 // Every check is designed for a false-failure rate alpha = 1e-4.
 
 #include <cmath>
