@@ -141,10 +141,18 @@ Reference load_or_render_reference(const std::filesystem::path& dir, const Refer
   if (is_furnace(spec)) return furnace_reference(spec);
   if (auto cached = load_cached(dir, spec)) return std::move(*cached);
   Reference r = render_reference(spec);
-  std::filesystem::create_directories(dir);
+  const bool created = std::filesystem::create_directories(dir);
   const std::string stem = reference_stem(spec);
-  write_file_atomic(dir / (stem + ".pfm"), encode_pfm(r.image));
-  write_file_atomic(dir / (stem + ".json"), r.info.dump(2) + "\n");
+  try {
+    write_file_atomic(dir / (stem + ".pfm"), encode_pfm(r.image));
+    write_file_atomic(dir / (stem + ".json"), r.info.dump(2) + "\n");
+  } catch (...) {
+    // The cache holds whole references only: no PFM without its JSON, no folder left empty.
+    std::error_code ignored;
+    std::filesystem::remove(dir / (stem + ".pfm"), ignored);
+    if (created) std::filesystem::remove(dir, ignored);  // removes it only if empty
+    throw;
+  }
   return r;
 }
 

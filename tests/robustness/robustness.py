@@ -60,6 +60,27 @@ TINY = {
 # Chapters that render an image of a scene (they take --scene, --width, --height, --emission).
 RENDERERS = ["ch01_ray_tracing", "ch04_recursive_nk", "ch05_path_tracer",
              "ch06_russian_roulette", "ch07_importance_sampling"]
+# The folder of cached reference images (chapters 05 and 08): it sits beside --out on purpose,
+# shared between runs. It may stay only if it holds whole references, each PFM with its JSON.
+REFERENCE_CACHE = "reference"
+
+
+def reference_cache_problems(folder):
+    names = sorted(os.listdir(folder))
+    stems = {n.rsplit(".", 1)[0] for n in names}
+    whole = names and all(n.endswith((".pfm", ".json")) and not n.startswith(".") for n in names) \
+        and all(f"{s}.pfm" in names and f"{s}.json" in names for s in stems)
+    return [] if whole else [f"a reference cache that is not whole: {names}"]
+
+
+def beside_out(parent, *expected):
+    """What a run left in `parent` beyond `expected` (and a whole reference cache)."""
+    left = sorted(set(os.listdir(parent)) - set(expected))
+    if REFERENCE_CACHE in left and not reference_cache_problems(parent / REFERENCE_CACHE):
+        left.remove(REFERENCE_CACHE)
+    return left
+
+
 CASE_TIMEOUT = 20.0  # seconds for a tiny run
 REFUSAL_TIMEOUT = 5.0  # seconds for a refusal; a bad input that starts real work is caught by this
 
@@ -393,7 +414,7 @@ def after_interrupt_problems(code, err, parent, before, signum):
         problems += one_line_problems(err, [parent])
         if snapshot(parent / "out") != before:
             problems.append("--out changed (an interrupted run must leave the previous one whole)")
-    left = sorted(set(os.listdir(parent)) - {"out"})
+    left = beside_out(parent, "out")
     if left:
         problems.append(f"left beside --out: {left}")
     for _ in range(20):  # a child may take a moment to be reaped by the system
@@ -424,8 +445,8 @@ def signal_case(exe, tiny, long_args, parent, delay, signum, previous):
         problems += [f"third run: {p}" for p in exit_problems(code, 0, err)]
         if code == 0 and snapshot(out) == before:
             problems.append("third run: --out not replaced")
-        if sorted(os.listdir(parent)) != ["out"]:
-            problems.append(f"third run left {sorted(os.listdir(parent))}")
+        if beside_out(parent, "out"):
+            problems.append(f"third run left {beside_out(parent, 'out')}")
     return problems
 
 
@@ -557,7 +578,7 @@ def group_paths(chapters, tmp, checks):
         problems = exit_problems(code, 0, err)
         if code == 0:
             problems += output_problems(parent / folder_name, reference)
-            left = sorted(set(os.listdir(parent)) - {folder_name})
+            left = beside_out(parent, folder_name)
             if left:
                 problems.append(f"left beside --out: {left}")
         return problems
@@ -696,12 +717,12 @@ def group_full_disk(chapters, tmp, checks):
                     problems.append(f"message lacks the system's reason: {text(err)!r}")
                 if str(mount) not in text(err):
                     problems.append(f"message names no file under the full disk: {text(err)!r}")
-                if os.listdir(mount):
-                    problems.append(f"left on the full disk: {sorted(os.listdir(mount))}")
+                if beside_out(mount):
+                    problems.append(f"left on the full disk: {beside_out(mount)}")
             elif code == 0:
                 problems += output_problems(out, listing)
-                if sorted(os.listdir(mount)) != ["out"]:
-                    problems.append(f"left beside --out: {sorted(os.listdir(mount))}")
+                if beside_out(mount, "out"):
+                    problems.append(f"left beside --out: {beside_out(mount, 'out')}")
             else:
                 problems += exit_problems(code, 1, err)
             if kib == 64 and code != 1:
