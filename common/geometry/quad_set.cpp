@@ -3,14 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#if defined(__x86_64__) || defined(__i386__)
-#define MCRT_X86 1
-#include <immintrin.h>
-#else
-#define MCRT_X86 0
-#endif
-
 #include "core/cpu_features.hpp"
+#include "geometry/avx2_lanes.hpp"
 
 namespace mcrt {
 
@@ -65,12 +59,6 @@ QuadSet::Nearest QuadSet::nearest_portable(const Ray& ray, Interval range) const
 #if MCRT_X86
 
 namespace {
-
-// The smallest of the four lanes, in every lane.
-[[gnu::target("avx2")]] inline __m256d all_lanes_min(__m256d v) {
-  v = _mm256_min_pd(v, _mm256_permute4x64_pd(v, 0x4e));  // halves swapped
-  return _mm256_min_pd(v, _mm256_permute_pd(v, 0x5));    // neighbours swapped
-}
 
 // (x1 y1 + x2 y2) + x3 y3, summed in glm::dot's order.
 [[gnu::target("avx2")]] inline __m256d dot(__m256d x1, __m256d x2, __m256d x3, __m256d y1,
@@ -127,15 +115,9 @@ namespace {
     best_index = _mm256_blendv_pd(best_index, index, closer);
     index = _mm256_add_pd(index, step);
   }
-  // Merge the lanes as SphereSet::nearest_avx2 does: the nearest t, then the lowest index
-  // among the lanes holding it; -1 if no lane hit.
-  const __m256d nearest_t = all_lanes_min(best_t);
-  const __m256d holders = _mm256_cmp_pd(best_t, nearest_t, _CMP_EQ_OQ);
-  const __m256d no_index = _mm256_set1_pd(std::numeric_limits<double>::infinity());
-  const double index_found =
-      _mm256_cvtsd_f64(all_lanes_min(_mm256_blendv_pd(no_index, best_index, holders)));
-  if (index_found < 0.0) return {size_, range.max};
-  return {static_cast<std::size_t>(index_found), _mm256_cvtsd_f64(nearest_t)};
+  const avx2::NearestLane nearest = avx2::merge_lanes(best_t, best_index);
+  if (nearest.index < 0.0) return {size_, range.max};
+  return {static_cast<std::size_t>(nearest.index), nearest.t};
 }
 
 #else

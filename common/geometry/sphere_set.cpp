@@ -4,14 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#if defined(__x86_64__) || defined(__i386__)
-#define MCRT_X86 1
-#include <immintrin.h>
-#else
-#define MCRT_X86 0
-#endif
-
 #include "core/cpu_features.hpp"
+#include "geometry/avx2_lanes.hpp"
 
 namespace mcrt {
 
@@ -68,16 +62,6 @@ SphereSet::Nearest SphereSet::nearest_portable(const Ray& ray, Interval range) c
 
 #if MCRT_X86
 
-namespace {
-
-// The smallest of the four lanes, in every lane.
-[[gnu::target("avx2")]] inline __m256d all_lanes_min(__m256d v) {
-  v = _mm256_min_pd(v, _mm256_permute4x64_pd(v, 0x4e));  // halves swapped
-  return _mm256_min_pd(v, _mm256_permute_pd(v, 0x5));    // neighbours swapped
-}
-
-}  // namespace
-
 // The loop of nearest_portable on four spheres per instruction, each lane keeping its own
 // nearest t and index; the lanes are merged at the end (nearest t, then lowest index). Only
 // AVX2 is enabled, not FMA: a fused multiply-add would round differently from the portable
@@ -116,16 +100,9 @@ namespace {
     best_index = _mm256_blendv_pd(best_index, index, closer);
     index = _mm256_add_pd(index, step);
   }
-  // Merge the lanes without branches (they would mispredict): the nearest t into every lane,
-  // then the lowest index among the lanes holding it. A lane that never hit holds index -1 and
-  // t = range.max, which a hit always beats; if no lane hit, the result is -1: none.
-  const __m256d nearest_t = all_lanes_min(best_t);
-  const __m256d holders = _mm256_cmp_pd(best_t, nearest_t, _CMP_EQ_OQ);
-  const __m256d no_index = _mm256_set1_pd(std::numeric_limits<double>::infinity());
-  const double index_found =
-      _mm256_cvtsd_f64(all_lanes_min(_mm256_blendv_pd(no_index, best_index, holders)));
-  if (index_found < 0.0) return {size_, range.max};
-  return {static_cast<std::size_t>(index_found), _mm256_cvtsd_f64(nearest_t)};
+  const avx2::NearestLane nearest = avx2::merge_lanes(best_t, best_index);
+  if (nearest.index < 0.0) return {size_, range.max};
+  return {static_cast<std::size_t>(nearest.index), nearest.t};
 }
 
 #else
