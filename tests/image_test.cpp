@@ -20,6 +20,16 @@ fs::path scratch(const std::string& name) {
   return dir / name;
 }
 
+// Every channel counts once: (r + g + b) / 3 per pixel, then the mean over pixels. Distinct
+// channels, so a channel counted twice or left out changes the value (grey images cannot).
+TEST(MeanRadianceTest, AveragesTheThreeChannelsOfEveryPixel) {
+  EXPECT_EQ(mcrt::average(mcrt::Color(1.0, 2.0, 6.0)), 3.0);
+  mcrt::Image image(2, 1);
+  image.at(0, 0) = mcrt::Color(1.0, 2.0, 6.0);   // average 3
+  image.at(1, 0) = mcrt::Color(0.0, 0.0, 12.0);  // average 4
+  EXPECT_EQ(mcrt::mean_radiance(image), 3.5);
+}
+
 TEST(SrgbTest, RoundTripAndKnownValues) {
   for (double v = 0.0; v <= 1.0; v += 1.0 / 64)
     EXPECT_NEAR(srgb_decode(srgb_encode(v)), v, 1e-12);  // exact inverse up to round-off
