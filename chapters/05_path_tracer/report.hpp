@@ -1,0 +1,117 @@
+#pragma once
+// Chapter 05's report: the fitted slope, the depth cut's bias, the error plot, summary.json,
+// timings.json and the console table, from the run's error Table.
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "integration/statistics.hpp"
+#include "io/cli.hpp"
+#include "io/plot.hpp"
+#include "io/reference_cache.hpp"
+#include "io/render_summary.hpp"
+#include "io/summary.hpp"
+#include "io/table.hpp"
+#include "render/image.hpp"
+#include "render/render_totals.hpp"
+
+namespace mcrt {
+
+// The slope of log RMS error against log spp; NaN with fewer than two points or a zero error.
+inline double fitted_slope(const Table& errors) {
+  const std::vector<double> spp = errors.numbers("spp"), rmse = errors.numbers("rmse");
+  const bool can_fit = spp.size() >= 2 && std::all_of(rmse.begin(), rmse.end(),
+                                                       [](double e) { return e > 0.0; });
+  return can_fit ? fit_log_log(spp, rmse).slope : std::nan("");
+}
+
+// The bias the depth cut leaves, estimated at the largest spp: the error against the reference
+// less the noise of A (two-render) and of R, sqrt(max(0, E_ref^2 - E_AB^2 - E_R^2)). NaN
+// without a reference.
+inline double depth_cut_bias_rms(const Table& errors, const Reference* reference) {
+  if (reference == nullptr) return std::nan("");
+  const std::size_t last = errors.size() - 1;
+  const double against_reference = errors.at(last, "rmse_vs_reference").number();
+  const double noise = errors.at(last, "rmse").number();
+  const double reference_noise = reference->info.value("standard_error_rms", 0.0);
+  return std::sqrt(std::max(0.0, against_reference * against_reference - noise * noise -
+                                     reference_noise * reference_noise));
+}
+
+inline void write_rmse_plot(const auto& o, const Table& errors, double slope,
+                            bool has_reference) {
+  // The reference line of slope -1/2 passes through the first point.
+  std::string settings =
+      fmt::format("rmse1 = {:.9g}\nspp1 = {}\nset key top right\n", errors.at(0, "rmse").number(),
+                  o.spp.front()) +
+      (std::isfinite(slope)
+           ? fmt::format("set label 1 'fitted slope {:.3f} (theory -0.5)' at graph 0.05, graph 0.1\n",
+                         slope)
+           : std::string());
+  if (o.spp.size() > 1)  // the x axis ends where the data end
+    settings += fmt::format("set xrange [{}:{}]\n", o.spp.front(), o.spp.back());
+  Plot plot{"rmse_vs_spp", "RMS error against samples per pixel",
+            "samples per pixel", "RMS error", true, true, settings,
+            "plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 7 lw 2 title "
+            "'two-render estimate (noise only)', rmse1 * (x / spp1)**-0.5 with lines dt 2 "
+            "lc 'black' title 'slope -1/2'"};
+  plot.x_values = errors.numbers("spp");  // one spp, or zero error (no light): still a plot
+  plot.y_values = errors.numbers("rmse");
+  if (has_reference) {
+    plot.plot += ", 'rmse_vs_spp.csv' using \"spp\":\"rmse_vs_reference\" with linespoints "
+                     "pt 5 lw 2 title 'against the reference (noise and bias)'";
+    const std::vector<double> against = errors.numbers("rmse_vs_reference");
+    plot.y_values.insert(plot.y_values.end(), against.begin(), against.end());
+  }
+  write_plot(o.common.dir, plot);
+}
+
+inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
+                          const Table& errors, double slope, const RenderTotals& total,
+                          const Image& last, const Reference* reference) {
+  Json summary = start_summary(chapter, o.common);
+  add_render_setup(summary, o.scene, o.image);
+  summary["spp"] = o.spp;
+  summary["depth"] = o.depth;
+  add_render_totals(summary, total);
+  summary["rmse_slope"] = std::isfinite(slope) ? Json(slope) : Json(nullptr);  // < 2 spp
+  summary["rmse_slope_theory"] = -0.5;
+  summary["mean_radiance"] = mean_radiance(last);
+  summary["rmse_vs_spp"] = errors.json();
+  const double bias = depth_cut_bias_rms(errors, reference);
+  summary["depth_cut_bias_rms"] = std::isfinite(bias) ? Json(bias) : Json(nullptr);
+  summary["mean_radiance_reference"] =
+      reference ? Json(mean_radiance(reference->image)) : Json(nullptr);
+  summary["reference"] = reference ? Json(reference->info) : Json(nullptr);
+  summary["flags"] = flags_json(app);
+  write_json(o.common.dir / "summary.json", summary);
+  Json timings = start_timings(chapter, o.common);
+  add_render_timings(timings, total);
+  write_timings(o.common.dir, timings, app);
+}
+
+inline void print_table(const Chapter& chapter, const auto& o, const Table& errors, double slope,
+                        const RenderTotals& total, const Image& last,
+                        const Reference* reference) {
+  fmt::print("{}  scene {}  {}x{}  depth {}  {} threads\n", chapter.name, o.scene.scene,
+             o.image.width, o.image.height, o.depth, o.common.threads);
+  fmt::print("{}", errors.console({"spp", "rmse", "rmse_vs_reference", "seconds",
+                                   "rays_per_second"}));
+  if (std::isfinite(slope))
+    fmt::print("  fitted slope of log RMS error against log spp: {:.3f} (theory -0.5)\n", slope);
+  if (reference)
+    fmt::print("  rmse = two-render estimate (noise only); rmse_vs_reference also holds the "
+               "depth cut's bias, about {:.3g} RMS\n  mean radiance {:.5g}, reference {:.5g} "
+               "(without a depth cut)\n", depth_cut_bias_rms(errors, reference), mean_radiance(last),
+               mean_radiance(reference->image));
+  fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
+             total.seconds, total.rays_per_second(), total.non_finite_samples);
+  fmt::print("  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
+             "summary.json, timings.json}}\n", o.common.out.string());
+}
+
+}  // namespace mcrt
