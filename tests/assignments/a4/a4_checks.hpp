@@ -107,6 +107,26 @@ TaskResult check_path_furnace(Radiance&& radiance) {
 /// at another seed, drawn anew at each grading seed: independent of the student's, and in
 /// every kit of a4, where the tracers of chapters 06-08 are withheld), the standard error of
 /// the difference taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
+/// The mean channel radiance of `estimate` per region x region block of a Size x Size image:
+/// spp samples per pixel, sample s of pixel p drawn from the stream (p, s).
+template <int Size, int Region, class Estimate>
+std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
+    const Camera& camera, Estimate&& estimate, int spp, std::uint64_t seed) {
+  constexpr int regions = Size / Region;
+  std::array<RunningStats, regions * regions> stats;
+  RayCount count;
+  for (int y = 0; y < Size; ++y)
+    for (int x = 0; x < Size; ++x)
+      for (int s = 0; s < spp; ++s) {
+        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * Size + x),
+                                   static_cast<std::uint64_t>(s)));
+        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(
+            average(estimate(ray, rng, count)));
+      }
+  return stats;
+}
+
 template <class Radiance>
 TaskResult check_reference_regions(Radiance&& radiance) {
   constexpr int size = 16, region = 4, regions = size / region, k = 4;
@@ -114,16 +134,7 @@ TaskResult check_reference_regions(Radiance&& radiance) {
   const Camera camera(scene.camera, size, size);
   using Stats = std::array<RunningStats, regions * regions>;
   const auto collect = [&](auto&& estimate, int spp, std::uint64_t seed) {
-    Stats stats;
-    RayCount count;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x)
-        for (int s = 0; s < spp; ++s) {
-          Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
-          const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-          stats[static_cast<std::size_t>((y / region) * regions + x / region)].add(average(estimate(ray, rng, count)));
-        }
-    return stats;
+    return region_stats<size, region>(camera, estimate, spp, seed);
   };
   const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
     return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);

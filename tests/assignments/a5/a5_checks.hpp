@@ -302,16 +302,7 @@ double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, doubl
   const Camera camera(scene.camera, size, size);
   using Stats = std::array<RunningStats, regions * regions>;
   const auto collect = [&](auto&& estimate, int spp, std::uint64_t at_seed) {
-    Stats stats;
-    RayCount count;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x)
-        for (int s = 0; s < spp; ++s) {
-          Rng rng(at_seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
-          const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-          stats[static_cast<std::size_t>((y / region) * regions + x / region)].add(average(estimate(ray, rng, count)));
-        }
-    return stats;
+    return region_stats<size, region>(camera, estimate, spp, at_seed);
   };
   const Stats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
     return estimate_path_radiance(scene, ray, k, rng, count);
