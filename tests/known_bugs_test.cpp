@@ -18,12 +18,14 @@
 #include "integration/quadrature.hpp"
 #include "known_bugs/estimators.hpp"
 #include "known_bugs/samplers.hpp"
+#include "render/two_render_error.hpp"
 #include "sampling/sampling.hpp"
 #include "stats/check.hpp"
 #include "stats/convergence.hpp"
 #include "stats/report.hpp"
 #include "stats/sampler_tests.hpp"
 #include "support/small_trials.hpp"
+#include "support/two_render_check.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;
@@ -100,6 +102,13 @@ TEST_F(KnownBugsTest, EstimatorDividingByNMinusOneIsRejected) {
 
 TEST_F(KnownBugsTest, GeneratorStreamReusedAcrossTrialsIsRejected) {
   EXPECT_LT(small_trials_p_value(gaussian_estimate, k_seed, SameStreamTrials{}), 1e-4);
+}
+
+// ---- The two-render error against Var[L] / spp (tests/support/two_render_check.hpp, 1e-4) ----
+
+TEST_F(KnownBugsTest, TwoRenderErrorWithoutTheHalfIsRejected) {
+  EXPECT_GE(two_render_error_p_value(k_seed, two_render_mean_squared_error), 1e-4);
+  EXPECT_LT(two_render_error_p_value(k_seed, two_render_error_without_the_half), 1e-4);
 }
 
 // ---- The trapezoid rule: its n^-2 rate ------------------------------------------------------

@@ -3,7 +3,9 @@
 //  - furnace: the mean radiance after k bounces is Le (1 - a^(k+1)) / (1 - a) (z-tests for
 //    several a and k) and its variance is furnace_radiance_variance (z-tests of the sample
 //    variance);
-//  - the RMS error of an image falls as spp^-1/2 (a z-test of the fitted slope);
+//  - the RMS error of an image falls as spp^-1/2 (a z-test of the fitted slope), and the
+//    two-render error that chapters 04, 05 and 07 report estimates Var[L] / spp (a z-test in
+//    the furnace, where Var[L] is known);
 //  - cornell-spheres agrees, tile by tile and in every channel, with a path tracer written
 //    here from scratch.
 // Every check is designed for a false-failure rate alpha = 1e-4.
@@ -18,10 +20,12 @@
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+#include "render/two_render_error.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
 #include "support/color_moments.hpp"
 #include "support/furnace_paths.hpp"
+#include "support/two_render_check.hpp"
 
 namespace {
 
@@ -129,6 +133,13 @@ MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
   const double sxx = sum_wxx - sum_wx * sum_wx / sum_w;
   const double mse_slope = (sum_wxy - sum_wx * sum_wy / sum_w) / sxx;
   return mcrt::testing::z_test_p_value(mse_slope / 2.0, -0.5, 0.5 / std::sqrt(sxx));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The two-render error of the chapters estimates Var[L] / spp in the furnace: the procedure and
+// its false-failure rate are in tests/support/two_render_check.hpp.
+MCRT_STATISTICAL_CHECK(two_render_error_estimates_the_furnace_variance_over_spp, 1e-4) {
+  return mcrt::testing::two_render_error_p_value(seed, two_render_mean_squared_error);
 }
 
 // ---------------------------------------------------------------------------------------------

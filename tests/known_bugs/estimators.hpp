@@ -11,6 +11,7 @@
 #include "integration/integrands.hpp"
 #include "integration/monte_carlo.hpp"
 #include "integration/quadrature.hpp"
+#include "render/image.hpp"
 #include "support/small_trials.hpp"
 
 namespace mcrt::testing {
@@ -19,6 +20,17 @@ namespace mcrt::testing {
 inline double estimate_dividing_by_n_minus_one(std::uint64_t n, Rng& rng) {
   const double f_n = gaussian_estimate(n, rng);  // sum / N
   return f_n * static_cast<double>(n) / static_cast<double>(n - 1);
+}
+
+/// Wrong: the two-render error without the 1/2: (A - B)^2 has twice the variance of one render,
+/// so this reports 2 Var[A] per pixel and channel.
+inline double two_render_error_without_the_half(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const Color d = a.pixels[i] - b.pixels[i];
+    sum += glm::dot(d, d);  // should be glm::dot(d, d) / 2
+  }
+  return sum / (3.0 * static_cast<double>(a.pixels.size()));
 }
 
 /// Wrong: every trial starts the same stream Rng(seed, 0), so all trials are the same numbers.
