@@ -226,4 +226,25 @@ TEST(QuadSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
   EXPECT_GT(ties, 100);
 }
 
+// A ray within the parallel threshold of a quad's plane (|n.d| < 1e-12 |n|) misses it in every
+// engine, even where its far-off crossing of the plane lands inside the quad: random rays never
+// come that close, and rays along an axis give n.d = 0 exactly, which no engine can take for a
+// hit. The unit square at z = 0 (|n| = 1); the ray starts delta above the plane with slope -s,
+// so it crosses the plane at x = -1 + delta / s = 0.5, inside. Just above the threshold
+// (s = 1e-11) every engine takes the hit, so the misses below it are the threshold's doing.
+TEST(QuadSetDifferentialTest, RaysWithinTheParallelThresholdMissInEveryEngine) {
+  const Quad square{Vec3(0.0), {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0};
+  QuadSet set;
+  set.add(square);
+  for (double slope : {1e-13, 5e-13, 9e-13, 1e-11}) {
+    const Ray ray{{-1.0, 0.5, 1.5 * slope}, glm::normalize(Vec3(1.0, 0.0, -slope))};
+    const bool parallel = slope < 1e-12;
+    const std::size_t expected = parallel ? 1 : 0;  // index 1 = size(): no hit
+    EXPECT_EQ(intersect_distance(square, ray, Interval{}).has_value(), !parallel) << slope;
+    EXPECT_EQ(set.nearest_portable(ray, Interval{}).index, expected) << slope;
+    EXPECT_EQ(set.nearest(ray, Interval{}).index, expected) << slope;
+    if (QuadSet::has_avx2()) EXPECT_EQ(set.nearest_avx2(ray, Interval{}).index, expected) << slope;
+  }
+}
+
 }  // namespace
