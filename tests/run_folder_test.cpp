@@ -15,6 +15,7 @@
 
 #include "io/cli.hpp"
 #include "io/output.hpp"
+#include "support/exception_message.hpp"
 
 namespace fs = std::filesystem;
 
@@ -49,16 +50,7 @@ void finished_run(const fs::path& out, const std::string& name, const std::strin
   folder.commit();
 }
 
-// The message of the exception of type E that `action` throws, or "" if none.
-template <class E, class Action>
-std::string message_of(Action action) {
-  try {
-    action();
-  } catch (const E& e) {
-    return e.what();
-  }
-  return "";
-}
+using mcrt::testing::message_of;  // support/exception_message.hpp
 
 TEST(RunFolderTest, AFirstRunAppearsWholeAtCommitAndNotBefore) {
   const fs::path dir = fresh_dir("first");

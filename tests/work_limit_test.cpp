@@ -12,6 +12,7 @@
 #include "io/cli.hpp"
 #include "io/ray_limit.hpp"
 #include "io/work_limit.hpp"
+#include "support/exception_message.hpp"
 
 namespace {
 
@@ -20,12 +21,7 @@ using mcrt::UsageError;
 /// The message of the UsageError `refuse` throws; empty if it throws nothing.
 template <class Refuse>
 std::string refusal(const Refuse& refuse) {
-  try {
-    refuse();
-  } catch (const UsageError& e) {
-    return e.what();
-  }
-  return "";
+  return mcrt::testing::message_of<UsageError>(refuse);
 }
 
 TEST(RayLimitTest, AcceptsUpToTheLimitAndRefusesJustAboveIt) {
