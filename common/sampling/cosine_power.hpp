@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/cos_sin.hpp"
 #include "core/math.hpp"
 #include "sampling/hemisphere.hpp"
 
@@ -26,8 +27,8 @@ inline Vec3 sample_cosine_power_hemisphere(Vec2 u, int m) {
   // ASSIGNMENT a2.2 BEGIN needs=a2.1 withheld stub: (void)u; (void)m; NOT_IMPLEMENTED(sample_cosine_power_hemisphere);
   const double cos_theta = std::pow(u.x, 1.0 / (m + 1.0));
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  const double phi = k_two_pi * u.y;
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  return {sin_theta * circle.x, sin_theta * circle.y, cos_theta};
   // ASSIGNMENT a2.2 END
 }
 /// (m + 1) / (2 pi) cos^m(theta): the integral of cos^m over the hemisphere is 2 pi / (m + 1).

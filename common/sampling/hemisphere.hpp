@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cos_sin.hpp"
 #include "core/math.hpp"
 #include "sampling/plane.hpp"
 
@@ -16,8 +17,8 @@ inline Vec3 sample_uniform_hemisphere(Vec2 u) {
   // ASSIGNMENT a2.1 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_hemisphere);
   const double cos_theta = u.x;
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  const double phi = k_two_pi * u.y;
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  return {sin_theta * circle.x, sin_theta * circle.y, cos_theta};
   // ASSIGNMENT a2.1 END
 }
 // ASSIGNMENT a2.1 BEGIN stub: inline double uniform_hemisphere_pdf() { NOT_IMPLEMENTED(uniform_hemisphere_pdf); }

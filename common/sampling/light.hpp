@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cos_sin.hpp"
 #include "core/math.hpp"
 #include "sampling/frame.hpp"
 
@@ -47,8 +48,8 @@ inline LightPoint sample_sphere_cap(const Vec3& centre, double radius, const Vec
                                     double height, Vec2 u) {
   const double z = 1.0 - (height / radius) * u.x;
   const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  const double phi = k_two_pi * u.y;
-  const Vec3 n = Frame(axis).to_world({s * std::cos(phi), s * std::sin(phi), z});
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  const Vec3 n = Frame(axis).to_world({s * circle.x, s * circle.y, z});
   return {centre + radius * n, n, 1.0 / (k_two_pi * radius * height)};
 }
 inline double sphere_cap_pdf_area(double radius, double height) {

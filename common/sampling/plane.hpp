@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/cos_sin.hpp"
 #include "core/math.hpp"
 
 namespace mcrt {
@@ -17,8 +18,8 @@ inline double uniform_square_pdf() { return 0.25; }
 inline Vec2 sample_uniform_disk(Vec2 u) {
   // ASSIGNMENT a2.4 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_disk);
   const double r = std::sqrt(u.x);
-  const double phi = k_two_pi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi)};
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  return {r * circle.x, r * circle.y};
   // ASSIGNMENT a2.4 END
 }
 // ASSIGNMENT a2.4 BEGIN stub: inline double uniform_disk_pdf() { NOT_IMPLEMENTED(uniform_disk_pdf); }

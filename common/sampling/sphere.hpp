@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cos_sin.hpp"
 #include "core/math.hpp"
 
 namespace mcrt {
@@ -14,8 +15,8 @@ inline Vec3 sample_uniform_sphere(Vec2 u) {
   // ASSIGNMENT a2.3 BEGIN stub: (void)u; NOT_IMPLEMENTED(sample_uniform_sphere);
   const double z = 1.0 - 2.0 * u.x;
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  const double phi = k_two_pi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  return {r * circle.x, r * circle.y, z};
   // ASSIGNMENT a2.3 END
 }
 // ASSIGNMENT a2.3 BEGIN stub: inline double uniform_sphere_pdf() { NOT_IMPLEMENTED(uniform_sphere_pdf); }
