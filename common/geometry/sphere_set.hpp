@@ -26,8 +26,10 @@ class SphereSet {
   void add(const Sphere& s);
   std::size_t size() const { return size_; }
 
-  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere.
+  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere; no call at all
+  /// for a scene without spheres (inline, so that costs one predictable branch).
   Nearest nearest(const Ray& ray, Interval range) const {
+    if (size_ == 0) return {0, range.max};
     return k_has_avx2 ? nearest_avx2(ray, range) : nearest_portable(ray, range);
   }
   /// Plain C++, one sphere at a time.

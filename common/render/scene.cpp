@@ -36,22 +36,6 @@ void Scene::add_quad(const Quad& q, std::uint32_t back_material) {
   quad_back_materials_.push_back(back_material);
 }
 
-// Find the nearest t over every primitive first; build the Hit record once, for the winner.
-// The spheres and the quads are each searched four at a time (SphereSet, QuadSet); ties keep
-// the first primitive, spheres before quads, as the plain loop over intersect_distance does.
-std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval range) const {
-  const SphereSet::Nearest sphere = sphere_set_.nearest(ray, range);
-  range.max = sphere.t;
-  const QuadSet::Nearest quad = quad_set_.nearest(ray, range);
-  if (quad.index != quad_set_.size()) {
-    Hit hit = hit_at(quads_[quad.index], ray, quad.t);
-    hit.material = quad_face_material(quad.index, ray.direction);
-    return hit;
-  }
-  if (sphere.index != sphere_set_.size()) return hit_at(spheres_[sphere.index], ray, sphere.t);
-  return std::nullopt;
-}
-
 // Some primitive is hit in range exactly when a nearest one exists; the four-wide searches
 // answer that faster than a loop that stops at the first hit.
 bool Scene::any_hit(const Ray& ray, Interval range) const {
