@@ -243,7 +243,9 @@ TEST(QuadSetDifferentialTest, RaysWithinTheParallelThresholdMissInEveryEngine) {
     EXPECT_EQ(intersect_distance(square, ray, Interval{}).has_value(), !parallel) << slope;
     EXPECT_EQ(set.nearest_portable(ray, Interval{}).index, expected) << slope;
     EXPECT_EQ(set.nearest(ray, Interval{}).index, expected) << slope;
-    if (QuadSet::has_avx2()) EXPECT_EQ(set.nearest_avx2(ray, Interval{}).index, expected) << slope;
+    if (QuadSet::has_avx2()) {
+      EXPECT_EQ(set.nearest_avx2(ray, Interval{}).index, expected) << slope;
+    }
   }
 }
 

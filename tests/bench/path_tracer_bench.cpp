@@ -2,12 +2,18 @@
 //
 //   bench_path_tracer
 //
-// BM_PathTracer renders cornell-spheres at 256x192, 16 spp, depth 10 (the target
-// setting) with 1 and 2 threads; its counter rays_per_second counts every closest-hit query.
+// BM_PathTracer<Scene>/threads renders cornell-spheres and cornell at 256x192, 16 spp, depth 10
+// (the settings of the speed targets) with 1 and 2 threads; its counter rays_per_second counts
+// every closest-hit query. BM_ReferencePathTracer<Scene> runs the same path loop on the plain
+// layers below it (a loop of intersect_distance over every primitive, phi's cosine and sine
+// from the maths library): the baseline for the speed-up, measured in the same run.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
-// the same queries with the plain loop over intersect_distance, for the speed-up in one run.
+// the same queries with the plain loop over intersect_distance.
 
+#include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -21,31 +27,6 @@ namespace {
 
 constexpr int k_depth = 10;
 
-void BM_PathTracer(benchmark::State& state) {
-  const mcrt::Scene scene = mcrt::make_scene("cornell-spheres");
-  const mcrt::Camera camera(scene.camera, 256, 192);
-  const int threads = static_cast<int>(state.range(0));
-  std::uint64_t rays = 0;
-  std::uint64_t seed = 1;
-  for (auto _ : state) {
-    const mcrt::RenderSettings settings{16, 0, seed++, threads, nullptr};
-    const mcrt::RenderResult result =
-        mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
-                                           mcrt::RayCount& count) {
-          return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
-        });
-    benchmark::DoNotOptimize(result.image.pixels.data());
-    rays += result.rays;
-  }
-  state.counters["rays_per_second"] =
-      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
-}
-// Wall-clock time: with 2 threads the CPU time of the main thread alone would mislead.
-BENCHMARK(BM_PathTracer)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->MinTime(2.0);
-
-using mcrt::bench::path_rays;
-
 // The straightforward closest-hit loop, one intersect_distance per primitive: the baseline
 // Scene::closest_hit is measured against (same rays, same answers).
 std::optional<mcrt::Hit> reference_closest_hit(const mcrt::Scene& scene, const mcrt::Ray& ray) {
@@ -56,13 +37,80 @@ std::optional<mcrt::Hit> reference_closest_hit(const mcrt::Scene& scene, const m
       range.max = *t;
       hit = mcrt::hit_at(s, ray, *t);
     }
-  for (const mcrt::Quad& q : scene.quads())
-    if (const auto t = mcrt::intersect_distance(q, ray, range)) {
+  for (std::size_t i = 0; i < scene.quads().size(); ++i)
+    if (const auto t = mcrt::intersect_distance(scene.quads()[i], ray, range)) {
       range.max = *t;
-      hit = mcrt::hit_at(q, ray, *t);
+      hit = mcrt::hit_at(scene.quads()[i], ray, *t);
+      hit->material = scene.quad_face_material(i, ray.direction);
     }
   return hit;
 }
+
+// estimate_path_radiance's loop, line for line, on the plain layers: reference_closest_hit,
+// and the uniform hemisphere sampled with std::cos and std::sin.
+mcrt::Color reference_path_radiance(const mcrt::Scene& scene, mcrt::Ray ray, mcrt::Rng& rng,
+                                    mcrt::RayCount& count) {
+  mcrt::Color radiance(0.0), beta(1.0);
+  for (int bounce = 0;; ++bounce) {
+    ++count.rays;
+    const std::optional<mcrt::Hit> hit = reference_closest_hit(scene, ray);
+    if (!hit) break;
+    const mcrt::Material& material = scene.material(*hit);
+    radiance += beta * material.emission;
+    if (bounce == k_depth) break;
+    const mcrt::Vec2 u = rng.uniform2();
+    const double cos_theta = u.x, sin_theta = std::sqrt(std::max(0.0, 1.0 - u.x * u.x));
+    const double phi = mcrt::k_two_pi * u.y;
+    const mcrt::Vec3 local(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+    beta *= material.brdf() * cos_theta / mcrt::uniform_hemisphere_pdf();
+    if (beta == mcrt::Color(0.0)) break;
+    ray = mcrt::spawn_ray(*hit, mcrt::Frame(hit->normal).to_world(local));
+  }
+  return radiance;
+}
+
+template <bool reference>
+void path_tracer(benchmark::State& state, const char* scene_name) {
+  const mcrt::Scene scene = mcrt::make_scene(scene_name);
+  const mcrt::Camera camera(scene.camera, 256, 192);
+  const int threads = static_cast<int>(state.range(0));
+  std::uint64_t rays = 0;
+  std::uint64_t seed = 1;
+  for (auto _ : state) {
+    const mcrt::RenderSettings settings{16, 0, seed++, threads, nullptr};
+    const mcrt::RenderResult result =
+        mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
+                                           mcrt::RayCount& count) {
+          if constexpr (reference) return reference_path_radiance(scene, ray, rng, count);
+          else return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
+        });
+    benchmark::DoNotOptimize(result.image.pixels.data());
+    rays += result.rays;
+  }
+  state.counters["rays_per_second"] =
+      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+}
+void BM_PathTracerCornellSpheres(benchmark::State& state) {
+  path_tracer<false>(state, "cornell-spheres");
+}
+void BM_PathTracerCornell(benchmark::State& state) { path_tracer<false>(state, "cornell"); }
+void BM_ReferencePathTracerCornellSpheres(benchmark::State& state) {
+  path_tracer<true>(state, "cornell-spheres");
+}
+void BM_ReferencePathTracerCornell(benchmark::State& state) {
+  path_tracer<true>(state, "cornell");
+}
+// Wall-clock time: with 2 threads the CPU time of the main thread alone would mislead.
+BENCHMARK(BM_PathTracerCornellSpheres)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_ReferencePathTracerCornellSpheres)->Arg(1)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_PathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_ReferencePathTracerCornell)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(2.0);
+
+using mcrt::bench::path_rays;
 
 template <bool reference>
 void closest_hit_queries(benchmark::State& state, const char* scene_name) {
