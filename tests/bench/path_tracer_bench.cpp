@@ -5,20 +5,19 @@
 // BM_PathTracer<Scene>/threads renders cornell-spheres and cornell at 256x192, 16 spp, depth 10
 // (the settings of the speed targets) with 1 and 2 threads; its counter rays_per_second counts
 // every closest-hit query. BM_ReferencePathTracer<Scene> runs the same path loop on the plain
-// layers below it (a loop of intersect_distance over every primitive, phi's cosine and sine
-// from the maths library): the baseline for the speed-up, measured in the same run.
+// layers below it (support/plain_path_tracer.hpp: a loop of intersect_distance over every
+// primitive, phi's cosine and sine from the maths library): the baseline for the speed-up,
+// measured in the same run.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
 // the same queries with the plain loop over intersect_distance.
 
-#include <cmath>
-#include <optional>
-#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
 #include "bench/path_rays.hpp"
+#include "support/plain_path_tracer.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
@@ -27,47 +26,8 @@ namespace {
 
 constexpr int k_depth = 10;
 
-// The straightforward closest-hit loop, one intersect_distance per primitive: the baseline
-// Scene::closest_hit is measured against (same rays, same answers).
-std::optional<mcrt::Hit> reference_closest_hit(const mcrt::Scene& scene, const mcrt::Ray& ray) {
-  mcrt::Interval range;
-  std::optional<mcrt::Hit> hit;
-  for (const mcrt::Sphere& s : scene.spheres())
-    if (const auto t = mcrt::intersect_distance(s, ray, range)) {
-      range.max = *t;
-      hit = mcrt::hit_at(s, ray, *t);
-    }
-  for (std::size_t i = 0; i < scene.quads().size(); ++i)
-    if (const auto t = mcrt::intersect_distance(scene.quads()[i], ray, range)) {
-      range.max = *t;
-      hit = mcrt::hit_at(scene.quads()[i], ray, *t);
-      hit->material = scene.quad_face_material(i, ray.direction);
-    }
-  return hit;
-}
-
-// estimate_path_radiance's loop, line for line, on the plain layers: reference_closest_hit,
-// and the uniform hemisphere sampled with std::cos and std::sin.
-mcrt::Color reference_path_radiance(const mcrt::Scene& scene, mcrt::Ray ray, mcrt::Rng& rng,
-                                    mcrt::RayCount& count) {
-  mcrt::Color radiance(0.0), beta(1.0);
-  for (int bounce = 0;; ++bounce) {
-    ++count.rays;
-    const std::optional<mcrt::Hit> hit = reference_closest_hit(scene, ray);
-    if (!hit) break;
-    const mcrt::Material& material = scene.material(*hit);
-    radiance += beta * material.emission;
-    if (bounce == k_depth) break;
-    const mcrt::Vec2 u = rng.uniform2();
-    const double cos_theta = u.x, sin_theta = std::sqrt(std::max(0.0, 1.0 - u.x * u.x));
-    const double phi = mcrt::k_two_pi * u.y;
-    const mcrt::Vec3 local(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
-    beta *= material.brdf() * cos_theta / mcrt::uniform_hemisphere_pdf();
-    if (beta == mcrt::Color(0.0)) break;
-    ray = mcrt::spawn_ray(*hit, mcrt::Frame(hit->normal).to_world(local));
-  }
-  return radiance;
-}
+using mcrt::testing::plain_closest_hit;    // support/plain_path_tracer.hpp
+using mcrt::testing::plain_path_radiance;
 
 template <bool reference>
 void path_tracer(benchmark::State& state, const char* scene_name) {
@@ -81,7 +41,7 @@ void path_tracer(benchmark::State& state, const char* scene_name) {
     const mcrt::RenderResult result =
         mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
                                            mcrt::RayCount& count) {
-          if constexpr (reference) return reference_path_radiance(scene, ray, rng, count);
+          if constexpr (reference) return plain_path_radiance(scene, ray, k_depth, rng, count);
           else return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
         });
     benchmark::DoNotOptimize(result.image.pixels.data());
@@ -119,7 +79,7 @@ void closest_hit_queries(benchmark::State& state, const char* scene_name) {
   for (auto _ : state) {
     for (const mcrt::Ray& ray : rays) {
       if constexpr (reference) {
-        benchmark::DoNotOptimize(reference_closest_hit(scene, ray));
+        benchmark::DoNotOptimize(plain_closest_hit(scene, ray));
       } else {
         benchmark::DoNotOptimize(scene.closest_hit(ray));
       }
