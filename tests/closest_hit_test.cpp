@@ -10,26 +10,13 @@
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
 #include "support/plain_nearest.hpp"
+#include "support/plain_path_tracer.hpp"
 
 using namespace mcrt;
 
 namespace {
 
-std::optional<Hit> plain_closest_hit(const Scene& scene, const Ray& ray, Interval range) {
-  std::optional<Hit> hit;
-  for (const Sphere& s : scene.spheres())
-    if (const auto t = intersect_distance(s, ray, range)) {
-      range.max = *t;
-      hit = hit_at(s, ray, *t);
-    }
-  for (std::size_t i = 0; i < scene.quads().size(); ++i)
-    if (const auto t = intersect_distance(scene.quads()[i], ray, range)) {
-      range.max = *t;
-      hit = hit_at(scene.quads()[i], ray, *t);
-      hit->material = scene.quad_face_material(i, ray.direction);  // a one-sided lamp's back
-    }
-  return hit;
-}
+using mcrt::testing::plain_closest_hit;  // support/plain_path_tracer.hpp
 
 // 3000 rays from inside and around `scene` (origins in a cube of side `scale`), with and without
 // a range: closest_hit must give the plain loop's hit, bit for bit.

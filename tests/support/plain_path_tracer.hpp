@@ -3,7 +3,8 @@
 // closest hit that loops intersect_distance over every primitive and a uniform hemisphere
 // sampled with std::cos and std::sin. The fast layers (SphereSet, QuadSet, cos_sin_two_pi)
 // must give its images (tests/plain_layers_test.cpp) and beat its speed
-// (bench_path_tracer's BM_ReferencePathTracer*).
+// (bench_path_tracer's BM_ReferencePathTracer*); plain_closest_hit is also the reference of
+// tests/closest_hit_test.cpp.
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +19,10 @@
 
 namespace mcrt::testing {
 
-/// The nearest hit by one intersect_distance per primitive, spheres first; the first strictly
-/// nearer hit wins, as in Scene::closest_hit.
-inline std::optional<Hit> plain_closest_hit(const Scene& scene, const Ray& ray) {
-  Interval range;
+/// The nearest hit in `range` by one intersect_distance per primitive, spheres first; the
+/// first strictly nearer hit wins, as in Scene::closest_hit.
+inline std::optional<Hit> plain_closest_hit(const Scene& scene, const Ray& ray,
+                                            Interval range = {}) {
   std::optional<Hit> hit;
   for (const Sphere& s : scene.spheres())
     if (const auto t = intersect_distance(s, ray, range)) {
@@ -32,7 +33,7 @@ inline std::optional<Hit> plain_closest_hit(const Scene& scene, const Ray& ray) 
     if (const auto t = intersect_distance(scene.quads()[i], ray, range)) {
       range.max = *t;
       hit = hit_at(scene.quads()[i], ray, *t);
-      hit->material = scene.quad_face_material(i, ray.direction);
+      hit->material = scene.quad_face_material(i, ray.direction);  // a one-sided lamp's back
     }
   return hit;
 }
