@@ -38,6 +38,7 @@ void SphereSet::add(const Sphere& s) {
   center_y_[size_] = s.center.y;
   center_z_[size_] = s.center.z;
   radius_squared_[size_] = s.radius * s.radius;
+  inverse_radius_.push_back(1.0 / s.radius);
   ++size_;
 }
 

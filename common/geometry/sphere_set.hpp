@@ -25,6 +25,8 @@ class SphereSet {
 
   void add(const Sphere& s);
   std::size_t size() const { return size_; }
+  /// 1 / radius of sphere i, kept so that hit_at need not divide.
+  double inverse_radius(std::size_t i) const { return inverse_radius_[i]; }
 
   /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere; no call at all
   /// for a scene without spheres (inline, so that costs one predictable branch).
@@ -44,6 +46,7 @@ class SphereSet {
   static const bool k_has_avx2;
   std::size_t size_ = 0;
   std::vector<double> center_x_, center_y_, center_z_, radius_squared_;
+  std::vector<double> inverse_radius_;  ///< not padded: only read for a sphere that was hit
 };
 
 }  // namespace mcrt

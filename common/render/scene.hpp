@@ -102,7 +102,8 @@ struct Scene {
       hit.material = quad_face_material(quad.index, ray.direction);
       return hit;
     }
-    if (sphere.index != sphere_set_.size()) return hit_at(spheres_[sphere.index], ray, sphere.t);
+    if (sphere.index != sphere_set_.size())
+      return hit_at(spheres_[sphere.index], ray, sphere.t, sphere_set_.inverse_radius(sphere.index));
     return std::nullopt;
   }
 
