@@ -30,8 +30,8 @@ inline std::optional<double> intersect_distance(const Sphere& s, const Ray& ray,
 }
 
 /// The hit record at distance t along the ray (t from intersect_distance), with the sphere's
-/// 1/r given: the normal is (p - c) / r as one division and three products, not three
-/// divisions. Scene keeps 1/r per sphere, so a bounce does not wait for the division.
+/// 1/r given, so the normal (p - c) / r costs three products. Scene keeps 1/r per sphere, so a
+/// bounce does not wait for a division after the search.
 inline Hit hit_at(const Sphere& s, const Ray& ray, double t, double inverse_radius) {
   Hit hit;
   hit.t = t;
@@ -41,6 +41,7 @@ inline Hit hit_at(const Sphere& s, const Ray& ray, double t, double inverse_radi
   return hit;
 }
 
+/// The same, dividing once here: one division and three products, not three divisions.
 inline Hit hit_at(const Sphere& s, const Ray& ray, double t) {
   return hit_at(s, ray, t, 1.0 / s.radius);
 }
