@@ -56,6 +56,16 @@ QuadSet::Nearest QuadSet::nearest_portable(const Ray& ray, Interval range) const
   return best;
 }
 
+void QuadSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
+                                     NearestLanes& nearest) const {
+  for (int l = 0; l < RayLanes::k_lanes; ++l) {
+    const Nearest best = nearest_portable(rays.get(l), {t_min, nearest.t[l]});
+    if (best.index == size_) continue;
+    nearest.t[l] = best.t;
+    nearest.index[l] = static_cast<double>(best.index);
+  }
+}
+
 #if MCRT_X86
 
 namespace {
@@ -120,10 +130,59 @@ namespace {
   return {static_cast<std::size_t>(nearest.index), nearest.t};
 }
 
+// nearest_portable's loop body with one quad broadcast to the four lanes and a ray in each:
+// every lane does what the one-ray loop does, in the same order, so no lanes are merged at
+// the end. The padding quads are skipped: only the first size() are read.
+[[gnu::target("avx2")]] void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
+                                                         NearestLanes& nearest) const {
+  const __m256d ox = _mm256_load_pd(rays.origin_x), oy = _mm256_load_pd(rays.origin_y),
+                oz = _mm256_load_pd(rays.origin_z);
+  const __m256d dx = _mm256_load_pd(rays.direction_x), dy = _mm256_load_pd(rays.direction_y),
+                dz = _mm256_load_pd(rays.direction_z);
+  const __m256d t_low = _mm256_set1_pd(t_min), zero = _mm256_setzero_pd(),
+                one = _mm256_set1_pd(1.0), sign = _mm256_set1_pd(-0.0);
+  __m256d best_t = _mm256_load_pd(nearest.t);
+  __m256d best_index = _mm256_load_pd(nearest.index);
+  for (std::size_t i = 0; i < size_; ++i) {
+    const __m256d nx = _mm256_set1_pd(normal_x_[i]), ny = _mm256_set1_pd(normal_y_[i]),
+                  nz = _mm256_set1_pd(normal_z_[i]);
+    const __m256d cx = _mm256_set1_pd(corner_x_[i]), cy = _mm256_set1_pd(corner_y_[i]),
+                  cz = _mm256_set1_pd(corner_z_[i]);
+    const __m256d denom = dot(nx, ny, nz, dx, dy, dz);
+    const __m256d t = _mm256_div_pd(
+        dot(nx, ny, nz, _mm256_sub_pd(cx, ox), _mm256_sub_pd(cy, oy), _mm256_sub_pd(cz, oz)),
+        denom);
+    const __m256d px = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), cx);
+    const __m256d py = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), cy);
+    const __m256d pz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), cz);
+    const __m256d a = dot(px, py, pz, _mm256_set1_pd(axis_a_x_[i]),
+                          _mm256_set1_pd(axis_a_y_[i]), _mm256_set1_pd(axis_a_z_[i]));
+    const __m256d b = dot(px, py, pz, _mm256_set1_pd(axis_b_x_[i]),
+                          _mm256_set1_pd(axis_b_y_[i]), _mm256_set1_pd(axis_b_z_[i]));
+    const __m256d facing = _mm256_cmp_pd(_mm256_andnot_pd(sign, denom),
+                                         _mm256_set1_pd(parallel_threshold_[i]), _CMP_NLT_UQ);
+    const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(t, t_low, _CMP_GT_OQ),
+                                           _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
+    const __m256d inside = _mm256_and_pd(
+        _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_NLT_UQ), _mm256_cmp_pd(a, one, _CMP_NGT_UQ)),
+        _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_NLT_UQ), _mm256_cmp_pd(b, one, _CMP_NGT_UQ)));
+    const __m256d closer = _mm256_and_pd(_mm256_and_pd(facing, in_range), inside);
+    best_t = _mm256_blendv_pd(best_t, t, closer);
+    best_index = _mm256_blendv_pd(best_index, _mm256_set1_pd(static_cast<double>(i)), closer);
+  }
+  _mm256_store_pd(nearest.t, best_t);
+  _mm256_store_pd(nearest.index, best_index);
+}
+
 #else
 
 QuadSet::Nearest QuadSet::nearest_avx2(const Ray& ray, Interval range) const {
   return nearest_portable(ray, range);
+}
+
+void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
+                                 NearestLanes& nearest) const {
+  nearest_lanes_portable(rays, t_min, nearest);
 }
 
 #endif

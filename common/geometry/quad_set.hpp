@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/quad.hpp"
+#include "geometry/ray_lanes.hpp"
 
 namespace mcrt {
 
@@ -38,6 +39,19 @@ class QuadSet {
   Nearest nearest_portable(const Ray& ray, Interval range) const;
   /// Four quads per instruction; only call it if has_avx2().
   Nearest nearest_avx2(const Ray& ray, Interval range) const;
+
+  /// Four rays at once: each lane of `nearest` becomes the nearest quad of its ray hit in
+  /// (t_min, nearest.t[lane]), if there is one nearer than what the lane holds; the same t and
+  /// index, bit for bit, as nearest() of each ray alone.
+  void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
+    if (size_ == 0) return;
+    if (k_has_avx2) nearest_lanes_avx2(rays, t_min, nearest);
+    else nearest_lanes_portable(rays, t_min, nearest);
+  }
+  /// Plain C++, one ray and one quad at a time.
+  void nearest_lanes_portable(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
+  /// One quad against the four rays per instruction; only call it if has_avx2().
+  void nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
 
   static bool has_avx2() { return k_has_avx2; }
 

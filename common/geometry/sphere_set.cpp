@@ -61,6 +61,17 @@ SphereSet::Nearest SphereSet::nearest_portable(const Ray& ray, Interval range) c
   return best;
 }
 
+void SphereSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
+                                       NearestLanes& nearest) const {
+  for (int l = 0; l < RayLanes::k_lanes; ++l) {
+    const Nearest best = nearest_portable(rays.get(l), {t_min, nearest.t[l]});
+    if (best.index == size_) continue;
+    nearest.t[l] = best.t;
+    nearest.index[l] = static_cast<double>(best.index);
+  }
+}
+
+
 #if MCRT_X86
 
 // The loop of nearest_portable on four spheres per instruction, each lane keeping its own
@@ -106,10 +117,53 @@ SphereSet::Nearest SphereSet::nearest_portable(const Ray& ray, Interval range) c
   return {static_cast<std::size_t>(nearest.index), nearest.t};
 }
 
+
+// nearest_portable's loop body with one sphere broadcast to the four lanes and a ray in each:
+// every lane does what the one-ray loop does, in the same order, so no lanes are merged at
+// the end. The padding spheres are skipped: only the first size() are read.
+[[gnu::target("avx2")]] void SphereSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
+                                                           NearestLanes& nearest) const {
+  const __m256d ox = _mm256_load_pd(rays.origin_x), oy = _mm256_load_pd(rays.origin_y),
+                oz = _mm256_load_pd(rays.origin_z);
+  const __m256d dx = _mm256_load_pd(rays.direction_x), dy = _mm256_load_pd(rays.direction_y),
+                dz = _mm256_load_pd(rays.direction_z);
+  const __m256d t_low = _mm256_set1_pd(t_min), zero = _mm256_setzero_pd();
+  __m256d best_t = _mm256_load_pd(nearest.t);
+  __m256d best_index = _mm256_load_pd(nearest.index);
+  for (std::size_t i = 0; i < size_; ++i) {
+    const __m256d ocx = _mm256_sub_pd(_mm256_set1_pd(center_x_[i]), ox);
+    const __m256d ocy = _mm256_sub_pd(_mm256_set1_pd(center_y_[i]), oy);
+    const __m256d ocz = _mm256_sub_pd(_mm256_set1_pd(center_z_[i]), oz);
+    const __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ocx, dx), _mm256_mul_pd(ocy, dy)),
+                                    _mm256_mul_pd(ocz, dz));
+    const __m256d oc2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ocx, ocx), _mm256_mul_pd(ocy, ocy)),
+                      _mm256_mul_pd(ocz, ocz));
+    const __m256d det = _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(b, b), oc2),
+                                      _mm256_set1_pd(radius_squared_[i]));
+    const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(det, zero));
+    const __m256d near = _mm256_sub_pd(b, root), far = _mm256_add_pd(b, root);
+    const __m256d t = _mm256_blendv_pd(far, near, _mm256_cmp_pd(near, t_low, _CMP_GT_OQ));
+    const __m256d closer = _mm256_and_pd(
+        _mm256_and_pd(_mm256_cmp_pd(det, zero, _CMP_GE_OQ), _mm256_cmp_pd(t, t_low, _CMP_GT_OQ)),
+        _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
+    best_t = _mm256_blendv_pd(best_t, t, closer);
+    best_index = _mm256_blendv_pd(best_index, _mm256_set1_pd(static_cast<double>(i)), closer);
+  }
+  _mm256_store_pd(nearest.t, best_t);
+  _mm256_store_pd(nearest.index, best_index);
+}
+
+
 #else
 
 SphereSet::Nearest SphereSet::nearest_avx2(const Ray& ray, Interval range) const {
   return nearest_portable(ray, range);
+}
+
+void SphereSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
+                                   NearestLanes& nearest) const {
+  nearest_lanes_portable(rays, t_min, nearest);
 }
 
 #endif

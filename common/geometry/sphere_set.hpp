@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/ray_lanes.hpp"
 #include "geometry/sphere.hpp"
 
 namespace mcrt {
@@ -38,6 +39,19 @@ class SphereSet {
   Nearest nearest_portable(const Ray& ray, Interval range) const;
   /// Four spheres per instruction; only call it if has_avx2().
   Nearest nearest_avx2(const Ray& ray, Interval range) const;
+
+  /// Four rays at once: each lane of `nearest` becomes the nearest sphere of its ray with a
+  /// root in (t_min, nearest.t[lane]), if there is one nearer than what the lane holds; the
+  /// same t and index, bit for bit, as nearest() of each ray alone.
+  void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
+    if (size_ == 0) return;
+    if (k_has_avx2) nearest_lanes_avx2(rays, t_min, nearest);
+    else nearest_lanes_portable(rays, t_min, nearest);
+  }
+  /// Plain C++, one ray and one sphere at a time.
+  void nearest_lanes_portable(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
+  /// One sphere against the four rays per instruction; only call it if has_avx2().
+  void nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
 
   /// Whether this processor runs AVX2 (checked once, at start-up).
   static bool has_avx2() { return k_has_avx2; }

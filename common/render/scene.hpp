@@ -13,6 +13,7 @@
 #include "geometry/camera.hpp"
 #include "geometry/quad.hpp"
 #include "geometry/quad_set.hpp"
+#include "geometry/ray_lanes.hpp"
 #include "geometry/sphere.hpp"
 #include "geometry/sphere_set.hpp"
 #include "render/material.hpp"
@@ -104,6 +105,33 @@ struct Scene {
     }
     if (sphere.index != sphere_set_.size())
       return hit_at(spheres_[sphere.index], ray, sphere.t, sphere_set_.inverse_radius(sphere.index));
+    return std::nullopt;
+  }
+
+  /// closest_hit of four rays at once, in two steps: the search (closest_hits) and each lane's
+  /// Hit (hit_in_lane), which is the same, bit for bit, as closest_hit(rays.get(lane)).
+  struct ClosestLanes {
+    NearestLanes sphere{Interval{}.max};
+    NearestLanes quad{Interval{}.max};  ///< only quads nearer than the lane's sphere
+  };
+  ClosestLanes closest_hits(const RayLanes& rays) const {
+    ClosestLanes nearest;
+    sphere_set_.nearest_lanes(rays, Interval{}.min, nearest.sphere);
+    for (int l = 0; l < RayLanes::k_lanes; ++l) nearest.quad.t[l] = nearest.sphere.t[l];
+    quad_set_.nearest_lanes(rays, Interval{}.min, nearest.quad);
+    return nearest;
+  }
+  std::optional<Hit> hit_in_lane(const ClosestLanes& nearest, int lane, const Ray& ray) const {
+    if (nearest.quad.found(lane)) {
+      const std::size_t i = nearest.quad.primitive(lane);
+      Hit hit = hit_at(quads_[i], ray, nearest.quad.t[lane]);
+      hit.material = quad_face_material(i, ray.direction);
+      return hit;
+    }
+    if (nearest.sphere.found(lane)) {
+      const std::size_t i = nearest.sphere.primitive(lane);
+      return hit_at(spheres_[i], ray, nearest.sphere.t[lane], sphere_set_.inverse_radius(i));
+    }
     return std::nullopt;
   }
 

@@ -1,0 +1,145 @@
+#include "render/path_tracer_lanes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/parallel.hpp"
+#include "geometry/hit.hpp"
+#include "sampling/sampling.hpp"
+
+namespace mcrt {
+
+namespace {
+
+constexpr int k_lanes = RayLanes::k_lanes;
+
+// The paths of one row in flight: a row's samples are numbered task = x spp + s and taken in
+// that order, a chunk at a time. A chunk's radiances are kept until its last path ends, then
+// added to their pixels in task order, which is each pixel's sample order.
+class RowOfPaths {
+ public:
+  // Paths per chunk: enough that the lanes left idle while a chunk's last paths finish (at
+  // most max_depth + 1 bounces) are a small part of its work.
+  static constexpr std::uint64_t k_chunk = 1024;
+
+  RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+             int max_depth, int y)
+      : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y) {}
+
+  // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
+  void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {
+    const std::uint64_t tasks = static_cast<std::uint64_t>(camera_.width()) * settings_.spp;
+    for (std::uint64_t first = 0; first < tasks; first += k_chunk) {
+      chunk_first_ = first;
+      chunk_end_ = std::min(tasks, first + k_chunk);
+      next_task_ = first;
+      trace_chunk(count);
+      for (std::uint64_t task = first; task < chunk_end_; ++task) {
+        const Color& radiance = radiance_[task - first];
+        if (!is_finite(radiance)) ++non_finite;
+        pixel_sums[task / settings_.spp] += radiance;
+      }
+    }
+  }
+
+ private:
+  struct Path {
+    Rng rng{0, 0};
+    Color radiance{0.0};
+    Color beta{1.0};  // path weight: product of f_r cos(theta_i) / pdf(wi) so far
+    int bounce = 0;
+    std::uint64_t task = 0;
+  };
+
+  // Lane l starts the chunk's next path, if any is left: its camera ray, as render() makes it.
+  bool start_path(int l) {
+    if (next_task_ == chunk_end_) return false;
+    const std::uint64_t task = next_task_++;
+    const auto x = static_cast<int>(task / settings_.spp);
+    const std::uint64_t sample = settings_.first_sample + task % settings_.spp;
+    const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + x;
+    Path& path = paths_[l];
+    path = Path{Rng(settings_.seed, stream_index(pixel, sample)), Color(0.0), Color(1.0), 0, task};
+    rays_.set(l, camera_.generate_ray(x, y_, path.rng.uniform2()));
+    return true;
+  }
+
+  void trace_chunk(RayCount& count) {
+    std::array<bool, k_lanes> active{};
+    for (int l = 0; l < k_lanes; ++l) active[l] = start_path(l);
+    while (std::any_of(active.begin(), active.end(), [](bool a) { return a; })) {
+      const Scene::ClosestLanes nearest = scene_.closest_hits(rays_);
+      for (int l = 0; l < k_lanes; ++l) {
+        if (!active[l]) continue;
+        ++count.rays;
+        const Ray ray = rays_.get(l);
+        if (const std::optional<Ray> next = bounce(paths_[l], scene_.hit_in_lane(nearest, l, ray))) {
+          rays_.set(l, *next);
+        } else {
+          radiance_[paths_[l].task - chunk_first_] = paths_[l].radiance;
+          active[l] = start_path(l);
+        }
+      }
+    }
+  }
+
+  // One iteration of estimate_path_radiance's loop, after its closest-hit query: the next ray,
+  // or none when the path has ended.
+  std::optional<Ray> bounce(Path& path, const std::optional<Hit>& hit) const {
+    if (!hit) return std::nullopt;
+    const Material& material = scene_.material(*hit);
+    path.radiance += path.beta * material.emission;
+    if (path.bounce == max_depth_) return std::nullopt;
+    const Vec3 local = sample_uniform_hemisphere(path.rng.uniform2());
+    const Vec3 wi = Frame(hit->normal).to_world(local);
+    const double cos_theta_i = local.z;
+    path.beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();
+    if (path.beta == Color(0.0)) return std::nullopt;
+    ++path.bounce;
+    return spawn_ray(*hit, wi);
+  }
+
+  const Scene& scene_;
+  const Camera& camera_;
+  const RenderSettings& settings_;
+  const int max_depth_;
+  const int y_;
+  std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
+  RayLanes rays_;
+  std::array<Path, k_lanes> paths_;
+  std::array<Color, k_chunk> radiance_;
+};
+
+}  // namespace
+
+RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
+                                      const RenderSettings& settings, int max_depth) {
+  const auto start = std::chrono::steady_clock::now();
+  const int width = camera.width(), height = camera.height();
+  RenderResult result;
+  result.image = Image(width, height);
+  std::vector<RayCount> row_rays(height);
+  std::vector<std::uint64_t> row_non_finite(height, 0);
+
+  parallel_for(static_cast<std::size_t>(height), settings.threads, [&](std::size_t row) {
+    const int y = static_cast<int>(row);
+    std::vector<Color> sums(width, Color(0.0));
+    RowOfPaths paths(scene, camera, settings, max_depth, y);
+    paths.trace(sums, row_rays[row], row_non_finite[row]);
+    for (int x = 0; x < width; ++x) result.image.at(x, y) = sums[x] / static_cast<double>(settings.spp);
+    if (settings.progress) settings.progress->advance();
+  });
+
+  for (int y = 0; y < height; ++y) {
+    result.rays += row_rays[y].rays;
+    result.non_finite_samples += row_non_finite[y];
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace mcrt
