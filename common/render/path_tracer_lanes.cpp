@@ -9,7 +9,7 @@
 
 #include "core/parallel.hpp"
 #include "geometry/hit.hpp"
-#include "sampling/sampling.hpp"
+#include "render/bounce_lanes.hpp"
 
 namespace mcrt {
 
@@ -50,7 +50,6 @@ class RowOfPaths {
   struct Path {
     Rng rng{0, 0};
     Color radiance{0.0};
-    Color beta{1.0};  // path weight: product of f_r cos(theta_i) / pdf(wi) so far
     int bounce = 0;
     std::uint64_t task = 0;
   };
@@ -63,44 +62,55 @@ class RowOfPaths {
     const std::uint64_t sample = settings_.first_sample + task % settings_.spp;
     const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + x;
     Path& path = paths_[l];
-    path = Path{Rng(settings_.seed, stream_index(pixel, sample)), Color(0.0), Color(1.0), 0, task};
+    path = Path{Rng(settings_.seed, stream_index(pixel, sample)), Color(0.0), 0, task};
     rays_.set(l, camera_.generate_ray(x, y_, path.rng.uniform2()));
+    for (int axis = 0; axis < 3; ++axis) bounce_.beta[axis][l] = 1.0;  // beta_0 = 1
     return true;
   }
 
+  Color beta(int l) const { return {bounce_.beta[0][l], bounce_.beta[1][l], bounce_.beta[2][l]}; }
+
+  // estimate_path_radiance's loop, four paths at a time: the search for four rays, then each
+  // lane's emission and stopping rules, then the bounce of the lanes that go on.
   void trace_chunk(RayCount& count) {
     std::array<bool, k_lanes> active{};
     for (int l = 0; l < k_lanes; ++l) active[l] = start_path(l);
     while (std::any_of(active.begin(), active.end(), [](bool a) { return a; })) {
       const Scene::ClosestLanes nearest = scene_.closest_hits(rays_);
       for (int l = 0; l < k_lanes; ++l) {
+        bounce_.bouncing[l] = false;
         if (!active[l]) continue;
         ++count.rays;
-        const Ray ray = rays_.get(l);
-        if (const std::optional<Ray> next = bounce(paths_[l], scene_.hit_in_lane(nearest, l, ray))) {
-          rays_.set(l, *next);
-        } else {
-          radiance_[paths_[l].task - chunk_first_] = paths_[l].radiance;
-          active[l] = start_path(l);
+        Path& path = paths_[l];
+        const std::optional<Hit> hit = scene_.hit_in_lane(nearest, l, rays_.get(l));
+        if (hit) {
+          const Material& material = scene_.material(*hit);
+          path.radiance += beta(l) * material.emission;
+          bounce_.bouncing[l] = path.bounce != max_depth_;
+          if (bounce_.bouncing[l]) {
+            const Vec2 u = path.rng.uniform2();
+            bounce_.u0[l] = u.x;
+            bounce_.u1[l] = u.y;
+            for (int axis = 0; axis < 3; ++axis) {
+              bounce_.point[axis][l] = hit->point[axis];
+              bounce_.normal[axis][l] = hit->normal[axis];
+              bounce_.albedo[axis][l] = material.albedo[axis];
+            }
+          }
         }
       }
+      bounce_lanes(bounce_, rays_);
+      for (int l = 0; l < k_lanes; ++l) {
+        if (!active[l]) continue;
+        // A black surface ends the path exactly: every later term would be multiplied by 0.
+        if (bounce_.bouncing[l] && beta(l) != Color(0.0)) {
+          ++paths_[l].bounce;
+          continue;
+        }
+        radiance_[paths_[l].task - chunk_first_] = paths_[l].radiance;
+        active[l] = start_path(l);
+      }
     }
-  }
-
-  // One iteration of estimate_path_radiance's loop, after its closest-hit query: the next ray,
-  // or none when the path has ended.
-  std::optional<Ray> bounce(Path& path, const std::optional<Hit>& hit) const {
-    if (!hit) return std::nullopt;
-    const Material& material = scene_.material(*hit);
-    path.radiance += path.beta * material.emission;
-    if (path.bounce == max_depth_) return std::nullopt;
-    const Vec3 local = sample_uniform_hemisphere(path.rng.uniform2());
-    const Vec3 wi = Frame(hit->normal).to_world(local);
-    const double cos_theta_i = local.z;
-    path.beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();
-    if (path.beta == Color(0.0)) return std::nullopt;
-    ++path.bounce;
-    return spawn_ray(*hit, wi);
   }
 
   const Scene& scene_;
@@ -110,6 +120,7 @@ class RowOfPaths {
   const int y_;
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
   RayLanes rays_;
+  BounceLanes bounce_;
   std::array<Path, k_lanes> paths_;
   std::array<Color, k_chunk> radiance_;
 };

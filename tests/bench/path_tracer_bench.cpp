@@ -19,6 +19,7 @@
 #include "bench/path_rays.hpp"
 #include "support/plain_path_tracer.hpp"
 #include "render/path_tracer.hpp"
+#include "render/path_tracer_lanes.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 
@@ -29,7 +30,9 @@ constexpr int k_depth = 10;
 using mcrt::testing::plain_closest_hit;    // support/plain_path_tracer.hpp
 using mcrt::testing::plain_path_radiance;
 
-template <bool reference>
+enum class Engine { lecture_loop, plain_layers, lanes };
+
+template <Engine engine>
 void path_tracer(benchmark::State& state, const char* scene_name) {
   const mcrt::Scene scene = mcrt::make_scene(scene_name);
   const mcrt::Camera camera(scene.camera, 256, 192);
@@ -38,12 +41,19 @@ void path_tracer(benchmark::State& state, const char* scene_name) {
   std::uint64_t seed = 1;
   for (auto _ : state) {
     const mcrt::RenderSettings settings{16, 0, seed++, threads, nullptr};
-    const mcrt::RenderResult result =
-        mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
-                                           mcrt::RayCount& count) {
-          if constexpr (reference) return plain_path_radiance(scene, ray, k_depth, rng, count);
-          else return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
+    const auto trace = [&] {
+      if constexpr (engine == Engine::lanes)
+        return mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
+      else
+        return mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
+                                                  mcrt::RayCount& count) {
+          if constexpr (engine == Engine::plain_layers)
+            return plain_path_radiance(scene, ray, k_depth, rng, count);
+          else
+            return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
         });
+    };
+    const mcrt::RenderResult result = trace();
     benchmark::DoNotOptimize(result.image.pixels.data());
     rays += result.rays;
   }
@@ -51,22 +61,32 @@ void path_tracer(benchmark::State& state, const char* scene_name) {
       benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
 }
 void BM_PathTracerCornellSpheres(benchmark::State& state) {
-  path_tracer<false>(state, "cornell-spheres");
+  path_tracer<Engine::lanes>(state, "cornell-spheres");
 }
-void BM_PathTracerCornell(benchmark::State& state) { path_tracer<false>(state, "cornell"); }
+void BM_PathTracerCornell(benchmark::State& state) { path_tracer<Engine::lanes>(state, "cornell"); }
+void BM_LectureLoopPathTracerCornellSpheres(benchmark::State& state) {
+  path_tracer<Engine::lecture_loop>(state, "cornell-spheres");
+}
+void BM_LectureLoopPathTracerCornell(benchmark::State& state) {
+  path_tracer<Engine::lecture_loop>(state, "cornell");
+}
 void BM_ReferencePathTracerCornellSpheres(benchmark::State& state) {
-  path_tracer<true>(state, "cornell-spheres");
+  path_tracer<Engine::plain_layers>(state, "cornell-spheres");
 }
 void BM_ReferencePathTracerCornell(benchmark::State& state) {
-  path_tracer<true>(state, "cornell");
+  path_tracer<Engine::plain_layers>(state, "cornell");
 }
 // Wall-clock time: with 2 threads the CPU time of the main thread alone would mislead.
 BENCHMARK(BM_PathTracerCornellSpheres)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_LectureLoopPathTracerCornellSpheres)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
     ->UseRealTime()->MinTime(2.0);
 BENCHMARK(BM_ReferencePathTracerCornellSpheres)->Arg(1)->Unit(benchmark::kMillisecond)
     ->UseRealTime()->MinTime(2.0);
 BENCHMARK(BM_PathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(2.0);
+BENCHMARK(BM_LectureLoopPathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MinTime(2.0);
 BENCHMARK(BM_ReferencePathTracerCornell)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(2.0);
 

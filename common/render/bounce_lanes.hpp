@@ -1,0 +1,37 @@
+#pragma once
+/// The bounce of estimate_path_radiance for four paths at once: from each lane's hit and two
+/// uniforms, the direction sampled uniformly on the hemisphere, the path weight times
+/// f_r cos(theta_i) / pdf, and the ray that leaves the hit in that direction.
+///
+/// bounce_lanes_avx2 computes the four lanes with one instruction per operation, in the order
+/// the one-path code does them (sample_uniform_hemisphere, cos_sin_two_pi, Frame, spawn_ray,
+/// the weight update), without FMA, so every lane is the same bit for bit as the one-path code,
+/// which bounce_lanes_portable runs lane by lane (tests/path_tracer_lanes_test.cpp).
+
+#include <array>
+
+#include "geometry/ray_lanes.hpp"
+
+namespace mcrt {
+
+inline constexpr int k_bounce_lanes = RayLanes::k_lanes;
+
+/// Four paths at their hits, coordinate by coordinate: axis 0, 1, 2 are x, y, z.
+struct BounceLanes {
+  alignas(32) double point[3][k_bounce_lanes]{};
+  alignas(32) double normal[3][k_bounce_lanes]{};  ///< unit, facing the incoming ray
+  alignas(32) double albedo[3][k_bounce_lanes]{};  ///< rho of the hit's material
+  alignas(32) double u0[k_bounce_lanes]{}, u1[k_bounce_lanes]{};  ///< cos(theta) and phi / 2 pi
+  alignas(32) double beta[3][k_bounce_lanes]{};    ///< the path weight, updated in place
+  std::array<bool, k_bounce_lanes> bouncing{};      ///< lanes whose path goes on
+};
+
+/// For every bouncing lane, beta *= f_r cos(theta_i) / pdf and `rays` gets the new ray; the
+/// other lanes of beta and rays are left as they are. AVX2 where the processor has it.
+void bounce_lanes(BounceLanes& lanes, RayLanes& rays);
+/// One lane at a time, with the one-path functions.
+void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays);
+/// Four lanes per instruction; only call it where the processor has AVX2.
+void bounce_lanes_avx2(BounceLanes& lanes, RayLanes& rays);
+
+}  // namespace mcrt
