@@ -116,11 +116,27 @@ TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   EXPECT_EQ(read_text(one / "rmse_vs_spp.svg"), read_text(two / "rmse_vs_spp.svg"));
 }
 
+// The lecture's loop and the four-lane engine write the same images, byte for byte, and the
+// same table but for the timings.
+TEST(Ch05Test, BothEnginesWriteTheSameImages) {
+  const auto loop = fresh_dir("ch05_engine_loop"), lanes = fresh_dir("ch05_engine_lanes");
+  const std::string flags =
+      "--scene cornell --width 21 --height 13 --spp 1,3 --depth 5 --seed 9 --reference-spp 0 --quiet";
+  ASSERT_EQ(run_program(k_program, flags + " --engine loop --out " + loop.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, flags + " --out " + lanes.string()).exit_code, 0);
+  for (const char* name : {"spp_0001.pfm", "spp_0003.pfm", "spp_0003.png", "noise_strip.png"})
+    EXPECT_EQ(read_text(loop / name), read_text(lanes / name)) << name;
+  const CsvFile a(loop / "rmse_vs_spp.csv"), b(lanes / "rmse_vs_spp.csv");
+  EXPECT_EQ(a.numbers("rmse"), b.numbers("rmse"));
+  EXPECT_EQ(a.numbers("rays"), b.numbers("rays"));
+}
+
 TEST(Ch05Test, HelpNamesEveryFlag) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--scene", "--width", "--height", "--spp", "--depth", "--seed",
-                           "--threads", "--out", "--quiet", "--reference-spp", "--reference-dir"})
+                           "--threads", "--out", "--quiet", "--reference-spp", "--reference-dir",
+                           "--engine"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -135,6 +151,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--spp 1,0,4", "--spp"},
                       BadInput{"--spp x", "--spp"}, BadInput{"--depth -1", "--depth"},
                       BadInput{"--scene moon", "--scene"},
+                      BadInput{"--engine simd", "--engine"},
                       BadInput{"--reference-spp -1", "--reference-spp"},
                       BadInput{"--reference-spp 2000000", "--reference-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},
