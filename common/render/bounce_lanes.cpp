@@ -10,6 +10,7 @@
 
 namespace mcrt {
 
+// ASSIGNMENT a4.1 BEGIN needs=a2.1 withheld stub: void bounce_lanes(BounceLanes&, RayLanes&) { NOT_IMPLEMENTED(bounce_lanes); } void bounce_lanes_portable(BounceLanes&, RayLanes&) { NOT_IMPLEMENTED(bounce_lanes_portable); } void bounce_lanes_avx2(BounceLanes&, RayLanes&) { NOT_IMPLEMENTED(bounce_lanes_avx2); }
 namespace {
 
 Vec3 lane_of(const double (&v)[3][k_bounce_lanes], int l) { return {v[0][l], v[1][l], v[2][l]}; }
@@ -165,5 +166,7 @@ using D4 = __m256d;
 void bounce_lanes_avx2(BounceLanes& lanes, RayLanes& rays) { bounce_lanes_portable(lanes, rays); }
 
 #endif
+
+// ASSIGNMENT a4.1 END
 
 }  // namespace mcrt

@@ -86,6 +86,9 @@ case "$a" in
     leak tests 'path_radiance_with(' "known_bugs/path_tracers.hpp's path loop"
     leak tests 'roulette_path_with(' "known_bugs/russian_roulette.hpp's path loop"
     leak tests 'reference_radiance(const ReferenceQuadBox' "support/quad_box_reference.hpp's path tracer"
+    leak common/render/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
+    leak common/render/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
+    leak common/render/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
     ;;
 esac
 case "$a" in

@@ -1,0 +1,113 @@
+// The four-lane bounce (render/bounce_lanes.hpp): bounce_lanes_avx2 against
+// bounce_lanes_portable, which runs the one-path code (sample_uniform_hemisphere, Frame,
+// spawn_ray, the weight update) lane by lane. Both must give the same bits in every lane: the
+// new ray and weight where a lane bounces, and the old ones, untouched, where it does not.
+//
+// The inputs reach the corners of the code: normals along and against every axis (Frame's
+// branch-free sign at n.z = +-1 and +-0), u1 at the quarter turns of cos_sin_two_pi and just
+// below 1, u0 at 0 (a grazing direction), hit points far from the origin (the offset grows
+// with them), black and white albedos, and every mask of bouncing lanes.
+
+#include <cstring>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/cpu_features.hpp"
+#include "core/rng.hpp"
+#include "render/bounce_lanes.hpp"
+#include "sampling/sampling.hpp"
+
+using namespace mcrt;
+
+namespace {
+
+bool same_bits(const double* a, const double* b, int n) { return std::memcmp(a, b, n * sizeof(double)) == 0; }
+
+// A unit normal: a random one, or one of the special ones.
+Vec3 normal_for(int i, Rng& rng) {
+  static const std::vector<Vec3> special{{0, 0, 1},  {0, 0, -1}, {1, 0, 0},  {-1, 0, 0},
+                                         {0, 1, 0},  {0, -1, 0}, {1, 0, 0.0}, {1, 0, -0.0}};
+  if (i % 3 == 0) return special[rng.uniform_below(static_cast<std::uint32_t>(special.size()))];
+  return sample_uniform_sphere(rng.uniform2());
+}
+
+double u1_for(int i, Rng& rng) {
+  static const double special[] = {0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875,
+                                   1.0 - 0x1p-32};
+  return i % 4 == 0 ? special[rng.uniform_below(9)] : rng.uniform();
+}
+
+TEST(BounceLanesTest, AvxLanesGiveTheOnePathCodesBits) {
+  if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor: only the portable lanes run";
+  Rng rng(21, 0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    BounceLanes lanes;
+    RayLanes rays;
+    for (int l = 0; l < k_bounce_lanes; ++l) {
+      const Vec3 n = normal_for(trial + l, rng);
+      const double reach = trial % 5 == 0 ? 1e5 : 600.0;  // the sphere box's walls: 1e5 away
+      for (int axis = 0; axis < 3; ++axis) {
+        lanes.point[axis][l] = reach * (2.0 * rng.uniform() - 1.0);
+        lanes.normal[axis][l] = n[axis];
+        lanes.albedo[axis][l] = (trial + axis) % 7 == 0 ? 0.0 : rng.uniform();
+        lanes.beta[axis][l] = 3.0 * rng.uniform();
+      }
+      lanes.u0[l] = (trial + l) % 11 == 0 ? 0.0 : rng.uniform();
+      lanes.u1[l] = u1_for(trial + l, rng);
+      lanes.bouncing[l] = ((trial >> l) & 1) != 0;  // every mask of the four lanes
+      rays.set(l, Ray(Vec3(rng.uniform()), Vec3(0, 1, 0)));
+    }
+    BounceLanes fast_lanes = lanes, plain_lanes = lanes;
+    RayLanes fast_rays = rays, plain_rays = rays;
+    bounce_lanes_avx2(fast_lanes, fast_rays);
+    bounce_lanes_portable(plain_lanes, plain_rays);
+    for (int axis = 0; axis < 3; ++axis)
+      ASSERT_TRUE(same_bits(fast_lanes.beta[axis], plain_lanes.beta[axis], k_bounce_lanes))
+          << "trial " << trial << " beta axis " << axis;
+    ASSERT_TRUE(same_bits(fast_rays.origin_x, plain_rays.origin_x, k_bounce_lanes)) << trial;
+    ASSERT_TRUE(same_bits(fast_rays.origin_y, plain_rays.origin_y, k_bounce_lanes)) << trial;
+    ASSERT_TRUE(same_bits(fast_rays.origin_z, plain_rays.origin_z, k_bounce_lanes)) << trial;
+    ASSERT_TRUE(same_bits(fast_rays.direction_x, plain_rays.direction_x, k_bounce_lanes)) << trial;
+    ASSERT_TRUE(same_bits(fast_rays.direction_y, plain_rays.direction_y, k_bounce_lanes)) << trial;
+    ASSERT_TRUE(same_bits(fast_rays.direction_z, plain_rays.direction_z, k_bounce_lanes)) << trial;
+  }
+}
+
+// The portable lanes do bounce: a lane that bounces gets a unit direction on the normal's side,
+// an origin within the offset of the hit point, and the weight times 2 rho cos(theta); one
+// that does not keeps its ray and weight.
+TEST(BounceLanesTest, BouncingLanesMoveAndTheOthersStay) {
+  BounceLanes lanes;
+  RayLanes rays;
+  const Ray old(Vec3(7.0), Vec3(0, 1, 0));
+  for (int l = 0; l < k_bounce_lanes; ++l) {
+    lanes.normal[1][l] = 1.0;  // n = +y at the point (l, 0, 0)
+    lanes.point[0][l] = l;
+    for (int axis = 0; axis < 3; ++axis) {
+      lanes.albedo[axis][l] = 0.5;
+      lanes.beta[axis][l] = 1.0;
+    }
+    lanes.u0[l] = 0.25 * (l + 1);  // cos(theta)
+    lanes.u1[l] = 0.1 * l;
+    lanes.bouncing[l] = l % 2 == 0;
+    rays.set(l, old);
+  }
+  bounce_lanes(lanes, rays);
+  for (int l = 0; l < k_bounce_lanes; ++l) {
+    const Ray ray = rays.get(l);
+    if (!lanes.bouncing[l]) {
+      EXPECT_EQ(ray.origin, old.origin);
+      EXPECT_EQ(ray.direction, old.direction);
+      EXPECT_EQ(lanes.beta[0][l], 1.0);
+      continue;
+    }
+    EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-15);  // a few roundings of a unit vector
+    EXPECT_NEAR(ray.direction.y, lanes.u0[l], 1e-15);     // cos(theta) along the normal
+    EXPECT_NEAR(ray.origin.x, l, 1e-6);                   // offset 1e-7 (1 + |p|) at most
+    EXPECT_GT(ray.origin.y, 0.0);                         // pushed to the normal's side
+    EXPECT_NEAR(lanes.beta[1][l], 2.0 * 0.5 * lanes.u0[l], 1e-15);  // 2 rho cos(theta)
+  }
+}
+
+}  // namespace
