@@ -48,8 +48,8 @@ TEST(BounceLanesTest, AvxLanesGiveTheOnePathCodesBits) {
       const Vec3 n = normal_for(trial + l, rng);
       const double reach = trial % 5 == 0 ? 1e5 : 600.0;  // the sphere box's walls: 1e5 away
       for (int axis = 0; axis < 3; ++axis) {
-        lanes.point[axis][l] = reach * (2.0 * rng.uniform() - 1.0);
-        lanes.normal[axis][l] = n[axis];
+        lanes.hit.point[axis][l] = reach * (2.0 * rng.uniform() - 1.0);
+        lanes.hit.normal[axis][l] = n[axis];
         lanes.albedo[axis][l] = (trial + axis) % 7 == 0 ? 0.0 : rng.uniform();
         lanes.beta[axis][l] = 3.0 * rng.uniform();
       }
@@ -82,8 +82,8 @@ TEST(BounceLanesTest, BouncingLanesMoveAndTheOthersStay) {
   RayLanes rays;
   const Ray old(Vec3(7.0), Vec3(0, 1, 0));
   for (int l = 0; l < k_bounce_lanes; ++l) {
-    lanes.normal[1][l] = 1.0;  // n = +y at the point (l, 0, 0)
-    lanes.point[0][l] = l;
+    lanes.hit.normal[1][l] = 1.0;  // n = +y at the point (l, 0, 0)
+    lanes.hit.point[0][l] = l;
     for (int axis = 0; axis < 3; ++axis) {
       lanes.albedo[axis][l] = 0.5;
       lanes.beta[axis][l] = 1.0;

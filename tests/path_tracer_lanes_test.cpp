@@ -6,7 +6,8 @@
 // the same streams, so nothing but a bug can make them differ: the comparison is exact.
 //
 // The four-ray searches are also compared with closest_hit ray by ray, on the rays real paths
-// meet and on rays from random points in random directions, with their results built into Hits.
+// meet and on rays from random points in random directions, with their results built into Hits
+// one lane at a time (hit_in_lane) and four at a time (hits_in_lanes, both engines).
 
 #include <algorithm>
 #include <cstdint>
@@ -17,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/cpu_features.hpp"
 #include "core/rng.hpp"
 #include "geometry/hit.hpp"
 #include "render/path_tracer.hpp"
@@ -100,16 +102,32 @@ void expect_closest_hits(const Scene& scene, const std::vector<Ray>& rays) {
     RayLanes lanes;
     for (int l = 0; l < RayLanes::k_lanes; ++l) lanes.set(l, rays[first + l]);
     const Scene::ClosestLanes nearest = scene.closest_hits(lanes);
+    HitLanes portable, fast;
+    scene.hits_in_lanes_portable(nearest, lanes, portable);
+    if (cpu_has_avx2()) scene.hits_in_lanes_avx2(nearest, lanes, fast);
     for (int l = 0; l < RayLanes::k_lanes; ++l) {
       const Ray& ray = rays[first + l];
       const std::optional<Hit> expected = scene.closest_hit(ray);
       const std::optional<Hit> got = scene.hit_in_lane(nearest, l, ray);
       ASSERT_EQ(got.has_value(), expected.has_value()) << "ray " << first + l;
-      if (!expected) continue;
+      if (!expected) {
+        EXPECT_FALSE(portable.found(l)) << "ray " << first + l;
+        if (cpu_has_avx2()) EXPECT_FALSE(fast.found(l)) << "ray " << first + l;
+        continue;
+      }
       EXPECT_TRUE(same_bits(got->t, expected->t)) << "ray " << first + l;
       EXPECT_TRUE(same_bits(got->point, expected->point)) << "ray " << first + l;
       EXPECT_TRUE(same_bits(got->normal, expected->normal)) << "ray " << first + l;
       EXPECT_EQ(got->material, expected->material) << "ray " << first + l;
+      for (const HitLanes* hits : {&portable, &fast}) {
+        if (hits == &fast && !cpu_has_avx2()) continue;
+        ASSERT_TRUE(hits->found(l)) << "ray " << first + l;
+        EXPECT_EQ(hits->material[l], expected->material) << "ray " << first + l;
+        for (int axis = 0; axis < 3; ++axis) {
+          EXPECT_TRUE(same_bits(hits->point[axis][l], expected->point[axis])) << "ray " << first + l;
+          EXPECT_TRUE(same_bits(hits->normal[axis][l], expected->normal[axis])) << "ray " << first + l;
+        }
+      }
     }
   }
 }

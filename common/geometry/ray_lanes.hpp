@@ -7,6 +7,7 @@
 /// is one ray's own search, the same one the one-ray loop does.
 
 #include <cstddef>
+#include <cstdint>
 
 #include "geometry/ray.hpp"
 
@@ -46,6 +47,16 @@ struct NearestLanes {
   }
   bool found(int lane) const { return index[lane] >= 0.0; }
   std::size_t primitive(int lane) const { return static_cast<std::size_t>(index[lane]); }
+};
+
+/// Four rays' hits, coordinate by coordinate (axis 0, 1, 2: x, y, z): what Hit holds, for each
+/// lane, with material -1 in a lane whose ray hit nothing.
+struct HitLanes {
+  alignas(32) double point[3][RayLanes::k_lanes]{};
+  alignas(32) double normal[3][RayLanes::k_lanes]{};  ///< unit, facing the incoming ray
+  std::int64_t material[RayLanes::k_lanes]{};
+
+  bool found(int lane) const { return material[lane] >= 0; }
 };
 
 }  // namespace mcrt

@@ -27,7 +27,7 @@ void bounce_lanes(BounceLanes& lanes, RayLanes& rays) {
 void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays) {
   for (int l = 0; l < k_bounce_lanes; ++l) {
     if (!lanes.bouncing[l]) continue;
-    const Vec3 normal = lane_of(lanes.normal, l);
+    const Vec3 normal = lane_of(lanes.hit.normal, l);
     const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
     const Vec3 wi = Frame(normal).to_world(local);
     const double cos_theta_i = local.z;
@@ -35,7 +35,7 @@ void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays) {
     const Color beta = lane_of(lanes.beta, l) * (brdf * cos_theta_i / uniform_hemisphere_pdf());
     for (int axis = 0; axis < 3; ++axis) lanes.beta[axis][l] = beta[axis];
     Hit hit;
-    hit.point = lane_of(lanes.point, l);
+    hit.point = lane_of(lanes.hit.point, l);
     hit.normal = normal;
     rays.set(l, spawn_ray(hit, wi));
   }
@@ -121,7 +121,7 @@ using D4 = __m256d;
   const D4 lx = mul(sin_theta, cos_phi), ly = mul(sin_theta, sin_phi), lz = cos_theta;
 
   // Frame(n): sign = copysign(1, n.z), a = -1 / (sign + n.z), b = n.x n.y a.
-  const D4 nx = load(lanes.normal[0]), ny = load(lanes.normal[1]), nz = load(lanes.normal[2]);
+  const D4 nx = load(lanes.hit.normal[0]), ny = load(lanes.hit.normal[1]), nz = load(lanes.hit.normal[2]);
   const D4 sign = _mm256_or_pd(_mm256_and_pd(broadcast(-0.0), nz), one);
   const D4 a = div(broadcast(-1.0), add(sign, nz));
   const D4 b = mul(mul(nx, ny), a);
@@ -133,10 +133,9 @@ using D4 = __m256d;
   const D4 wy = add(add(mul(lx, ty), mul(ly, by)), mul(lz, ny));
   const D4 wz = add(add(mul(lx, tz), mul(ly, bz)), mul(lz, nz));
 
-  // The lanes that bounce: blendv reads only the sign bit of its mask.
-  alignas(32) double bouncing[k_bounce_lanes];
-  for (int l = 0; l < k_bounce_lanes; ++l) bouncing[l] = lanes.bouncing[l] ? -1.0 : 0.0;
-  const D4 mask = load(bouncing);
+  // The lanes that bounce: all bits set (blendv reads the sign bit).
+  const auto bit = [&](int l) { return -static_cast<long long>(lanes.bouncing[l]); };
+  const D4 mask = _mm256_castsi256_pd(_mm256_setr_epi64x(bit(0), bit(1), bit(2), bit(3)));
 
   // beta *= (rho / pi) cos(theta_i) / (1 / 2 pi), in Material::brdf()'s and the loop's order.
   for (int axis = 0; axis < 3; ++axis) {
@@ -146,7 +145,7 @@ using D4 = __m256d;
   }
 
   // spawn_ray: the origin pushed 1e-7 (1 + max |p_i|) along the normal, to the side of wi.
-  const D4 px = load(lanes.point[0]), py = load(lanes.point[1]), pz = load(lanes.point[2]);
+  const D4 px = load(lanes.hit.point[0]), py = load(lanes.hit.point[1]), pz = load(lanes.hit.point[2]);
   const D4 scale = add(one, std_max(std_max(abs(px), abs(py)), abs(pz)));
   const D4 offset = mul(broadcast(1e-7), scale);
   const D4 side = select(_mm256_cmp_pd(dot(wx, wy, wz, nx, ny, nz), zero, _CMP_GE_OQ), one,

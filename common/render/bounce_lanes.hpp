@@ -18,8 +18,7 @@ inline constexpr int k_bounce_lanes = RayLanes::k_lanes;
 
 /// Four paths at their hits, coordinate by coordinate: axis 0, 1, 2 are x, y, z.
 struct BounceLanes {
-  alignas(32) double point[3][k_bounce_lanes]{};
-  alignas(32) double normal[3][k_bounce_lanes]{};  ///< unit, facing the incoming ray
+  HitLanes hit;                                    ///< where the paths are (Scene::hits_in_lanes)
   alignas(32) double albedo[3][k_bounce_lanes]{};  ///< rho of the hit's material
   alignas(32) double u0[k_bounce_lanes]{}, u1[k_bounce_lanes]{};  ///< cos(theta) and phi / 2 pi
   alignas(32) double beta[3][k_bounce_lanes]{};    ///< the path weight, updated in place

@@ -78,32 +78,24 @@ class RowOfPaths {
     std::array<bool, k_lanes> active{};
     for (int l = 0; l < k_lanes; ++l) active[l] = start_path(l);
     while (std::any_of(active.begin(), active.end(), [](bool a) { return a; })) {
-      const Scene::ClosestLanes nearest = scene_.closest_hits(rays_);
+      scene_.hits_in_lanes(scene_.closest_hits(rays_), rays_, bounce_.hit);
       for (int l = 0; l < k_lanes; ++l) {
         bounce_.bouncing[l] = false;
-        if (!active[l]) continue;
-        ++count.rays;
+        if (!active[l] || !bounce_.hit.found(l)) continue;
+        const Material& material = scene_.materials[bounce_.hit.material[l]];
         Path& path = paths_[l];
-        const std::optional<Hit> hit = scene_.hit_in_lane(nearest, l, rays_.get(l));
-        if (hit) {
-          const Material& material = scene_.material(*hit);
-          path.radiance += beta(l) * material.emission;
-          bounce_.bouncing[l] = path.bounce != max_depth_;
-          if (bounce_.bouncing[l]) {
-            const Vec2 u = path.rng.uniform2();
-            bounce_.u0[l] = u.x;
-            bounce_.u1[l] = u.y;
-            for (int axis = 0; axis < 3; ++axis) {
-              bounce_.point[axis][l] = hit->point[axis];
-              bounce_.normal[axis][l] = hit->normal[axis];
-              bounce_.albedo[axis][l] = material.albedo[axis];
-            }
-          }
-        }
+        path.radiance += beta(l) * material.emission;
+        bounce_.bouncing[l] = path.bounce != max_depth_;
+        if (!bounce_.bouncing[l]) continue;
+        const Vec2 u = path.rng.uniform2();
+        bounce_.u0[l] = u.x;
+        bounce_.u1[l] = u.y;
+        for (int axis = 0; axis < 3; ++axis) bounce_.albedo[axis][l] = material.albedo[axis];
       }
       bounce_lanes(bounce_, rays_);
       for (int l = 0; l < k_lanes; ++l) {
         if (!active[l]) continue;
+        ++count.rays;
         // A black surface ends the path exactly: every later term would be multiplied by 0.
         if (bounce_.bouncing[l] && beta(l) != Color(0.0)) {
           ++paths_[l].bounce;

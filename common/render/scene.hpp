@@ -135,6 +135,15 @@ struct Scene {
     return std::nullopt;
   }
 
+  /// Every lane's hit_in_lane at once, into `hits`: the same points, normals and materials,
+  /// bit for bit. AVX2 where the processor has it.
+  void hits_in_lanes(const ClosestLanes& nearest, const RayLanes& rays, HitLanes& hits) const;
+  /// One lane at a time, with hit_in_lane.
+  void hits_in_lanes_portable(const ClosestLanes& nearest, const RayLanes& rays,
+                              HitLanes& hits) const;
+  /// Four lanes per instruction; only call it where the processor has AVX2.
+  void hits_in_lanes_avx2(const ClosestLanes& nearest, const RayLanes& rays, HitLanes& hits) const;
+
   /// Whether any surface blocks the ray within `range` (a shadow ray); stops at the first.
   bool any_hit(const Ray& ray, Interval range = {}) const;
 
