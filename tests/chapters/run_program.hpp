@@ -112,7 +112,9 @@ inline std::string bad_input_name(const ::testing::TestParamInfo<BadInput>& para
 /// The chapter refuses `input`: exit code 2, one line on stderr naming the flag, and no
 /// output folder created (refused before any work).
 inline void expect_refused(const std::string& program, const BadInput& input) {
-  const std::filesystem::path out = fresh_dir(program + "_refused") / "out";
+  // One folder per test process: ctest runs the bad-input cases of a chapter side by side.
+  const std::filesystem::path out =
+      fresh_dir(program + "_refused_" + std::to_string(::getpid())) / "out";
   const ProgramRun run = run_program(program, input.arguments + " --out " + out.string());
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_EQ(line_count(run.err), 1) << run.err;
