@@ -3,11 +3,13 @@
 //   bench_path_tracer
 //
 // BM_PathTracer<Scene>/threads renders cornell-spheres and cornell at 256x192, 16 spp, depth 10
-// (the settings of the speed targets) with 1 and 2 threads; its counter rays_per_second counts
-// every closest-hit query. BM_ReferencePathTracer<Scene> runs the same path loop on the plain
-// layers below it (support/plain_path_tracer.hpp: a loop of intersect_distance over every
-// primitive, phi's cosine and sine from the maths library): the baseline for the speed-up,
-// measured in the same run.
+// (the settings of the speed targets) with 1 and 2 threads, four paths at a time
+// (render_path_tracer_lanes, what chapter 05 runs); its counter rays_per_second counts every
+// closest-hit query. BM_LectureLoopPathTracer<Scene> renders the same image with the lecture's
+// loop, one path at a time (render with estimate_path_radiance). BM_ReferencePathTracer<Scene>
+// runs that loop on the plain layers below it (support/plain_path_tracer.hpp: a loop of
+// intersect_distance over every primitive, phi's cosine and sine from the maths library). All
+// three are measured in the same run, so their ratios compare.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
 // the same queries with the plain loop over intersect_distance.
