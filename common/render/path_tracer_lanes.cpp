@@ -133,8 +133,14 @@ RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
   parallel_for(static_cast<std::size_t>(height), settings.threads, [&](std::size_t row) {
     const int y = static_cast<int>(row);
     std::vector<Color> sums(width, Color(0.0));
+    // Counted here and stored once: the threads' rows lie side by side in row_rays, and a
+    // count written there on every ray would bounce its cache line between the cores.
+    RayCount rays;
+    std::uint64_t non_finite = 0;
     RowOfPaths paths(scene, camera, settings, max_depth, y);
-    paths.trace(sums, row_rays[row], row_non_finite[row]);
+    paths.trace(sums, rays, non_finite);
+    row_rays[row] = rays;
+    row_non_finite[row] = non_finite;
     for (int x = 0; x < width; ++x) result.image.at(x, y) = sums[x] / static_cast<double>(settings.spp);
     if (settings.progress) settings.progress->advance();
   });
