@@ -112,7 +112,9 @@ void expect_closest_hits(const Scene& scene, const std::vector<Ray>& rays) {
       ASSERT_EQ(got.has_value(), expected.has_value()) << "ray " << first + l;
       if (!expected) {
         EXPECT_FALSE(portable.found(l)) << "ray " << first + l;
-        if (cpu_has_avx2()) EXPECT_FALSE(fast.found(l)) << "ray " << first + l;
+        if (cpu_has_avx2()) {
+          EXPECT_FALSE(fast.found(l)) << "ray " << first + l;
+        }
         continue;
       }
       EXPECT_TRUE(same_bits(got->t, expected->t)) << "ray " << first + l;

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "core/parallel.hpp"
 #include "geometry/hit.hpp"
 #include "render/bounce_lanes.hpp"
 #include "render/path_tracer.hpp"
@@ -123,34 +121,12 @@ class RowOfPaths {
 
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
                                       const RenderSettings& settings, int max_depth) {
-  const auto start = std::chrono::steady_clock::now();
-  const int width = camera.width(), height = camera.height();
-  RenderResult result;
-  result.image = Image(width, height);
-  std::vector<RayCount> row_rays(height);
-  std::vector<std::uint64_t> row_non_finite(height, 0);
-
-  parallel_for(static_cast<std::size_t>(height), settings.threads, [&](std::size_t row) {
-    const int y = static_cast<int>(row);
-    std::vector<Color> sums(width, Color(0.0));
-    // Counted here and stored once: the threads' rows lie side by side in row_rays, and a
-    // count written there on every ray would bounce its cache line between the cores.
-    RayCount rays;
-    std::uint64_t non_finite = 0;
-    RowOfPaths paths(scene, camera, settings, max_depth, y);
-    paths.trace(sums, rays, non_finite);
-    row_rays[row] = rays;
-    row_non_finite[row] = non_finite;
-    for (int x = 0; x < width; ++x) result.image.at(x, y) = sums[x] / static_cast<double>(settings.spp);
-    if (settings.progress) settings.progress->advance();
+  return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
+                                           std::uint64_t& non_finite) {
+    std::vector<Color> sums(camera.width(), Color(0.0));
+    RowOfPaths(scene, camera, settings, max_depth, y).trace(sums, rays, non_finite);
+    for (int x = 0; x < camera.width(); ++x) row[x] = sums[x] / static_cast<double>(settings.spp);
   });
-
-  for (int y = 0; y < height; ++y) {
-    result.rays += row_rays[y].rays;
-    result.non_finite_samples += row_non_finite[y];
-  }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
 }
 
 // ASSIGNMENT a4.1 END

@@ -35,12 +35,16 @@ struct RenderResult {
   double rays_per_second() const { return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0; }
 };
 
-template <class Estimator>
-RenderResult render(const Camera& camera, const RenderSettings& settings, Estimator&& estimate) {
+/// The frame every image loop shares: the rows in parallel, row y traced by
+/// trace_row(y, row, rays, non_finite), which writes the row's `width` pixels at `row` and
+/// counts its rays and non-finite estimates (in locals of its own thread, stored once per row);
+/// the totals summed, the time taken, the progress bar advanced by a row at a time.
+template <class TraceRow>
+RenderResult render_rows(const Camera& camera, const RenderSettings& settings, TraceRow&& trace_row) {
   const auto start = std::chrono::steady_clock::now();
-  const int width = camera.width(), height = camera.height();
+  const int height = camera.height();
   RenderResult result;
-  result.image = Image(width, height);
+  result.image = Image(camera.width(), height);
   std::vector<RayCount> row_rays(height);
   std::vector<std::uint64_t> row_non_finite(height, 0);
 
@@ -48,18 +52,7 @@ RenderResult render(const Camera& camera, const RenderSettings& settings, Estima
     const int y = static_cast<int>(row);
     RayCount rays;
     std::uint64_t non_finite = 0;
-    for (int x = 0; x < width; ++x) {
-      const std::uint64_t pixel = static_cast<std::uint64_t>(y) * width + x;
-      Color sum(0.0);
-      for (int s = 0; s < settings.spp; ++s) {
-        Rng rng(settings.seed, stream_index(pixel, settings.first_sample + s));
-        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-        const Color radiance = estimate(ray, rng, rays);
-        if (!is_finite(radiance)) ++non_finite;
-        sum += radiance;
-      }
-      result.image.at(x, y) = sum / static_cast<double>(settings.spp);
-    }
+    trace_row(y, &result.image.at(0, y), rays, non_finite);
     row_rays[row] = rays;
     row_non_finite[row] = non_finite;
     if (settings.progress) settings.progress->advance();
@@ -71,6 +64,25 @@ RenderResult render(const Camera& camera, const RenderSettings& settings, Estima
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+template <class Estimator>
+RenderResult render(const Camera& camera, const RenderSettings& settings, Estimator&& estimate) {
+  return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
+                                           std::uint64_t& non_finite) {
+    for (int x = 0; x < camera.width(); ++x) {
+      const std::uint64_t pixel = static_cast<std::uint64_t>(y) * camera.width() + x;
+      Color sum(0.0);
+      for (int s = 0; s < settings.spp; ++s) {
+        Rng rng(settings.seed, stream_index(pixel, settings.first_sample + s));
+        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+        const Color radiance = estimate(ray, rng, rays);
+        if (!is_finite(radiance)) ++non_finite;
+        sum += radiance;
+      }
+      row[x] = sum / static_cast<double>(settings.spp);
+    }
+  });
 }
 
 }  // namespace mcrt
