@@ -10,11 +10,16 @@
 //    intersect_distance, for every count of spheres from 0 to 64; QuadSet the same way.
 //  - SphereSet::nearest_lanes and QuadSet::nearest_lanes, four rays at once, in both engines,
 //    against the plain loop for each ray, for every count from 0 to 64.
+//  - QuadSet with groups of quads behind boxes (add_group), which the AVX2 searches skip for
+//    rays that miss the box: every search against the plain loop over all the quads, with
+//    rays aimed at the boxes' corners and edges, where a box without its pad would be missed.
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/rng.hpp"
@@ -327,6 +332,110 @@ TEST(QuadSetDifferentialTest, FourRaysAtOnceForEveryCountFrom0To64) {
     expect_lanes_agree(quads, set, rng, 40, "quads", hits);
   }
   EXPECT_GT(hits, 700);  // a floor, as above: the fixed seed gives far more
+}
+
+// ---------------------------------------------------------------------------------------------
+// Groups of quads behind boxes.
+
+// The six faces of the box [0, size] turned by `angle` about +y and moved to `offset` (as the
+// cornell scene builds its blocks).
+std::vector<Quad> box_faces(Vec3 size, double angle, Vec3 offset) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  auto turn = [&](Vec3 v) { return Vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z); };
+  const Vec3 dx = turn({size.x, 0, 0}), dy{0, size.y, 0}, dz = turn({0, 0, size.z});
+  const Vec3 far = offset + turn(size);
+  return {{offset, dx, dy}, {offset, dz, dy}, {offset, dx, dz},
+          {far, -dx, -dy},  {far, -dz, -dy},  {far, -dx, -dz}};
+}
+
+// A point of quad q: a corner, an edge's midpoint or its centre (a, b in {0, 1/2, 1}), where a
+// ray aimed at it grazes the quad's edge, and for an axis-aligned box its bounds, or a random
+// point of the quad.
+Vec3 target_on(const Quad& q, Rng& rng) {
+  const bool random = rng.uniform_below(4) == 0;
+  const double a = random ? rng.uniform() : 0.5 * rng.uniform_below(3);
+  const double b = random ? rng.uniform() : 0.5 * rng.uniform_below(3);
+  return q.corner() + a * q.edge_u() + b * q.edge_v();
+}
+
+// Sets of loose quads and boxes (half of them axis-aligned), in a random order; rays from
+// random points, from points on the faces (as a bounce leaves a box) and along the axes, aimed
+// at points of the quads. Every search must give the plain loop's answer over all the quads.
+TEST(QuadSetDifferentialTest, GroupsBehindBoxesGiveThePlainLoopsAnswer) {
+  const bool avx2 = QuadSet::has_avx2();
+  int hits = 0, group_hits = 0;
+  for (std::uint64_t trial = 0; trial < 40; ++trial) {
+    Rng rng(11, trial);
+    std::vector<Quad> quads;
+    std::vector<bool> grouped;
+    QuadSet set;
+    const int parts = 1 + static_cast<int>(rng.uniform_below(5));
+    for (int part = 0; part < parts; ++part) {
+      if (rng.uniform_below(3) == 0) {
+        quads.push_back(random_quad(rng, quads));
+        grouped.push_back(false);
+        set.add(quads.back());
+        continue;
+      }
+      const double angle = rng.uniform_below(2) == 0 ? 0.0 : 6.3 * rng.uniform();
+      const Vec3 size(0.5 + 6.0 * rng.uniform(), 0.5 + 6.0 * rng.uniform(), 0.5 + 6.0 * rng.uniform());
+      const std::vector<Quad> faces = box_faces(size, angle, random_point(rng, 12.0));
+      quads.insert(quads.end(), faces.begin(), faces.end());
+      grouped.insert(grouped.end(), faces.size(), true);
+      set.add_group(faces);
+    }
+    ASSERT_EQ(set.size(), quads.size());
+    for (int g = 0; g < 60; ++g) {
+      RayLanes rays;
+      Ray ray[RayLanes::k_lanes];
+      for (int l = 0; l < RayLanes::k_lanes; ++l) {
+        const Quad& aim = quads[rng.uniform_below(static_cast<std::uint32_t>(quads.size()))];
+        const Quad& from = quads[rng.uniform_below(static_cast<std::uint32_t>(quads.size()))];
+        const int kind = (g + l) % 4;
+        Vec3 origin = kind == 0 ? target_on(from, rng) : random_point(rng, 20.0);
+        Vec3 direction = glm::normalize(target_on(aim, rng) - origin);
+        if (kind == 3) {  // along an axis, from a point of a quad's plane
+          origin = target_on(from, rng);
+          direction = Vec3(0.0);
+          direction[l % 3] = rng.uniform() < 0.5 ? -1.0 : 1.0;
+        }
+        if (!(glm::length(direction) > 0.5)) direction = Vec3(0, 0, 1);  // origin on the target
+        ray[l] = Ray{origin, direction};
+        rays.set(l, ray[l]);
+      }
+      NearestLanes chosen(Interval{}.max), fast(Interval{}.max);
+      set.nearest_lanes(rays, Interval{}.min, chosen);
+      if (avx2) set.nearest_lanes_avx2(rays, Interval{}.min, fast);
+      for (int l = 0; l < RayLanes::k_lanes; ++l) {
+        const QuadSet::Nearest plain = plain_nearest(quads, ray[l], Interval{});
+        const std::string where =
+            "trial " + std::to_string(trial) + ", group " + std::to_string(g) + " lane " + std::to_string(l);
+        const QuadSet::Nearest portable = set.nearest_portable(ray[l], Interval{});
+        EXPECT_EQ(portable.index, plain.index) << where;
+        EXPECT_EQ(portable.t, plain.t) << where;
+        const QuadSet::Nearest one = set.nearest(ray[l], Interval{});
+        EXPECT_EQ(one.index, plain.index) << where;
+        EXPECT_EQ(one.t, plain.t) << where;
+        const bool hit = plain.index != quads.size();
+        const double index = hit ? static_cast<double>(plain.index) : -1.0;
+        EXPECT_EQ(chosen.index[l], index) << where;
+        EXPECT_EQ(chosen.t[l], plain.t) << where;
+        if (avx2) {
+          const QuadSet::Nearest fast_one = set.nearest_avx2(ray[l], Interval{});
+          EXPECT_EQ(fast_one.index, plain.index) << where;
+          EXPECT_EQ(fast_one.t, plain.t) << where;
+          EXPECT_EQ(fast.index[l], index) << where;
+          EXPECT_EQ(fast.t[l], plain.t) << where;
+        }
+        hits += hit;
+        group_hits += hit && grouped[plain.index];
+      }
+    }
+  }
+  // Floors that keep the comparison from being vacuous: most rays are aimed at a quad, and
+  // most of the quads are in groups.
+  EXPECT_GT(hits, 5000);
+  EXPECT_GT(group_hits, 3000);
 }
 
 }  // namespace

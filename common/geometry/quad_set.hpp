@@ -3,6 +3,7 @@
 /// does for spheres.
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "geometry/quad.hpp"
@@ -10,11 +11,13 @@
 
 namespace mcrt {
 
-/// Plane normals, corners and edge axes in separate arrays, padded to whole blocks of k_block
-/// quads that never hit (a parallel-ray threshold of +infinity), so the search runs k_block
-/// quads at a time with no remainder loop. Each quad's t, a and b are computed with the same
-/// operations, in the same order, as intersect_distance (quad.hpp), so the answer is the
-/// same bit for bit.
+/// Plane normals, corners and edge axes in separate arrays, in runs of whole blocks of k_block
+/// slots, padded with quads that never hit (a parallel-ray threshold of +infinity), so the
+/// search runs k_block quads at a time with no remainder loop. A run is either quads added one
+/// by one, or a group (add_group) behind its bounding box, which a ray that misses the box
+/// skips. Each quad's t, a and b are computed with the same operations, in the same order, as
+/// intersect_distance (quad.hpp), and the quads a ray is tested against are tested in index
+/// order, so the answer is the same bit for bit.
 class QuadSet {
  public:
   static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
@@ -26,7 +29,12 @@ class QuadSet {
     double t;
   };
 
+  /// A quad every ray is tested against.
   void add(const Quad& q);
+  /// Quads that enclose a small part of the scene, such as the six faces of a box, with the
+  /// next indices: the AVX2 searches test them only for rays that meet their common bounds
+  /// (padded, so no hit on them is ever skipped). The portable searches test every quad.
+  void add_group(std::span<const Quad> quads);
   std::size_t size() const { return size_; }
 
   /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere; no call at all
@@ -57,14 +65,28 @@ class QuadSet {
 
  private:
   static const bool k_has_avx2;
+
+  /// Slots [begin, end) (whole blocks) holding quads first, first + 1, ..., first + count - 1,
+  /// then padding: quads added one by one, or a group behind its box.
+  struct Run {
+    std::size_t begin, end, first, count;
+    bool bounded;
+    double low[3], high[3];  ///< the group's box, padded: every point of its quads is inside
+  };
+  void add_block();
+  void put(std::size_t slot, const Quad& q);
+
+  std::vector<Run> runs_;
   std::size_t size_ = 0;
-  // n = cross(u, v) (not normalised), the corner c, the axes giving the edge coordinates
-  // a = p.axis_a and b = p.axis_b, and the parallel-ray threshold 1e-12 |n|.
+  // Per slot: n = cross(u, v) (not normalised), the corner c, the axes giving the edge
+  // coordinates a = p.axis_a and b = p.axis_b, the parallel-ray threshold 1e-12 |n|, and the
+  // quad's index (as a double, exact below 2^53; -1 in padding).
   std::vector<double> normal_x_, normal_y_, normal_z_;
   std::vector<double> corner_x_, corner_y_, corner_z_;
   std::vector<double> axis_a_x_, axis_a_y_, axis_a_z_;
   std::vector<double> axis_b_x_, axis_b_y_, axis_b_z_;
   std::vector<double> parallel_threshold_;
+  std::vector<double> index_;
 };
 
 }  // namespace mcrt

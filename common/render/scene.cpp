@@ -33,12 +33,21 @@ void Scene::add_sphere_light(const Sphere& s, const Vec3& cap_axis, double cap_h
 void Scene::add_quad(const Quad& q) { add_quad(q, q.material()); }
 
 void Scene::add_quad(const Quad& q, std::uint32_t back_material) {
+  add_to_quad_list(q, back_material);
+  quad_set_.add(q);
+}
+
+void Scene::add_quad_group(std::span<const Quad> quads) {
+  for (const Quad& q : quads) add_to_quad_list(q, q.material());
+  quad_set_.add_group(quads);
+}
+
+void Scene::add_to_quad_list(const Quad& q, std::uint32_t back_material) {
   if (materials[q.material()].is_emitter()) {
     const bool one_sided = !materials[back_material].is_emitter();
     emitters_.push_back({Emitter::quad, quads_.size(), q.normal(), 0.0, one_sided});
   }
   quads_.push_back(q);
-  quad_set_.add(q);
   quad_back_materials_.push_back(back_material);
 }
 
@@ -150,7 +159,7 @@ Scene make_scene(std::string_view name, const SceneParams& params) {
 namespace {
 
 // An axis-aligned box [0,size] turned by `angle` radians about +y and moved to `offset`:
-// six quads.
+// six quads, in one group (rays that miss the box skip all six).
 void add_box(Scene& scene, Vec3 size, double angle, Vec3 offset, std::uint32_t material) {
   const double c = std::cos(angle), s = std::sin(angle);
   auto place = [&](Vec3 p) { return Vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + offset; };
@@ -158,12 +167,15 @@ void add_box(Scene& scene, Vec3 size, double angle, Vec3 offset, std::uint32_t m
   const Vec3 dx = turn({size.x, 0, 0}), dy{0, size.y, 0}, dz = turn({0, 0, size.z});
   const Vec3 o = place({0, 0, 0});
   const Vec3 far = place(size);
-  scene.add_quad({o, dx, dy, material});         // front
-  scene.add_quad({o, dz, dy, material});         // left
-  scene.add_quad({o, dx, dz, material});         // bottom
-  scene.add_quad({far, -dx, -dy, material});     // back
-  scene.add_quad({far, -dz, -dy, material});     // right
-  scene.add_quad({far, -dx, -dz, material});     // top
+  const Quad faces[] = {
+      {o, dx, dy, material},       // front
+      {o, dz, dy, material},       // left
+      {o, dx, dz, material},       // bottom
+      {far, -dx, -dy, material},   // back
+      {far, -dz, -dy, material},   // right
+      {far, -dx, -dz, material},   // top
+  };
+  scene.add_quad_group(faces);
 }
 
 }  // namespace

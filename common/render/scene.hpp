@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,6 +69,9 @@ struct Scene {
   void add_quad(const Quad& q);
   /// A quad whose side against its normal has `back_material` (for a one-sided lamp: black).
   void add_quad(const Quad& q, std::uint32_t back_material);
+  /// Quads that enclose a small part of the scene (the faces of a box): added as add_quad adds
+  /// each, and the four-ray search skips them for rays that miss their common bounds.
+  void add_quad_group(std::span<const Quad> quads);
 
   const std::vector<Sphere>& spheres() const { return spheres_; }
   const std::vector<Quad>& quads() const { return quads_; }
@@ -148,6 +152,8 @@ struct Scene {
   bool any_hit(const Ray& ray, Interval range = {}) const;
 
  private:
+  void add_to_quad_list(const Quad& q, std::uint32_t back_material);
+
   std::vector<Sphere> spheres_;
   std::vector<Quad> quads_;
   std::vector<std::uint32_t> quad_back_materials_;
