@@ -12,15 +12,14 @@ namespace mcrt {
 const bool QuadSet::k_has_avx2 = cpu_has_avx2();
 
 void QuadSet::add(const Quad& q) {
-  const bool room = !runs_.empty() && !runs_.back().bounded &&
-                    runs_.back().count < runs_.back().end - runs_.back().begin;
-  if (!room) {
-    const bool extend = !runs_.empty() && !runs_.back().bounded;
-    if (!extend) runs_.push_back({index_.size(), index_.size(), size_, 0, false, {}, {}});
-    add_block();
-    runs_.back().end = index_.size();
-  }
+  // Quads added one by one share a run, which grows a block at a time.
+  if (runs_.empty() || runs_.back().bounded)
+    runs_.push_back({index_.size(), index_.size(), size_, 0, false, {}, {}});
   Run& run = runs_.back();
+  if (run.begin + run.count == run.end) {
+    add_block();
+    run.end = index_.size();
+  }
   put(run.begin + run.count++, q);
 }
 
@@ -38,9 +37,10 @@ void QuadSet::add_group(std::span<const Quad> quads) {
       high = glm::max(high, p);
     }
   }
-  // The pad, a millionth of the scene's scale, is far above the rounding of a hit point
-  // (about 1e-16 of it), so a ray that hits a quad of the group meets the padded box
-  // around that point with room to spare, whatever the rounding of either test.
+  // The pad, a millionth of the group's largest coordinate (at least 1), is far above the
+  // rounding of a hit point's coordinates (about 1e-16 of them), so a ray that hits a quad of
+  // the group meets the padded box around that point with room to spare, whatever the rounding
+  // of either test.
   double scale = 1.0;
   for (int axis = 0; axis < 3; ++axis)
     scale = std::max({scale, std::abs(low[axis]), std::abs(high[axis])});
