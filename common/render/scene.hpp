@@ -70,7 +70,7 @@ struct Scene {
   /// A quad whose side against its normal has `back_material` (for a one-sided lamp: black).
   void add_quad(const Quad& q, std::uint32_t back_material);
   /// Quads that enclose a small part of the scene (the faces of a box): added as add_quad adds
-  /// each, and the four-ray search skips them for rays that miss their common bounds.
+  /// each, and the AVX2 searches skip them for rays that miss their common bounds.
   void add_quad_group(std::span<const Quad> quads);
 
   const std::vector<Sphere>& spheres() const { return spheres_; }
