@@ -29,8 +29,12 @@ class Rng {
   /// correlated (seeds s and s + 1 agree in their fourth draws); so the starting state is
   /// scrambled by mix64. The stream still selects PCG's increment, so distinct streams are
   /// distinct sequences.
-  Rng(std::uint64_t seed, std::uint64_t stream)
-      : engine_(mix64(seed ^ mix64(stream + 0x9e3779b97f4a7c15ULL)), stream) {}
+  Rng(std::uint64_t seed, std::uint64_t stream) : engine_(starting_state(seed, stream), stream) {}
+
+  /// The seed PCG32 is given for (seed, stream): the scrambled one.
+  static constexpr std::uint64_t starting_state(std::uint64_t seed, std::uint64_t stream) {
+    return mix64(seed ^ mix64(stream + 0x9e3779b97f4a7c15ULL));
+  }
 
   /// 32 uniformly random bits.
   std::uint32_t next_bits() { return engine_(); }

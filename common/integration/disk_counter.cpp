@@ -10,6 +10,7 @@
 
 #include "core/cpu_features.hpp"
 #include "core/parallel.hpp"
+#include "core/pcg32_avx2.hpp"
 #include "core/pcg32_lanes.hpp"
 #include "integration/disk_area.hpp"
 
@@ -33,38 +34,13 @@ std::uint64_t count_rounds_portable(DiskLanes& lanes, std::uint64_t rounds) {
 
 #if defined(__x86_64__)
 
-// The same count, four lanes per AVX2 register. AVX2 has no 64-bit multiply, so
-// s * a mod 2^64 = lo(s) lo(a) + ((hi(s) lo(a) + lo(s) hi(a)) << 32), from 32x32->64 products.
-// A lane's x comes from its state s0 and y from s1 = a s0 + c; the next point starts at
-// s2 = a^2 s0 + c (a + 1), computed from s0 directly so the two products overlap.
-struct Avx2Multiplier {
-  __m256i low, high;
-};
-
-[[gnu::target("avx2")]] inline Avx2Multiplier avx2_multiplier(std::uint64_t a) {
-  return {_mm256_set1_epi64x(static_cast<std::int64_t>(a & 0xffffffffu)),
-          _mm256_set1_epi64x(static_cast<std::int64_t>(a >> 32))};
-}
-
-// s a + c (mod 2^64) with the high half of s already shifted down.
-[[gnu::target("avx2")]] inline __m256i avx2_lcg(__m256i s, __m256i s_high, Avx2Multiplier a,
-                                                __m256i c) {
-  const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(s_high, a.low), _mm256_mul_epu32(s, a.high));
-  return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epu32(s, a.low), _mm256_slli_epi64(cross, 32)), c);
-}
-
-// PCG32's output in the low 32 bits of each 64-bit lane: the xorshifted word is copied into
-// both halves, so a 64-bit right shift by the rotation is a 32-bit rotation of the low half.
-[[gnu::target("avx2")]] inline __m256i avx2_output(__m256i s) {
-  const __m256i xorshifted = _mm256_srli_epi64(_mm256_xor_si256(_mm256_srli_epi64(s, 18), s), 27);
-  const __m256i doubled = _mm256_shuffle_epi32(xorshifted, 0xA0);  // dwords (0,0,2,2,...)
-  return _mm256_srlv_epi64(doubled, _mm256_srli_epi64(s, 59));
-}
-
+// The same count, four lanes per AVX2 register. A lane's x comes from its state s0 and y from
+// s1 = a s0 + c; the next point starts at s2 = a^2 s0 + c (a + 1), computed from s0 directly
+// so the two products overlap.
 [[gnu::target("avx2")]] std::uint64_t count_rounds_avx2(DiskLanes& lanes, std::uint64_t rounds) {
   constexpr int k_vectors = DiskLanes::k_lanes / 4;
-  const Avx2Multiplier a = avx2_multiplier(k_pcg32_multiplier);
-  const Avx2Multiplier a2 = avx2_multiplier(k_pcg32_multiplier * k_pcg32_multiplier);
+  const avx2::Pcg32Multiplier a = avx2::pcg32_multiplier(k_pcg32_multiplier);
+  const avx2::Pcg32Multiplier a2 = avx2::pcg32_multiplier(k_pcg32_multiplier * k_pcg32_multiplier);
   // i^2 + j^2 <= 2^62  <=>  i^2 + j^2 - (2^62 + 1) < 0: its sign bit, as the sum is <= 2^63.
   const __m256i bound = _mm256_set1_epi64x((std::int64_t{1} << 62) + 1);
   __m256i state[k_vectors], c[k_vectors], c2[k_vectors], inside[k_vectors];
@@ -80,9 +56,9 @@ struct Avx2Multiplier {
   for (std::uint64_t r = 0; r < rounds; ++r)
     for (int v = 0; v < k_vectors; ++v) {
       const __m256i s0 = state[v], s0_high = _mm256_srli_epi64(s0, 32);
-      const __m256i s1 = avx2_lcg(s0, s0_high, a, c[v]);
-      state[v] = avx2_lcg(s0, s0_high, a2, c2[v]);
-      const __m256i x = avx2_output(s0), y = avx2_output(s1);
+      const __m256i s1 = avx2::pcg32_lcg(s0, s0_high, a, c[v]);
+      state[v] = avx2::pcg32_lcg(s0, s0_high, a2, c2[v]);
+      const __m256i x = avx2::pcg32_output(s0), y = avx2::pcg32_output(s1);
       // _mm256_mul_epi32 squares the low 32 bits of each lane as a signed integer.
       const __m256i r2 = _mm256_add_epi64(_mm256_mul_epi32(x, x), _mm256_mul_epi32(y, y));
       inside[v] = _mm256_add_epi64(inside[v], _mm256_srli_epi64(_mm256_sub_epi64(r2, bound), 63));
