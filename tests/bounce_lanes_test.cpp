@@ -55,7 +55,7 @@ TEST(BounceLanesTest, AvxLanesGiveTheOnePathCodesBits) {
       }
       lanes.u0[l] = (trial + l) % 11 == 0 ? 0.0 : rng.uniform();
       lanes.u1[l] = u1_for(trial + l, rng);
-      lanes.bouncing[l] = ((trial >> l) & 1) != 0;  // every mask of the four lanes
+      lanes.bouncing[l] = -static_cast<std::int64_t>((trial >> l) & 1);  // every mask of the four lanes
       rays.set(l, Ray(Vec3(rng.uniform()), Vec3(0, 1, 0)));
     }
     BounceLanes fast_lanes = lanes, plain_lanes = lanes;
@@ -90,13 +90,13 @@ TEST(BounceLanesTest, BouncingLanesMoveAndTheOthersStay) {
     }
     lanes.u0[l] = 0.25 * (l + 1);  // cos(theta)
     lanes.u1[l] = 0.1 * l;
-    lanes.bouncing[l] = l % 2 == 0;
+    lanes.bouncing[l] = l % 2 == 0 ? -1 : 0;
     rays.set(l, old);
   }
   bounce_lanes(lanes, rays);
   for (int l = 0; l < k_bounce_lanes; ++l) {
     const Ray ray = rays.get(l);
-    if (!lanes.bouncing[l]) {
+    if (lanes.bouncing[l] == 0) {
       EXPECT_EQ(ray.origin, old.origin);
       EXPECT_EQ(ray.direction, old.direction);
       EXPECT_EQ(lanes.beta[0][l], 1.0);

@@ -26,7 +26,7 @@ void bounce_lanes(BounceLanes& lanes, RayLanes& rays) {
 // The lines of estimate_path_radiance after the emission, lane by lane.
 void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays) {
   for (int l = 0; l < k_bounce_lanes; ++l) {
-    if (!lanes.bouncing[l]) continue;
+    if (lanes.bouncing[l] == 0) continue;
     const Vec3 normal = lane_of(lanes.hit.normal, l);
     const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
     const Vec3 wi = Frame(normal).to_world(local);
@@ -134,8 +134,7 @@ using D4 = __m256d;
   const D4 wz = add(add(mul(lx, tz), mul(ly, bz)), mul(lz, nz));
 
   // The lanes that bounce: all bits set (blendv reads the sign bit).
-  const auto bit = [&](int l) { return -static_cast<long long>(lanes.bouncing[l]); };
-  const D4 mask = _mm256_castsi256_pd(_mm256_setr_epi64x(bit(0), bit(1), bit(2), bit(3)));
+  const D4 mask = _mm256_castsi256_pd(_mm256_load_si256(reinterpret_cast<const __m256i*>(lanes.bouncing)));
 
   // beta *= (rho / pi) cos(theta_i) / (1 / 2 pi), in Material::brdf()'s and the loop's order.
   for (int axis = 0; axis < 3; ++axis) {

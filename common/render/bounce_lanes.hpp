@@ -8,7 +8,7 @@
 /// the weight update), without FMA, so every lane is the same bit for bit as the one-path code,
 /// which bounce_lanes_portable runs lane by lane (tests/path_tracer_lanes_test.cpp).
 
-#include <array>
+#include <cstdint>
 
 #include "geometry/ray_lanes.hpp"
 
@@ -21,8 +21,8 @@ struct BounceLanes {
   HitLanes hit;                                    ///< where the paths are (Scene::hits_in_lanes)
   alignas(32) double albedo[3][k_bounce_lanes]{};  ///< rho of the hit's material
   alignas(32) double u0[k_bounce_lanes]{}, u1[k_bounce_lanes]{};  ///< cos(theta) and phi / 2 pi
-  alignas(32) double beta[3][k_bounce_lanes]{};    ///< the path weight, updated in place
-  std::array<bool, k_bounce_lanes> bouncing{};      ///< lanes whose path goes on
+  alignas(32) double beta[3][k_bounce_lanes]{{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};  ///< the path weight (beta_0 = 1), updated in place
+  alignas(32) std::int64_t bouncing[k_bounce_lanes]{};  ///< all bits set where the path goes on
 };
 
 /// For every bouncing lane, beta *= f_r cos(theta_i) / pdf and `rays` gets the new ray; the

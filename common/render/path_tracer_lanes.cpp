@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "geometry/hit.hpp"
 #include "render/bounce_lanes.hpp"
+#include "render/path_lanes.hpp"
 #include "render/path_tracer.hpp"
 
 namespace mcrt {
@@ -33,75 +34,80 @@ class RowOfPaths {
   // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
   void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {
     const std::uint64_t tasks = static_cast<std::uint64_t>(camera_.width()) * settings_.spp;
+    std::size_t x = 0;  // the pixel and sample of the task whose radiance is added next
+    int sample = 0;
     for (std::uint64_t first = 0; first < tasks; first += k_chunk) {
       chunk_first_ = first;
-      chunk_end_ = std::min(tasks, first + k_chunk);
-      next_task_ = first;
+      chunk_end_ = std::min(tasks, first + k_chunk);  // the last chunk took up to `first`
       trace_chunk(count);
       for (std::uint64_t task = first; task < chunk_end_; ++task) {
         const Color& radiance = radiance_[task - first];
         if (!is_finite(radiance)) ++non_finite;
-        pixel_sums[task / settings_.spp] += radiance;
+        pixel_sums[x] += radiance;
+        if (++sample == settings_.spp) {
+          sample = 0;
+          ++x;
+        }
       }
     }
   }
 
  private:
-  struct Path {
-    Rng rng{0, 0};
-    Color radiance{0.0};
-    int bounce = 0;
-    std::uint64_t task = 0;
+  // Four paths in flight, one per lane.
+  struct PathGroup {
+    RayLanes rays;
+    BounceLanes bounce;
+    PathLanes paths;
+    std::array<std::uint64_t, k_lanes> task{};  // each lane's path: x spp + s
   };
 
-  // Lane l starts the chunk's next path, if any is left: its camera ray, as render() makes it.
-  bool start_path(int l) {
-    if (next_task_ == chunk_end_) return false;
-    const std::uint64_t task = next_task_++;
-    const auto x = static_cast<int>(task / settings_.spp);
-    const std::uint64_t sample = settings_.first_sample + task % settings_.spp;
-    const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + x;
-    Path& path = paths_[l];
-    path = Path{Rng(settings_.seed, stream_index(pixel, sample)), Color(0.0), 0, task};
-    rays_.set(l, camera_.generate_ray(x, y_, path.rng.uniform2()));
-    for (int axis = 0; axis < 3; ++axis) bounce_.beta[axis][l] = 1.0;  // beta_0 = 1
+  // Each group's bounce is one chain of dependent steps (the search, the hits, the shading,
+  // the bounce, then the next search), so two groups take turns: the processor works on one
+  // group's search while the other's bounce waits on its latencies.
+  static constexpr int k_groups = 2;
+
+  // Lane l of group g (ready for a new path: render/path_lanes.hpp) starts the chunk's next
+  // path, if any is left: its generator and its camera ray, as render() makes them. Tasks are
+  // taken in order, so (x, sample) just counts on from chunk to chunk.
+  void start_path(PathGroup& g, int l) {
+    if (next_task_ == chunk_end_) {
+      g.paths.stop(l);
+      return;
+    }
+    g.task[l] = next_task_++;
+    const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + next_x_;
+    g.paths.start(l, settings_.seed, stream_index(pixel, settings_.first_sample + next_sample_));
+    g.rays.set(l, camera_.generate_ray(next_x_, y_, g.paths.uniform2(l)));
+    if (++next_sample_ == settings_.spp) {
+      next_sample_ = 0;
+      ++next_x_;
+    }
+  }
+
+  // One pass of estimate_path_radiance's loop for the group's four paths (render/path_lanes.hpp);
+  // a lane whose path ends hands its radiance in and takes the chunk's next path. False when
+  // the group has no path left.
+  bool step(PathGroup& g, RayCount& count) {
+    const unsigned live = g.paths.live_lanes();
+    if (live == 0) return false;
+    scene_.hits_in_lanes(scene_.closest_hits(g.rays), g.rays, g.bounce.hit);
+    shade_lanes(scene_.materials, max_depth_, g.paths, g.bounce);
+    bounce_lanes(g.bounce, g.rays);
+    count.rays += static_cast<std::uint64_t>(std::popcount(live));
+    for (unsigned ended = end_lanes(g.paths, g.bounce); ended != 0; ended &= ended - 1) {
+      const int l = std::countr_zero(ended);
+      radiance_[g.task[l] - chunk_first_] = g.paths.finished_of(l);
+      start_path(g, l);
+    }
     return true;
   }
 
-  Color beta(int l) const { return {bounce_.beta[0][l], bounce_.beta[1][l], bounce_.beta[2][l]}; }
-
-  // estimate_path_radiance's loop, four paths at a time: the search for four rays, then each
-  // lane's emission and stopping rules, then the bounce of the lanes that go on.
   void trace_chunk(RayCount& count) {
-    std::array<bool, k_lanes> active{};
-    for (int l = 0; l < k_lanes; ++l) active[l] = start_path(l);
-    while (std::any_of(active.begin(), active.end(), [](bool a) { return a; })) {
-      scene_.hits_in_lanes(scene_.closest_hits(rays_), rays_, bounce_.hit);
-      for (int l = 0; l < k_lanes; ++l) {
-        bounce_.bouncing[l] = false;
-        if (!active[l] || !bounce_.hit.found(l)) continue;
-        const Material& material = scene_.materials[bounce_.hit.material[l]];
-        Path& path = paths_[l];
-        path.radiance += beta(l) * material.emission;
-        bounce_.bouncing[l] = path.bounce != max_depth_;
-        if (!bounce_.bouncing[l]) continue;
-        const Vec2 u = path.rng.uniform2();
-        bounce_.u0[l] = u.x;
-        bounce_.u1[l] = u.y;
-        for (int axis = 0; axis < 3; ++axis) bounce_.albedo[axis][l] = material.albedo[axis];
-      }
-      bounce_lanes(bounce_, rays_);
-      for (int l = 0; l < k_lanes; ++l) {
-        if (!active[l]) continue;
-        ++count.rays;
-        // A black surface ends the path exactly: every later term would be multiplied by 0.
-        if (bounce_.bouncing[l] && beta(l) != Color(0.0)) {
-          ++paths_[l].bounce;
-          continue;
-        }
-        radiance_[paths_[l].task - chunk_first_] = paths_[l].radiance;
-        active[l] = start_path(l);
-      }
+    for (PathGroup& g : groups_)
+      for (int l = 0; l < k_lanes; ++l) start_path(g, l);
+    for (bool any = true; any;) {
+      any = false;
+      for (PathGroup& g : groups_) any = step(g, count) || any;
     }
   }
 
@@ -111,9 +117,9 @@ class RowOfPaths {
   const int max_depth_;
   const int y_;
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
-  RayLanes rays_;
-  BounceLanes bounce_;
-  std::array<Path, k_lanes> paths_;
+  int next_x_ = 0;  // the pixel and sample of next_task_
+  int next_sample_ = 0;
+  std::array<PathGroup, k_groups> groups_;
   std::array<Color, k_chunk> radiance_;
 };
 
