@@ -44,6 +44,13 @@ class Camera {
   int width() const { return width_; }
   int height() const { return height_; }
 
+  /// What generate_ray computes from, for the engines that make four rays at once.
+  struct Frame {
+    Vec3 eye, forward, right, up;
+    double near;
+  };
+  Frame frame() const { return {eye_, forward_, right_, up_, near_}; }
+
  private:
   Vec3 eye_, forward_, right_, up_;
   double near_;

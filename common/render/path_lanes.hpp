@@ -37,6 +37,13 @@ struct PathLanes {
     if (live[l] == 0) live[l] = -1;  // written only when it changes (the next read is a vector)
     rng.seed_lane(l, Rng::starting_state(seed, stream), stream);
   }
+  /// Lane l, ready for a new path, starts one whose generator is PCG32 at (state, increment):
+  /// a start of render/path_starts.hpp, its camera ray's two draws made.
+  void start_at(int l, std::uint64_t state, std::uint64_t increment) {
+    if (live[l] == 0) live[l] = -1;
+    rng.state[l] = state;
+    rng.increment[l] = increment;
+  }
   /// Lane l holds no path.
   void stop(int l) { live[l] = 0; }
   /// Rng::uniform2() of lane l's generator: two draws of 32 bits, each times 2^-32.

@@ -9,6 +9,7 @@
 #include "geometry/hit.hpp"
 #include "render/bounce_lanes.hpp"
 #include "render/path_lanes.hpp"
+#include "render/path_starts.hpp"
 #include "render/path_tracer.hpp"
 
 namespace mcrt {
@@ -29,16 +30,16 @@ class RowOfPaths {
 
   RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
              int max_depth, int y)
-      : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y) {}
+      : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y),
+        tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {}
 
   // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
   void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {
-    const std::uint64_t tasks = static_cast<std::uint64_t>(camera_.width()) * settings_.spp;
     std::size_t x = 0;  // the pixel and sample of the task whose radiance is added next
     int sample = 0;
-    for (std::uint64_t first = 0; first < tasks; first += k_chunk) {
+    for (std::uint64_t first = 0; first < tasks_; first += k_chunk) {
       chunk_first_ = first;
-      chunk_end_ = std::min(tasks, first + k_chunk);  // the last chunk took up to `first`
+      chunk_end_ = std::min(tasks_, first + k_chunk);  // the last chunk took up to `first`
       trace_chunk(count);
       for (std::uint64_t task = first; task < chunk_end_; ++task) {
         const Color& radiance = radiance_[task - first];
@@ -68,20 +69,21 @@ class RowOfPaths {
 
   // Lane l of group g (ready for a new path: render/path_lanes.hpp) starts the chunk's next
   // path, if any is left: its generator and its camera ray, as render() makes them. Tasks are
-  // taken in order, so (x, sample) just counts on from chunk to chunk.
+  // taken in order, so their starts are made a block at a time (render/path_starts.hpp).
   void start_path(PathGroup& g, int l) {
     if (next_task_ == chunk_end_) {
       g.paths.stop(l);
       return;
     }
-    g.task[l] = next_task_++;
-    const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + next_x_;
-    g.paths.start(l, settings_.seed, stream_index(pixel, settings_.first_sample + next_sample_));
-    g.rays.set(l, camera_.generate_ray(next_x_, y_, g.paths.uniform2(l)));
-    if (++next_sample_ == settings_.spp) {
-      next_sample_ = 0;
-      ++next_x_;
+    if (next_start_ == PathStarts::k_capacity) {
+      const auto left = static_cast<int>(std::min<std::uint64_t>(tasks_ - next_task_, PathStarts::k_capacity));
+      make_path_starts(camera_, settings_, y_, next_sample_, left, starts_);
+      next_start_ = 0;
     }
+    g.task[l] = next_task_++;
+    g.paths.start_at(l, starts_.state[next_start_], starts_.increment[next_start_]);
+    g.rays.set(l, starts_.ray(next_start_));
+    ++next_start_;
   }
 
   // One pass of estimate_path_radiance's loop for the group's four paths (render/path_lanes.hpp);
@@ -116,9 +118,11 @@ class RowOfPaths {
   const RenderSettings& settings_;
   const int max_depth_;
   const int y_;
+  const std::uint64_t tasks_;  // the row's paths: width x spp
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
-  int next_x_ = 0;  // the pixel and sample of next_task_
-  int next_sample_ = 0;
+  PathStarts starts_;  // the starts of the tasks from next_task_ on, from entry next_start_
+  int next_start_ = PathStarts::k_capacity;
+  RowSample next_sample_;  // the sample of the first task after those in starts_
   std::array<PathGroup, k_groups> groups_;
   std::array<Color, k_chunk> radiance_;
 };
