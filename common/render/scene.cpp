@@ -20,14 +20,22 @@ std::uint32_t Scene::add_material(const Material& m) {
 void Scene::add_sphere(const Sphere& s) {
   if (materials[s.material].is_emitter())
     emitters_.push_back({Emitter::sphere, spheres_.size(), Vec3(0, -1, 0), 2.0 * s.radius, false});
-  spheres_.push_back(s);
-  sphere_set_.add(s);
+  add_to_sphere_list(s);
 }
 
 void Scene::add_sphere_light(const Sphere& s, const Vec3& cap_axis, double cap_height) {
   emitters_.push_back({Emitter::sphere, spheres_.size(), cap_axis, cap_height, false});
+  add_to_sphere_list(s);
+}
+
+void Scene::add_to_sphere_list(const Sphere& s) {
   spheres_.push_back(s);
   sphere_set_.add(s);
+  LaneRecord record;
+  for (int axis = 0; axis < 3; ++axis) record.center_and_inverse_radius[axis] = s.center[axis];
+  record.center_and_inverse_radius[3] = sphere_set_.inverse_radius(spheres_.size() - 1);
+  record.front_material = record.back_material = s.material;
+  sphere_records_.push_back(record);
 }
 
 void Scene::add_quad(const Quad& q) { add_quad(q, q.material()); }
@@ -49,6 +57,11 @@ void Scene::add_to_quad_list(const Quad& q, std::uint32_t back_material) {
   }
   quads_.push_back(q);
   quad_back_materials_.push_back(back_material);
+  LaneRecord record;
+  for (int axis = 0; axis < 3; ++axis) record.normal[axis] = q.normal()[axis];
+  record.front_material = q.material();
+  record.back_material = back_material;
+  quad_records_.push_back(record);
 }
 
 // Some primitive is hit in range exactly when a nearest one exists; the four-wide searches
@@ -79,38 +92,46 @@ void Scene::hits_in_lanes_portable(const ClosestLanes& nearest, const RayLanes& 
 
 #if defined(__x86_64__)
 
-// hit_at of each lane's primitive, four lanes per instruction: the sphere centre, 1/r or quad
-// normal and material of each lane are gathered one lane at a time, then the point o + t d, a
-// sphere's normal (p - c) / r and face_forward run on the four lanes in the one-lane order.
+namespace {
+
+// The four rows of four doubles, one per lane, as four vectors, one per column.
+[[gnu::target("avx2")]] inline void transpose(const double* row0, const double* row1,
+                                              const double* row2, const double* row3,
+                                              __m256d column[4]) {
+  const __m256d r0 = _mm256_load_pd(row0), r1 = _mm256_load_pd(row1);
+  const __m256d r2 = _mm256_load_pd(row2), r3 = _mm256_load_pd(row3);
+  const __m256d x01z01 = _mm256_unpacklo_pd(r0, r1), y01w01 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d x23z23 = _mm256_unpacklo_pd(r2, r3), y23w23 = _mm256_unpackhi_pd(r2, r3);
+  column[0] = _mm256_permute2f128_pd(x01z01, x23z23, 0x20);
+  column[1] = _mm256_permute2f128_pd(y01w01, y23w23, 0x20);
+  column[2] = _mm256_permute2f128_pd(x01z01, x23z23, 0x31);
+  column[3] = _mm256_permute2f128_pd(y01w01, y23w23, 0x31);
+}
+
+}  // namespace
+
+// hit_at of each lane's primitive, four lanes per instruction: each lane's record (its
+// sphere's centre and 1/r, or its quad's normal, and its materials) is loaded whole and the
+// four are transposed; then the point o + t d, a sphere's normal (p - c) / r, face_forward and
+// a quad's side run on the four lanes in the one-lane order.
 [[gnu::target("avx2")]] void Scene::hits_in_lanes_avx2(const ClosestLanes& nearest,
                                                        const RayLanes& rays, HitLanes& hits) const {
   constexpr int k_lanes = RayLanes::k_lanes;
-  // Each lane's sphere and quad (index 0 where there is none: read, then not used).
-  std::size_t sphere[k_lanes], quad[k_lanes];
-  for (int l = 0; l < k_lanes; ++l) {
-    sphere[l] = nearest.sphere.found(l) ? nearest.sphere.primitive(l) : 0;
-    quad[l] = nearest.quad.found(l) ? nearest.quad.primitive(l) : 0;
-    if (nearest.quad.found(l)) {
-      const Vec3 direction(rays.direction_x[l], rays.direction_y[l], rays.direction_z[l]);
-      hits.material[l] = quad_face_material(quad[l], direction);
-    } else {
-      hits.material[l] =
-          nearest.sphere.found(l) ? static_cast<std::int64_t>(spheres_[sphere[l]].material) : -1;
-    }
-  }
-  // Each lane's values are put together in registers (_mm256_setr_pd), not written to arrays
-  // one by one and loaded back as four (1.19x the four-lane path tracer's rays/s on
-  // cornell-spheres, alternating runs). A scene without spheres or quads reads zeros for them.
-  const bool any_sphere = !spheres_.empty(), any_quad = !quads_.empty();
-  auto center = [&](int l, int axis) { return any_sphere ? spheres_[sphere[l]].center[axis] : 0.0; };
-  auto inverse_radius = [&](int l) { return any_sphere ? sphere_set_.inverse_radius(sphere[l]) : 0.0; };
-  auto quad_normal = [&](int l, int axis) { return any_quad ? quads_[quad[l]].normal()[axis] : 0.0; };
+  static const LaneRecord miss;  // a lane that hit nothing: material -1, and zeros
+  const LaneRecord* of[k_lanes];
+  for (int l = 0; l < k_lanes; ++l)
+    of[l] = nearest.quad.found(l)     ? &quad_records_[nearest.quad.primitive(l)]
+            : nearest.sphere.found(l) ? &sphere_records_[nearest.sphere.primitive(l)]
+                                      : &miss;
+  __m256d c[4], q[4];  // c[3] is 1 / r
+  transpose(of[0]->center_and_inverse_radius, of[1]->center_and_inverse_radius,
+            of[2]->center_and_inverse_radius, of[3]->center_and_inverse_radius, c);
+  transpose(of[0]->normal, of[1]->normal, of[2]->normal, of[3]->normal, q);
+
   const __m256d is_quad = _mm256_cmp_pd(_mm256_load_pd(nearest.quad.index), _mm256_setzero_pd(),
                                         _CMP_GE_OQ);
   const __m256d lane_t = _mm256_blendv_pd(_mm256_load_pd(nearest.sphere.t),
                                           _mm256_load_pd(nearest.quad.t), is_quad);
-  const __m256d r =
-      _mm256_setr_pd(inverse_radius(0), inverse_radius(1), inverse_radius(2), inverse_radius(3));
   const __m256d d[3] = {_mm256_load_pd(rays.direction_x), _mm256_load_pd(rays.direction_y),
                         _mm256_load_pd(rays.direction_z)};
   const __m256d o[3] = {_mm256_load_pd(rays.origin_x), _mm256_load_pd(rays.origin_y),
@@ -118,12 +139,10 @@ void Scene::hits_in_lanes_portable(const ClosestLanes& nearest, const RayLanes& 
   __m256d p[3], n[3];
   for (int axis = 0; axis < 3; ++axis) {
     p[axis] = _mm256_add_pd(o[axis], _mm256_mul_pd(lane_t, d[axis]));  // ray.at(t)
-    const __m256d c = _mm256_setr_pd(center(0, axis), center(1, axis), center(2, axis), center(3, axis));
-    const __m256d q = _mm256_setr_pd(quad_normal(0, axis), quad_normal(1, axis),
-                                     quad_normal(2, axis), quad_normal(3, axis));
-    n[axis] = _mm256_blendv_pd(_mm256_mul_pd(_mm256_sub_pd(p[axis], c), r), q, is_quad);
+    n[axis] = _mm256_blendv_pd(_mm256_mul_pd(_mm256_sub_pd(p[axis], c[axis]), c[3]), q[axis], is_quad);
   }
-  // face_forward: n where n.d < 0, else -n (the sign bit flipped).
+  // face_forward: n where n.d < 0, else -n (the sign bit flipped). For a quad, n.d is the dot
+  // of quad_face_material, whose back it meets where n.d > 0 (a sphere's back is its front).
   const __m256d n_dot_d = _mm256_add_pd(
       _mm256_add_pd(_mm256_mul_pd(n[0], d[0]), _mm256_mul_pd(n[1], d[1])),
       _mm256_mul_pd(n[2], d[2]));
@@ -133,6 +152,14 @@ void Scene::hits_in_lanes_portable(const ClosestLanes& nearest, const RayLanes& 
     _mm256_store_pd(hits.point[axis], p[axis]);
     _mm256_store_pd(hits.normal[axis], _mm256_blendv_pd(flipped, n[axis], facing));
   }
+  const __m256i front = _mm256_setr_epi64x(of[0]->front_material, of[1]->front_material,
+                                           of[2]->front_material, of[3]->front_material);
+  const __m256i back = _mm256_setr_epi64x(of[0]->back_material, of[1]->back_material,
+                                          of[2]->back_material, of[3]->back_material);
+  const __m256d from_behind = _mm256_cmp_pd(n_dot_d, _mm256_setzero_pd(), _CMP_GT_OQ);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(hits.material),
+                      _mm256_castpd_si256(_mm256_blendv_pd(_mm256_castsi256_pd(front),
+                                                           _mm256_castsi256_pd(back), from_behind)));
 }
 
 #else

@@ -152,11 +152,22 @@ struct Scene {
   bool any_hit(const Ray& ray, Interval range = {}) const;
 
  private:
+  void add_to_sphere_list(const Sphere& s);
   void add_to_quad_list(const Quad& q, std::uint32_t back_material);
+
+  // What hits_in_lanes_avx2 reads of each lane's primitive: two rows of four doubles, loaded
+  // whole and transposed (a sphere's centre and 1 / r; a quad's unit normal), and the
+  // materials of its front and back (a sphere's two are the same).
+  struct LaneRecord {
+    alignas(32) double center_and_inverse_radius[4]{};
+    alignas(32) double normal[4]{};
+    std::int64_t front_material = -1, back_material = -1;
+  };
 
   std::vector<Sphere> spheres_;
   std::vector<Quad> quads_;
   std::vector<std::uint32_t> quad_back_materials_;
+  std::vector<LaneRecord> sphere_records_, quad_records_;  ///< one per sphere, one per quad
   std::vector<Emitter> emitters_;
   SphereSet sphere_set_;  ///< spheres_ as a structure of arrays
   QuadSet quad_set_;      ///< quads_ as a structure of arrays
