@@ -14,11 +14,17 @@
 
 namespace mcrt {
 
+/// mix64's two multipliers (SplitMix64's), and the odd constant (2^64 / golden ratio) added to
+/// a stream before Rng mixes it: named once for the four-lane seeding, which must agree.
+inline constexpr std::uint64_t k_mix64_first = 0xbf58476d1ce4e5b9ULL;
+inline constexpr std::uint64_t k_mix64_second = 0x94d049bb133111ebULL;
+inline constexpr std::uint64_t k_stream_offset = 0x9e3779b97f4a7c15ULL;
+
 /// SplitMix64's finaliser: a bijection of 64-bit words under which neighbouring inputs land
 /// far apart.
 constexpr std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z = (z ^ (z >> 30)) * k_mix64_first;
+  z = (z ^ (z >> 27)) * k_mix64_second;
   return z ^ (z >> 31);
 }
 
@@ -33,7 +39,7 @@ class Rng {
 
   /// The seed PCG32 is given for (seed, stream): the scrambled one.
   static constexpr std::uint64_t starting_state(std::uint64_t seed, std::uint64_t stream) {
-    return mix64(seed ^ mix64(stream + 0x9e3779b97f4a7c15ULL));
+    return mix64(seed ^ mix64(stream + k_stream_offset));
   }
 
   /// 32 uniformly random bits.

@@ -55,8 +55,8 @@ namespace {
 
 // core/rng.hpp's mix64 in each lane.
 [[gnu::target("avx2")]] inline __m256i mix64(__m256i z) {
-  const avx2::Pcg32Multiplier m1 = avx2::pcg32_multiplier(0xbf58476d1ce4e5b9ULL);
-  const avx2::Pcg32Multiplier m2 = avx2::pcg32_multiplier(0x94d049bb133111ebULL);
+  const avx2::Pcg32Multiplier m1 = avx2::pcg32_multiplier(k_mix64_first);
+  const avx2::Pcg32Multiplier m2 = avx2::pcg32_multiplier(k_mix64_second);
   z = times(_mm256_xor_si256(z, _mm256_srli_epi64(z, 30)), m1);
   z = times(_mm256_xor_si256(z, _mm256_srli_epi64(z, 27)), m2);
   return _mm256_xor_si256(z, _mm256_srli_epi64(z, 31));
@@ -87,7 +87,7 @@ namespace {
     // Rng(seed, stream): its starting state, then pcg32's seeding, c = 2 stream + 1 and
     // s0 = (starting state + c) a + c; the two draws read s0 and s1 and leave s2.
     const __m256i streams = _mm256_load_si256(reinterpret_cast<const __m256i*>(stream));
-    const __m256i golden = _mm256_set1_epi64x(static_cast<long long>(0x9e3779b97f4a7c15ULL));
+    const __m256i golden = _mm256_set1_epi64x(static_cast<long long>(k_stream_offset));
     const __m256i seed = _mm256_set1_epi64x(static_cast<long long>(settings.seed));
     const __m256i starting = mix64(_mm256_xor_si256(seed, mix64(_mm256_add_epi64(streams, golden))));
     const __m256i c = _mm256_or_si256(_mm256_slli_epi64(streams, 1), _mm256_set1_epi64x(1));

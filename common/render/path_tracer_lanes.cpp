@@ -35,8 +35,7 @@ class RowOfPaths {
 
   // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
   void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {
-    std::size_t x = 0;  // the pixel and sample of the task whose radiance is added next
-    int sample = 0;
+    RowSample added;  // the pixel and sample of the task whose radiance is added next
     for (std::uint64_t first = 0; first < tasks_; first += k_chunk) {
       chunk_first_ = first;
       chunk_end_ = std::min(tasks_, first + k_chunk);  // the last chunk took up to `first`
@@ -44,11 +43,8 @@ class RowOfPaths {
       for (std::uint64_t task = first; task < chunk_end_; ++task) {
         const Color& radiance = radiance_[task - first];
         if (!is_finite(radiance)) ++non_finite;
-        pixel_sums[x] += radiance;
-        if (++sample == settings_.spp) {
-          sample = 0;
-          ++x;
-        }
+        pixel_sums[added.x] += radiance;
+        added.advance(settings_.spp);
       }
     }
   }
