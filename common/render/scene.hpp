@@ -72,6 +72,9 @@ struct Scene {
   /// Quads that enclose a small part of the scene (the faces of a box): added as add_quad adds
   /// each, and the AVX2 searches skip them for rays that miss their common bounds.
   void add_quad_group(std::span<const Quad> quads);
+  /// A quad that covers a small part of the scene (a lamp), with `back_material` as add_quad:
+  /// behind bounds of its own, like a group of one, so most searches skip it.
+  void add_small_quad(const Quad& q, std::uint32_t back_material);
 
   const std::vector<Sphere>& spheres() const { return spheres_; }
   const std::vector<Quad>& quads() const { return quads_; }
