@@ -28,6 +28,9 @@ class Quad {
     const Vec3 w = plane_normal_ / glm::dot(plane_normal_, plane_normal_);
     axis_a_ = glm::cross(edge_v, w);
     axis_b_ = glm::cross(w, edge_u);
+    plane_offset_ = glm::dot(plane_normal_, corner);
+    offset_a_ = glm::dot(axis_a_, corner);
+    offset_b_ = glm::dot(axis_b_, corner);
   }
 
   const Vec3& corner() const { return corner_; }
@@ -48,6 +51,11 @@ class Quad {
   double coordinate_b(const Vec3& p) const { return glm::dot(p, axis_b_); }
   const Vec3& axis_a() const { return axis_a_; }
   const Vec3& axis_b() const { return axis_b_; }
+  /// The plane is n.x = plane_offset (n = plane_normal()).
+  double plane_offset() const { return plane_offset_; }
+  /// A point x's edge coordinates are a = axis_a.x - offset_a and b = axis_b.x - offset_b.
+  double offset_a() const { return offset_a_; }
+  double offset_b() const { return offset_b_; }
   /// A ray with |n.d| below this is taken as parallel to the plane: it misses.
   double parallel_threshold() const { return 1e-12 * area_; }
 
@@ -58,19 +66,28 @@ class Quad {
   double area_;
   Vec3 normal_;
   Vec3 axis_a_, axis_b_;
+  double plane_offset_, offset_a_, offset_b_;
 };
 
-/// Plane hit t = n.(corner - o) / n.d, then the hit's coordinates (a, b) in the edges' basis
-/// must lie in [0,1]^2. A ray parallel to the plane (n.d = 0) misses.
+/// The ray o + t d meets the plane n.x = n.corner at t = (n.corner - n.o) / n.d; a ray parallel
+/// to the plane (n.d = 0) misses. The hit's edge coordinates (a, b) must lie in [0,1]^2. They
+/// are linear in the point, a(x) = axis_a.x - axis_a.corner, so along the ray
+/// a = a(o) + t axis_a.d, and the same for b: no hit point is needed.
+///
+/// Every quad search (QuadSet) does these operations in this order, so all give the same bits.
+/// The form with the hit point, a = axis_a.(o + t d - corner), costs about as many operations,
+/// but each waits for t's division, then for the point: a chain the four-lane search could not
+/// hide (docs/under-the-hood.md).
 inline std::optional<double> intersect_distance(const Quad& q, const Ray& ray, Interval range) {
   const Vec3& n = q.plane_normal();
   const double denom = glm::dot(n, ray.direction);
   if (std::abs(denom) < q.parallel_threshold()) return std::nullopt;
-  const double t = glm::dot(n, q.corner() - ray.origin) / denom;
+  const double t = (q.plane_offset() - glm::dot(n, ray.origin)) / denom;
   if (!range.contains(t)) return std::nullopt;
-  const Vec3 p = ray.at(t) - q.corner();
-  const double a = q.coordinate_a(p);
-  const double b = q.coordinate_b(p);
+  const double a =
+      (glm::dot(q.axis_a(), ray.origin) - q.offset_a()) + t * glm::dot(q.axis_a(), ray.direction);
+  const double b =
+      (glm::dot(q.axis_b(), ray.origin) - q.offset_b()) + t * glm::dot(q.axis_b(), ray.direction);
   if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return std::nullopt;
   return t;
 }

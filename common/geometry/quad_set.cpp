@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "core/cpu_features.hpp"
@@ -53,31 +54,49 @@ void QuadSet::add_group(std::span<const Quad> quads) {
 }
 
 void QuadSet::add_block() {
-  for (std::vector<double>* v : {&normal_x_, &normal_y_, &normal_z_, &corner_x_, &corner_y_,
-                                 &corner_z_, &axis_a_x_, &axis_a_y_, &axis_a_z_, &axis_b_x_,
-                                 &axis_b_y_, &axis_b_z_})
+  for (int axis = 0; axis < 3; ++axis)
+    for (std::vector<double>* v : {&normal_[axis], &axis_a_[axis], &axis_b_[axis]})
+      v->resize(v->size() + k_block, 0.0);
+  for (std::vector<double>* v : {&plane_offset_, &offset_a_, &offset_b_})
     v->resize(v->size() + k_block, 0.0);
   // |n.d| < +infinity always: a padding quad is never hit.
   parallel_threshold_.resize(parallel_threshold_.size() + k_block,
                              std::numeric_limits<double>::infinity());
   index_.resize(index_.size() + k_block, -1.0);
+  records_.resize(records_.size() + k_block);
 }
 
+namespace {
+
+// The one coordinate of v that is not zero, or -1.
+std::int32_t only_nonzero_coordinate(const Vec3& v) {
+  const int nonzero = (v.x != 0.0) + (v.y != 0.0) + (v.z != 0.0);
+  if (nonzero != 1) return -1;
+  return v.x != 0.0 ? 0 : v.y != 0.0 ? 1 : 2;
+}
+
+}  // namespace
+
 void QuadSet::put(std::size_t slot, const Quad& q) {
-  normal_x_[slot] = q.plane_normal().x;
-  normal_y_[slot] = q.plane_normal().y;
-  normal_z_[slot] = q.plane_normal().z;
-  corner_x_[slot] = q.corner().x;
-  corner_y_[slot] = q.corner().y;
-  corner_z_[slot] = q.corner().z;
-  axis_a_x_[slot] = q.axis_a().x;
-  axis_a_y_[slot] = q.axis_a().y;
-  axis_a_z_[slot] = q.axis_a().z;
-  axis_b_x_[slot] = q.axis_b().x;
-  axis_b_y_[slot] = q.axis_b().y;
-  axis_b_z_[slot] = q.axis_b().z;
-  parallel_threshold_[slot] = q.parallel_threshold();
-  index_[slot] = static_cast<double>(size_++);
+  Record& r = records_[slot];
+  for (int axis = 0; axis < 3; ++axis) {
+    r.normal[axis] = normal_[axis][slot] = q.plane_normal()[axis];
+    r.axis_a[axis] = axis_a_[axis][slot] = q.axis_a()[axis];
+    r.axis_b[axis] = axis_b_[axis][slot] = q.axis_b()[axis];
+  }
+  r.plane_offset = plane_offset_[slot] = q.plane_offset();
+  r.offset_a = offset_a_[slot] = q.offset_a();
+  r.offset_b = offset_b_[slot] = q.offset_b();
+  r.parallel_threshold = parallel_threshold_[slot] = q.parallel_threshold();
+  r.index = index_[slot] = static_cast<double>(size_++);
+  const std::int32_t n = only_nonzero_coordinate(q.plane_normal()),
+                     a = only_nonzero_coordinate(q.axis_a()),
+                     b = only_nonzero_coordinate(q.axis_b());
+  if (n >= 0 && a >= 0 && b >= 0) {
+    r.aligned_normal = n;
+    r.aligned_a = a;
+    r.aligned_b = b;
+  }
 }
 
 // intersect_distance for every quad, chosen between with selects rather than early exits (a
@@ -87,13 +106,15 @@ QuadSet::Nearest QuadSet::nearest_portable(const Ray& ray, Interval range) const
   for (const Run& run : runs_)
     for (std::size_t k = 0; k < run.count; ++k) {
       const std::size_t s = run.begin + k;  // the slot of quad run.first + k
-      const Vec3 n(normal_x_[s], normal_y_[s], normal_z_[s]);
-      const Vec3 corner(corner_x_[s], corner_y_[s], corner_z_[s]);
+      const Vec3 n(normal_[0][s], normal_[1][s], normal_[2][s]);
+      const Vec3 axis_a(axis_a_[0][s], axis_a_[1][s], axis_a_[2][s]);
+      const Vec3 axis_b(axis_b_[0][s], axis_b_[1][s], axis_b_[2][s]);
       const double denom = glm::dot(n, ray.direction);
-      const double t = glm::dot(n, corner - ray.origin) / denom;
-      const Vec3 p = ray.at(t) - corner;
-      const double a = glm::dot(p, Vec3(axis_a_x_[s], axis_a_y_[s], axis_a_z_[s]));
-      const double b = glm::dot(p, Vec3(axis_b_x_[s], axis_b_y_[s], axis_b_z_[s]));
+      const double t = (plane_offset_[s] - glm::dot(n, ray.origin)) / denom;
+      const double a =
+          (glm::dot(axis_a, ray.origin) - offset_a_[s]) + t * glm::dot(axis_a, ray.direction);
+      const double b =
+          (glm::dot(axis_b, ray.origin) - offset_b_[s]) + t * glm::dot(axis_b, ray.direction);
       const bool closer = !(std::abs(denom) < parallel_threshold_[s]) && t > range.min &&
                           t < best.t && !(a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0);
       best.t = closer ? t : best.t;
@@ -117,10 +138,53 @@ void QuadSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
 namespace {
 
 // (x1 y1 + x2 y2) + x3 y3, summed in glm::dot's order.
-[[gnu::target("avx2")]] inline __m256d dot(__m256d x1, __m256d x2, __m256d x3, __m256d y1,
-                                          __m256d y2, __m256d y3) {
-  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x1, y1), _mm256_mul_pd(x2, y2)),
-                       _mm256_mul_pd(x3, y3));
+[[gnu::target("avx2")]] inline __m256d dot(const __m256d x[3], const __m256d y[3]) {
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x[0], y[0]), _mm256_mul_pd(x[1], y[1])),
+                       _mm256_mul_pd(x[2], y[2]));
+}
+
+// What intersect_distance computes before its tests, for four (quad, ray) pairs: n.d, t and
+// the edge coordinates, with the same operations in the same order.
+struct PlaneHits {
+  __m256d denom, t, a, b;
+};
+
+// A quad's vectors and offsets, one quad per lane or one quad in every lane.
+struct QuadLanes {
+  __m256d normal[3], axis_a[3], axis_b[3];
+  __m256d plane_offset, offset_a, offset_b;
+};
+
+[[gnu::target("avx2")]] inline PlaneHits plane_hits(const QuadLanes& q, const __m256d origin[3],
+                                                   const __m256d direction[3]) {
+  PlaneHits h;
+  h.denom = dot(q.normal, direction);
+  h.t = _mm256_div_pd(_mm256_sub_pd(q.plane_offset, dot(q.normal, origin)), h.denom);
+  h.a = _mm256_add_pd(_mm256_sub_pd(dot(q.axis_a, origin), q.offset_a),
+                      _mm256_mul_pd(h.t, dot(q.axis_a, direction)));
+  h.b = _mm256_add_pd(_mm256_sub_pd(dot(q.axis_b, origin), q.offset_b),
+                      _mm256_mul_pd(h.t, dot(q.axis_b, direction)));
+  return h;
+}
+
+// intersect_distance's tests on four (quad, ray) pairs, and the nearest kept: a lane takes t
+// and the quad's index where the quad faces the ray (|n.d| not below the threshold), t is in
+// (t_min, best_t) and (a, b) lies in [0,1]^2. Each comparison is NaN-safe in the same way as
+// the plain one: !(|denom| < threshold), !(a < 0 || a > 1 || b < 0 || b > 1).
+[[gnu::target("avx2")]] inline void keep_nearer(const PlaneHits& h, __m256d parallel_threshold,
+                                               __m256d index, __m256d t_min, __m256d& best_t,
+                                               __m256d& best_index) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  const __m256d facing = _mm256_cmp_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), h.denom),
+                                       parallel_threshold, _CMP_NLT_UQ);
+  const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(h.t, t_min, _CMP_GT_OQ),
+                                         _mm256_cmp_pd(h.t, best_t, _CMP_LT_OQ));
+  const __m256d inside = _mm256_and_pd(
+      _mm256_and_pd(_mm256_cmp_pd(h.a, zero, _CMP_NLT_UQ), _mm256_cmp_pd(h.a, one, _CMP_NGT_UQ)),
+      _mm256_and_pd(_mm256_cmp_pd(h.b, zero, _CMP_NLT_UQ), _mm256_cmp_pd(h.b, one, _CMP_NGT_UQ)));
+  const __m256d closer = _mm256_and_pd(_mm256_and_pd(facing, in_range), inside);
+  best_t = _mm256_blendv_pd(best_t, h.t, closer);
+  best_index = _mm256_blendv_pd(best_index, index, closer);
 }
 
 // Whether any of four rays o + t d, t in (t_min, t_max), meets the box [low, high]: the slab
@@ -153,15 +217,15 @@ namespace {
 // A group is skipped when the ray misses its box before the nearest hit so far.
 [[gnu::target("avx2")]] QuadSet::Nearest QuadSet::nearest_avx2(const Ray& ray,
                                                                Interval range) const {
-  const __m256d ox = _mm256_set1_pd(ray.origin.x), oy = _mm256_set1_pd(ray.origin.y),
-                oz = _mm256_set1_pd(ray.origin.z);
-  const __m256d dx = _mm256_set1_pd(ray.direction.x), dy = _mm256_set1_pd(ray.direction.y),
-                dz = _mm256_set1_pd(ray.direction.z);
-  const __m256d t_min = _mm256_set1_pd(range.min), zero = _mm256_setzero_pd(),
-                one = _mm256_set1_pd(1.0), sign = _mm256_set1_pd(-0.0);
-  const __m256d origin[3] = {ox, oy, oz};
-  const __m256d inverse_d[3] = {_mm256_div_pd(one, dx), _mm256_div_pd(one, dy),
-                                _mm256_div_pd(one, dz)};
+  const __m256d origin[3] = {_mm256_set1_pd(ray.origin.x), _mm256_set1_pd(ray.origin.y),
+                             _mm256_set1_pd(ray.origin.z)};
+  const __m256d direction[3] = {_mm256_set1_pd(ray.direction.x),
+                                _mm256_set1_pd(ray.direction.y),
+                                _mm256_set1_pd(ray.direction.z)};
+  const __m256d t_min = _mm256_set1_pd(range.min), one = _mm256_set1_pd(1.0);
+  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]),
+                                _mm256_div_pd(one, direction[1]),
+                                _mm256_div_pd(one, direction[2])};
   __m256d best_t = _mm256_set1_pd(range.max);
   __m256d best_index = _mm256_set1_pd(-1.0);  // indices as doubles: exact below 2^53
   for (const Run& run : runs_) {
@@ -169,34 +233,17 @@ namespace {
                                            avx2::all_lanes_min(best_t)))
       continue;
     for (std::size_t i = run.begin; i < run.end; i += k_block) {
-      const __m256d nx = _mm256_loadu_pd(&normal_x_[i]), ny = _mm256_loadu_pd(&normal_y_[i]),
-                    nz = _mm256_loadu_pd(&normal_z_[i]);
-      const __m256d cx = _mm256_loadu_pd(&corner_x_[i]), cy = _mm256_loadu_pd(&corner_y_[i]),
-                    cz = _mm256_loadu_pd(&corner_z_[i]);
-      const __m256d denom = dot(nx, ny, nz, dx, dy, dz);
-      const __m256d t = _mm256_div_pd(
-          dot(nx, ny, nz, _mm256_sub_pd(cx, ox), _mm256_sub_pd(cy, oy), _mm256_sub_pd(cz, oz)),
-          denom);
-      // p = (o + t d) - c, as ray.at(t) - corner.
-      const __m256d px = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), cx);
-      const __m256d py = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), cy);
-      const __m256d pz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), cz);
-      const __m256d a = dot(px, py, pz, _mm256_loadu_pd(&axis_a_x_[i]),
-                            _mm256_loadu_pd(&axis_a_y_[i]), _mm256_loadu_pd(&axis_a_z_[i]));
-      const __m256d b = dot(px, py, pz, _mm256_loadu_pd(&axis_b_x_[i]),
-                            _mm256_loadu_pd(&axis_b_y_[i]), _mm256_loadu_pd(&axis_b_z_[i]));
-      // !(|denom| < threshold): NaN-safe in the same way as the plain comparison.
-      const __m256d facing = _mm256_cmp_pd(_mm256_andnot_pd(sign, denom),
-                                           _mm256_loadu_pd(&parallel_threshold_[i]), _CMP_NLT_UQ);
-      const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(t, t_min, _CMP_GT_OQ),
-                                             _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
-      // !(a < 0 || a > 1 || b < 0 || b > 1), NaN-safe in the same way as the plain test.
-      const __m256d inside = _mm256_and_pd(
-          _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_NLT_UQ), _mm256_cmp_pd(a, one, _CMP_NGT_UQ)),
-          _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_NLT_UQ), _mm256_cmp_pd(b, one, _CMP_NGT_UQ)));
-      const __m256d closer = _mm256_and_pd(_mm256_and_pd(facing, in_range), inside);
-      best_t = _mm256_blendv_pd(best_t, t, closer);
-      best_index = _mm256_blendv_pd(best_index, _mm256_loadu_pd(&index_[i]), closer);
+      QuadLanes q;
+      for (int axis = 0; axis < 3; ++axis) {
+        q.normal[axis] = _mm256_loadu_pd(&normal_[axis][i]);
+        q.axis_a[axis] = _mm256_loadu_pd(&axis_a_[axis][i]);
+        q.axis_b[axis] = _mm256_loadu_pd(&axis_b_[axis][i]);
+      }
+      q.plane_offset = _mm256_loadu_pd(&plane_offset_[i]);
+      q.offset_a = _mm256_loadu_pd(&offset_a_[i]);
+      q.offset_b = _mm256_loadu_pd(&offset_b_[i]);
+      keep_nearer(plane_hits(q, origin, direction), _mm256_loadu_pd(&parallel_threshold_[i]),
+                  _mm256_loadu_pd(&index_[i]), t_min, best_t, best_index);
     }
   }
   const avx2::NearestLane nearest = avx2::merge_lanes(best_t, best_index);
@@ -211,48 +258,59 @@ namespace {
 // A group's quads are skipped when none of the four rays meets its box within its range
 // (t_min, nearest t so far): a quad the box does not meet cannot be hit, so skipping it
 // changes no lane's answer, and the quads that are tested are tested in index order, as before.
+//
+// An axis-aligned quad (a wall of a box) is tested without the products by zero in its dot
+// products: n.d becomes n_k d_k, and so on (1.04x on `cornell`). Adding the zero products
+// changes a non-zero sum not at all, and a zero sum at most in its sign; for finite rays and
+// t_min >= 0 no test can tell the two zeros apart (a zero n.d is never facing, a zero t never
+// in range, a zero a or b is inside either way), so the answers keep every bit.
 [[gnu::target("avx2")]] void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
                                                          NearestLanes& nearest) const {
-  const __m256d ox = _mm256_load_pd(rays.origin_x), oy = _mm256_load_pd(rays.origin_y),
-                oz = _mm256_load_pd(rays.origin_z);
-  const __m256d dx = _mm256_load_pd(rays.direction_x), dy = _mm256_load_pd(rays.direction_y),
-                dz = _mm256_load_pd(rays.direction_z);
-  const __m256d t_low = _mm256_set1_pd(t_min), zero = _mm256_setzero_pd(),
-                one = _mm256_set1_pd(1.0), sign = _mm256_set1_pd(-0.0);
+  const __m256d origin[3] = {_mm256_load_pd(rays.origin_x), _mm256_load_pd(rays.origin_y),
+                             _mm256_load_pd(rays.origin_z)};
+  const __m256d direction[3] = {_mm256_load_pd(rays.direction_x),
+                                _mm256_load_pd(rays.direction_y),
+                                _mm256_load_pd(rays.direction_z)};
+  const __m256d t_low = _mm256_set1_pd(t_min), one = _mm256_set1_pd(1.0);
   __m256d best_t = _mm256_load_pd(nearest.t);
   __m256d best_index = _mm256_load_pd(nearest.index);
-  const __m256d inverse_d[3] = {_mm256_div_pd(one, dx), _mm256_div_pd(one, dy),
-                                _mm256_div_pd(one, dz)};
-  const __m256d origin[3] = {ox, oy, oz};
+  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]),
+                                _mm256_div_pd(one, direction[1]),
+                                _mm256_div_pd(one, direction[2])};
   for (const Run& run : runs_) {
     if (run.bounded && !any_lane_meets_box(run.low, run.high, origin, inverse_d, t_low, best_t))
       continue;
     for (std::size_t i = run.begin; i < run.begin + run.count; ++i) {
-      const __m256d nx = _mm256_set1_pd(normal_x_[i]), ny = _mm256_set1_pd(normal_y_[i]),
-                    nz = _mm256_set1_pd(normal_z_[i]);
-      const __m256d cx = _mm256_set1_pd(corner_x_[i]), cy = _mm256_set1_pd(corner_y_[i]),
-                    cz = _mm256_set1_pd(corner_z_[i]);
-      const __m256d denom = dot(nx, ny, nz, dx, dy, dz);
-      const __m256d t = _mm256_div_pd(
-          dot(nx, ny, nz, _mm256_sub_pd(cx, ox), _mm256_sub_pd(cy, oy), _mm256_sub_pd(cz, oz)),
-          denom);
-      const __m256d px = _mm256_sub_pd(_mm256_add_pd(ox, _mm256_mul_pd(t, dx)), cx);
-      const __m256d py = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(t, dy)), cy);
-      const __m256d pz = _mm256_sub_pd(_mm256_add_pd(oz, _mm256_mul_pd(t, dz)), cz);
-      const __m256d a = dot(px, py, pz, _mm256_set1_pd(axis_a_x_[i]),
-                            _mm256_set1_pd(axis_a_y_[i]), _mm256_set1_pd(axis_a_z_[i]));
-      const __m256d b = dot(px, py, pz, _mm256_set1_pd(axis_b_x_[i]),
-                            _mm256_set1_pd(axis_b_y_[i]), _mm256_set1_pd(axis_b_z_[i]));
-      const __m256d facing = _mm256_cmp_pd(_mm256_andnot_pd(sign, denom),
-                                           _mm256_set1_pd(parallel_threshold_[i]), _CMP_NLT_UQ);
-      const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(t, t_low, _CMP_GT_OQ),
-                                             _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
-      const __m256d inside = _mm256_and_pd(
-          _mm256_and_pd(_mm256_cmp_pd(a, zero, _CMP_NLT_UQ), _mm256_cmp_pd(a, one, _CMP_NGT_UQ)),
-          _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_NLT_UQ), _mm256_cmp_pd(b, one, _CMP_NGT_UQ)));
-      const __m256d closer = _mm256_and_pd(_mm256_and_pd(facing, in_range), inside);
-      best_t = _mm256_blendv_pd(best_t, t, closer);
-      best_index = _mm256_blendv_pd(best_index, _mm256_set1_pd(index_[i]), closer);
+      const Record& r = records_[i];
+      PlaneHits h;
+      if (r.aligned_normal >= 0) {
+        const __m256d n = _mm256_set1_pd(r.normal[r.aligned_normal]),
+                      axis_a = _mm256_set1_pd(r.axis_a[r.aligned_a]),
+                      axis_b = _mm256_set1_pd(r.axis_b[r.aligned_b]);
+        h.denom = _mm256_mul_pd(n, direction[r.aligned_normal]);
+        h.t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(r.plane_offset),
+                                          _mm256_mul_pd(n, origin[r.aligned_normal])),
+                            h.denom);
+        h.a = _mm256_add_pd(
+            _mm256_sub_pd(_mm256_mul_pd(axis_a, origin[r.aligned_a]), _mm256_set1_pd(r.offset_a)),
+            _mm256_mul_pd(h.t, _mm256_mul_pd(axis_a, direction[r.aligned_a])));
+        h.b = _mm256_add_pd(
+            _mm256_sub_pd(_mm256_mul_pd(axis_b, origin[r.aligned_b]), _mm256_set1_pd(r.offset_b)),
+            _mm256_mul_pd(h.t, _mm256_mul_pd(axis_b, direction[r.aligned_b])));
+      } else {
+        QuadLanes q;
+        for (int axis = 0; axis < 3; ++axis) {
+          q.normal[axis] = _mm256_set1_pd(r.normal[axis]);
+          q.axis_a[axis] = _mm256_set1_pd(r.axis_a[axis]);
+          q.axis_b[axis] = _mm256_set1_pd(r.axis_b[axis]);
+        }
+        q.plane_offset = _mm256_set1_pd(r.plane_offset);
+        q.offset_a = _mm256_set1_pd(r.offset_a);
+        q.offset_b = _mm256_set1_pd(r.offset_b);
+        h = plane_hits(q, origin, direction);
+      }
+      keep_nearer(h, _mm256_set1_pd(r.parallel_threshold), _mm256_set1_pd(r.index), t_low,
+                  best_t, best_index);
     }
   }
   _mm256_store_pd(nearest.t, best_t);

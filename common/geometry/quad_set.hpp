@@ -3,6 +3,7 @@
 /// does for spheres.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -11,13 +12,15 @@
 
 namespace mcrt {
 
-/// Plane normals, corners and edge axes in separate arrays, in runs of whole blocks of k_block
+/// Plane normals, edge axes and their offsets in separate arrays, in runs of whole blocks of k_block
 /// slots, padded with quads that never hit (a parallel-ray threshold of +infinity), so the
 /// search runs k_block quads at a time with no remainder loop. A run is either quads added one
 /// by one, or a group (add_group) behind its bounding box, which a ray that misses the box
 /// skips. Each quad's t, a and b are computed with the same operations, in the same order, as
 /// intersect_distance (quad.hpp), and the quads a ray is tested against are tested in index
-/// order, so the answer is the same bit for bit.
+/// order, so the answer is the same bit for bit. (The four-ray search leaves out the products
+/// by zero of quads whose plane and edges are axis-aligned: for finite rays and t_min >= 0
+/// that changes no answer, only, at most, the sign of a zero that no test can tell apart.)
 class QuadSet {
  public:
   static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
@@ -50,7 +53,7 @@ class QuadSet {
 
   /// Four rays at once: each lane of `nearest` becomes the nearest quad of its ray hit in
   /// (t_min, nearest.t[lane]), if there is one nearer than what the lane holds; the same t and
-  /// index, bit for bit, as nearest() of each ray alone.
+  /// index, bit for bit, as nearest() of each ray alone (for finite rays and t_min >= 0).
   void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
     if (size_ == 0) return;
     if (k_has_avx2) nearest_lanes_avx2(rays, t_min, nearest);
@@ -78,15 +81,24 @@ class QuadSet {
 
   std::vector<Run> runs_;
   std::size_t size_ = 0;
-  // Per slot: n = cross(u, v) (not normalised), the corner c, the axes giving the edge
-  // coordinates a = p.axis_a and b = p.axis_b, the parallel-ray threshold 1e-12 |n|, and the
-  // quad's index (as a double, exact below 2^53; -1 in padding).
-  std::vector<double> normal_x_, normal_y_, normal_z_;
-  std::vector<double> corner_x_, corner_y_, corner_z_;
-  std::vector<double> axis_a_x_, axis_a_y_, axis_a_z_;
-  std::vector<double> axis_b_x_, axis_b_y_, axis_b_z_;
+  // Per slot, coordinate by coordinate (0, 1, 2: x, y, z): n = cross(u, v) (not normalised)
+  // and the axes giving the edge coordinates; then the offsets n.corner, axis_a.corner and
+  // axis_b.corner, the parallel-ray threshold 1e-12 |n|, and the quad's index (as a double,
+  // exact below 2^53; -1 in padding).
+  std::vector<double> normal_[3], axis_a_[3], axis_b_[3];
+  std::vector<double> plane_offset_, offset_a_, offset_b_;
   std::vector<double> parallel_threshold_;
   std::vector<double> index_;
+  /// One quad's values side by side, for the four-ray search, which reads one quad at a time
+  /// (one base address, instead of one per array). For a quad in a coordinate plane with its
+  /// edges along the axes (the walls of a box), the `aligned` coordinates are the one that is
+  /// not zero in each of n, axis_a and axis_b; aligned_normal < 0 for any other quad.
+  struct Record {
+    double normal[3], axis_a[3], axis_b[3];
+    double plane_offset, offset_a, offset_b, parallel_threshold, index;
+    std::int32_t aligned_normal = -1, aligned_a = -1, aligned_b = -1;
+  };
+  std::vector<Record> records_;
 };
 
 }  // namespace mcrt
