@@ -173,16 +173,21 @@ TEST(SphereSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
 }
 
 // A random quad: axis-aligned one time in three (rays along an axis then run parallel to it),
-// edges from 0.5 to 6 long, in a box of side 16; one quad in five repeats an earlier one.
+// with one edge along an axis one time in six (the sides of a box turned about that axis,
+// whose vectors have two coordinates that are not zero), edges from 0.5 to 6 long, in a box
+// of side 16; one quad in five repeats an earlier one.
 Quad random_quad(Rng& rng, const std::vector<Quad>& earlier) {
   if (earlier.size() % 5 == 4)
     return earlier[rng.uniform_below(static_cast<std::uint32_t>(earlier.size()))];
   const Vec3 corner = random_point(rng, 16.0);
-  if (rng.uniform_below(3) == 0) {
+  const auto shape = rng.uniform_below(6);
+  if (shape < 3) {
     const auto axis = rng.uniform_below(3);
     Vec3 u(0.0), v(0.0);
     u[(axis + 1) % 3] = 0.5 + 5.5 * rng.uniform();
-    v[(axis + 2) % 3] = 0.5 + 5.5 * rng.uniform();
+    v[(axis + 2) % 3] = (shape == 0 ? -1.0 : 1.0) * (0.5 + 5.5 * rng.uniform());
+    if (shape < 2) return {corner, u, v};
+    v[axis] = 0.5 + 5.5 * rng.uniform();  // u along an axis, v across it
     return {corner, u, v};
   }
   return {corner, (0.5 + 5.5 * rng.uniform()) * sample_uniform_sphere(rng.uniform2()),

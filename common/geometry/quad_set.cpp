@@ -68,11 +68,18 @@ void QuadSet::add_block() {
 
 namespace {
 
-// The one coordinate of v that is not zero, or -1.
-std::int32_t only_nonzero_coordinate(const Vec3& v) {
-  const int nonzero = (v.x != 0.0) + (v.y != 0.0) + (v.z != 0.0);
-  if (nonzero != 1) return -1;
-  return v.x != 0.0 ? 0 : v.y != 0.0 ? 1 : 2;
+// How many coordinates of v are not zero.
+int nonzero_coordinates(const Vec3& v) { return (v.x != 0.0) + (v.y != 0.0) + (v.z != 0.0); }
+
+// The `terms` coordinates whose products make v's dot products: those of v that are not
+// zero, then (for two terms and a v with one) a coordinate that is, which only adds a
+// product by zero.
+void sum_coordinates(const Vec3& v, int terms, std::int32_t coordinate[2]) {
+  int n = 0;
+  for (int c = 0; c < 3; ++c)
+    if (v[c] != 0.0) coordinate[n++] = c;
+  for (int c = 0; c < 3 && n < terms; ++c)
+    if (v[c] == 0.0) coordinate[n++] = c;
 }
 
 }  // namespace
@@ -89,14 +96,12 @@ void QuadSet::put(std::size_t slot, const Quad& q) {
   r.offset_b = offset_b_[slot] = q.offset_b();
   r.parallel_threshold = parallel_threshold_[slot] = q.parallel_threshold();
   r.index = index_[slot] = static_cast<double>(size_++);
-  const std::int32_t n = only_nonzero_coordinate(q.plane_normal()),
-                     a = only_nonzero_coordinate(q.axis_a()),
-                     b = only_nonzero_coordinate(q.axis_b());
-  if (n >= 0 && a >= 0 && b >= 0) {
-    r.aligned_normal = n;
-    r.aligned_a = a;
-    r.aligned_b = b;
-  }
+  const Vec3* vectors[3] = {&q.plane_normal(), &q.axis_a(), &q.axis_b()};
+  int most = 0;
+  for (const Vec3* v : vectors) most = std::max(most, nonzero_coordinates(*v));
+  r.terms = most <= 2 ? most : 0;
+  if (r.terms > 0)
+    for (int v = 0; v < 3; ++v) sum_coordinates(*vectors[v], r.terms, r.coordinate[v]);
 }
 
 // intersect_distance for every quad, chosen between with selects rather than early exits (a
@@ -164,6 +169,39 @@ struct QuadLanes {
                       _mm256_mul_pd(h.t, dot(q.axis_a, direction)));
   h.b = _mm256_add_pd(_mm256_sub_pd(dot(q.axis_b, origin), q.offset_b),
                       _mm256_mul_pd(h.t, dot(q.axis_b, direction)));
+  return h;
+}
+
+// x.v over the `Terms` coordinates of v that `coordinate` names: glm::dot's sum without its
+// products by zero. The value is the same (a sum of two terms does not depend on their
+// order); only a zero sum may differ in its sign.
+template <int Terms>
+[[gnu::target("avx2")]] inline __m256d dot_of_terms(const double v[3],
+                                                   const std::int32_t coordinate[2],
+                                                   const __m256d x[3]) {
+  __m256d sum = _mm256_mul_pd(_mm256_set1_pd(v[coordinate[0]]), x[coordinate[0]]);
+  if constexpr (Terms == 2)
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(v[coordinate[1]]), x[coordinate[1]]));
+  return sum;
+}
+
+// plane_hits for one quad in every lane, summing only the products of its record's chosen
+// coordinates (QuadSet::Record::terms).
+template <int Terms, class Record>
+[[gnu::target("avx2")]] inline PlaneHits plane_hits_of_terms(const Record& r,
+                                                            const __m256d origin[3],
+                                                            const __m256d direction[3]) {
+  PlaneHits h;
+  h.denom = dot_of_terms<Terms>(r.normal, r.coordinate[0], direction);
+  h.t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(r.plane_offset),
+                                    dot_of_terms<Terms>(r.normal, r.coordinate[0], origin)),
+                      h.denom);
+  h.a = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_a, r.coordinate[1], origin),
+                                    _mm256_set1_pd(r.offset_a)),
+                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_a, r.coordinate[1], direction)));
+  h.b = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_b, r.coordinate[2], origin),
+                                    _mm256_set1_pd(r.offset_b)),
+                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_b, r.coordinate[2], direction)));
   return h;
 }
 
@@ -259,11 +297,12 @@ struct QuadLanes {
 // (t_min, nearest t so far): a quad the box does not meet cannot be hit, so skipping it
 // changes no lane's answer, and the quads that are tested are tested in index order, as before.
 //
-// An axis-aligned quad (a wall of a box) is tested without the products by zero in its dot
-// products: n.d becomes n_k d_k, and so on (1.04x on `cornell`). Adding the zero products
-// changes a non-zero sum not at all, and a zero sum at most in its sign; for finite rays and
-// t_min >= 0 no test can tell the two zeros apart (a zero n.d is never facing, a zero t never
-// in range, a zero a or b is inside either way), so the answers keep every bit.
+// A quad whose vectors have coordinates that are zero is tested without their products in
+// its dot products (Record::terms): for a box's walls, n.d becomes n_k d_k, and so on; for
+// the sides of a box turned about an axis, two products instead of three. Adding the zero
+// products changes a non-zero sum not at all, and a zero sum at most in its sign; for finite
+// rays and t_min >= 0 no test can tell the two zeros apart (a zero n.d is never facing, a
+// zero t never in range, a zero a or b is inside either way), so the answers keep every bit.
 [[gnu::target("avx2")]] void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
                                                          NearestLanes& nearest) const {
   const __m256d origin[3] = {_mm256_load_pd(rays.origin_x), _mm256_load_pd(rays.origin_y),
@@ -283,20 +322,10 @@ struct QuadLanes {
     for (std::size_t i = run.begin; i < run.begin + run.count; ++i) {
       const Record& r = records_[i];
       PlaneHits h;
-      if (r.aligned_normal >= 0) {
-        const __m256d n = _mm256_set1_pd(r.normal[r.aligned_normal]),
-                      axis_a = _mm256_set1_pd(r.axis_a[r.aligned_a]),
-                      axis_b = _mm256_set1_pd(r.axis_b[r.aligned_b]);
-        h.denom = _mm256_mul_pd(n, direction[r.aligned_normal]);
-        h.t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(r.plane_offset),
-                                          _mm256_mul_pd(n, origin[r.aligned_normal])),
-                            h.denom);
-        h.a = _mm256_add_pd(
-            _mm256_sub_pd(_mm256_mul_pd(axis_a, origin[r.aligned_a]), _mm256_set1_pd(r.offset_a)),
-            _mm256_mul_pd(h.t, _mm256_mul_pd(axis_a, direction[r.aligned_a])));
-        h.b = _mm256_add_pd(
-            _mm256_sub_pd(_mm256_mul_pd(axis_b, origin[r.aligned_b]), _mm256_set1_pd(r.offset_b)),
-            _mm256_mul_pd(h.t, _mm256_mul_pd(axis_b, direction[r.aligned_b])));
+      if (r.terms == 1) {
+        h = plane_hits_of_terms<1>(r, origin, direction);
+      } else if (r.terms == 2) {
+        h = plane_hits_of_terms<2>(r, origin, direction);
       } else {
         QuadLanes q;
         for (int axis = 0; axis < 3; ++axis) {

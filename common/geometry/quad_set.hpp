@@ -19,8 +19,9 @@ namespace mcrt {
 /// skips. Each quad's t, a and b are computed with the same operations, in the same order, as
 /// intersect_distance (quad.hpp), and the quads a ray is tested against are tested in index
 /// order, so the answer is the same bit for bit. (The four-ray search leaves out the products
-/// by zero of quads whose plane and edges are axis-aligned: for finite rays and t_min >= 0
-/// that changes no answer, only, at most, the sign of a zero that no test can tell apart.)
+/// by zero of quads whose vectors have zero coordinates, such as a box's walls: for finite
+/// rays and t_min >= 0 that changes no answer, only, at most, the sign of a zero that no test
+/// can tell apart.)
 class QuadSet {
  public:
   static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
@@ -90,13 +91,16 @@ class QuadSet {
   std::vector<double> parallel_threshold_;
   std::vector<double> index_;
   /// One quad's values side by side, for the four-ray search, which reads one quad at a time
-  /// (one base address, instead of one per array). For a quad in a coordinate plane with its
-  /// edges along the axes (the walls of a box), the `aligned` coordinates are the one that is
-  /// not zero in each of n, axis_a and axis_b; aligned_normal < 0 for any other quad.
+  /// (one base address, instead of one per array).
   struct Record {
     double normal[3], axis_a[3], axis_b[3];
     double plane_offset, offset_a, offset_b, parallel_threshold, index;
-    std::int32_t aligned_normal = -1, aligned_a = -1, aligned_b = -1;
+    /// 1 when each of n, axis_a and axis_b has one coordinate that is not zero (a quad in a
+    /// coordinate plane with its edges along the axes: a box's walls), 2 when each has at most
+    /// two (a box turned about an axis: its sides), 0 otherwise. `coordinate` then gives, for
+    /// n, axis_a and axis_b, the coordinates whose products the search sums.
+    std::int32_t terms = 0;
+    std::int32_t coordinate[3][2]{};
   };
   std::vector<Record> records_;
 };
