@@ -151,7 +151,8 @@ TEST(QuadTest, PlaneOffsetFormAgreesWithTheHitPointForm) {
                            glm::dot(q.plane_normal(), ray.direction);
     const Vec3 p = ray.at(t_plane) - q.corner();
     const double a = q.coordinate_a(p), b = q.coordinate_b(p);
-    const double margin = std::min({std::abs(a), std::abs(a - 1.0), std::abs(b), std::abs(b - 1.0)});
+    const double margin =
+        std::min({std::abs(a), std::abs(a - 1.0), std::abs(b), std::abs(b - 1.0)});
     const auto before = hit_point_form(q, ray, {});
     const auto after = intersect_distance(q, ray, {});
     if (margin >= 1e-9) {

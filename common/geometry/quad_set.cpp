@@ -188,20 +188,19 @@ template <int Terms>
 // plane_hits for one quad in every lane, summing only the products of its record's chosen
 // coordinates (QuadSet::Record::terms).
 template <int Terms, class Record>
-[[gnu::target("avx2")]] inline PlaneHits plane_hits_of_terms(const Record& r,
-                                                            const __m256d origin[3],
-                                                            const __m256d direction[3]) {
+[[gnu::target("avx2")]] inline PlaneHits plane_hits_of_terms(const Record& r, const __m256d o[3],
+                                                            const __m256d d[3]) {
   PlaneHits h;
-  h.denom = dot_of_terms<Terms>(r.normal, r.coordinate[0], direction);
+  h.denom = dot_of_terms<Terms>(r.normal, r.coordinate[0], d);
   h.t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(r.plane_offset),
-                                    dot_of_terms<Terms>(r.normal, r.coordinate[0], origin)),
+                                    dot_of_terms<Terms>(r.normal, r.coordinate[0], o)),
                       h.denom);
-  h.a = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_a, r.coordinate[1], origin),
-                                    _mm256_set1_pd(r.offset_a)),
-                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_a, r.coordinate[1], direction)));
-  h.b = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_b, r.coordinate[2], origin),
-                                    _mm256_set1_pd(r.offset_b)),
-                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_b, r.coordinate[2], direction)));
+  h.a = _mm256_add_pd(
+      _mm256_sub_pd(dot_of_terms<Terms>(r.axis_a, r.coordinate[1], o), _mm256_set1_pd(r.offset_a)),
+      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_a, r.coordinate[1], d)));
+  h.b = _mm256_add_pd(
+      _mm256_sub_pd(dot_of_terms<Terms>(r.axis_b, r.coordinate[2], o), _mm256_set1_pd(r.offset_b)),
+      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_b, r.coordinate[2], d)));
   return h;
 }
 

@@ -12,9 +12,9 @@
 
 namespace mcrt {
 
-/// Plane normals, edge axes and their offsets in separate arrays, in runs of whole blocks of k_block
-/// slots, padded with quads that never hit (a parallel-ray threshold of +infinity), so the
-/// search runs k_block quads at a time with no remainder loop. A run is either quads added one
+/// Plane normals, edge axes and their offsets in separate arrays, in runs of whole blocks of
+/// k_block slots, padded with quads that never hit (a parallel-ray threshold of +infinity), so
+/// the search runs k_block quads at a time with no remainder loop. A run is either quads added one
 /// by one, or a group (add_group) behind its bounding box, which a ray that misses the box
 /// skips. Each quad's t, a and b are computed with the same operations, in the same order, as
 /// intersect_distance (quad.hpp), and the quads a ray is tested against are tested in index
