@@ -71,10 +71,14 @@ namespace {
 // How many coordinates of v are not zero.
 int nonzero_coordinates(const Vec3& v) { return (v.x != 0.0) + (v.y != 0.0) + (v.z != 0.0); }
 
-// The `terms` coordinates whose products make v's dot products: those of v that are not
-// zero, then (for two terms and a v with one) a coordinate that is, which only adds a
-// product by zero.
-void sum_coordinates(const Vec3& v, int terms, std::int32_t coordinate[2]) {
+// The `terms` coordinates whose products make v's dot products. All three: 0, 1, 2, glm::dot's
+// own order. Fewer: those of v that are not zero, then (for two terms and a v with one) a
+// coordinate that is, which only adds a product by zero.
+void sum_coordinates(const Vec3& v, int terms, std::int32_t coordinate[3]) {
+  if (terms == 3) {
+    for (int c = 0; c < 3; ++c) coordinate[c] = c;
+    return;
+  }
   int n = 0;
   for (int c = 0; c < 3; ++c)
     if (v[c] != 0.0) coordinate[n++] = c;
@@ -99,9 +103,8 @@ void QuadSet::put(std::size_t slot, const Quad& q) {
   const Vec3* vectors[3] = {&q.plane_normal(), &q.axis_a(), &q.axis_b()};
   int most = 0;
   for (const Vec3* v : vectors) most = std::max(most, nonzero_coordinates(*v));
-  r.terms = most <= 2 ? most : 0;
-  if (r.terms > 0)
-    for (int v = 0; v < 3; ++v) sum_coordinates(*vectors[v], r.terms, r.coordinate[v]);
+  r.terms = most;
+  for (int v = 0; v < 3; ++v) sum_coordinates(*vectors[v], r.terms, r.coordinate[v]);
 }
 
 // intersect_distance for every quad, chosen between with selects rather than early exits (a
@@ -172,20 +175,21 @@ struct QuadLanes {
   return h;
 }
 
-// x.v over the `Terms` coordinates of v that `coordinate` names: glm::dot's sum without its
-// products by zero. The value is the same (a sum of two terms does not depend on their
-// order); only a zero sum may differ in its sign.
+// x.v over the `Terms` coordinates of v that `coordinate` names, summed in glm::dot's order:
+// with all three, glm::dot itself; with fewer, its sum without the products by zero. That
+// value is the same (a sum of two terms does not depend on their order); only a zero sum may
+// differ in its sign.
 template <int Terms>
 [[gnu::target("avx2")]] inline __m256d dot_of_terms(const double v[3],
-                                                   const std::int32_t coordinate[2],
+                                                   const std::int32_t coordinate[3],
                                                    const __m256d x[3]) {
   __m256d sum = _mm256_mul_pd(_mm256_set1_pd(v[coordinate[0]]), x[coordinate[0]]);
-  if constexpr (Terms == 2)
-    sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(v[coordinate[1]]), x[coordinate[1]]));
+  for (int k = 1; k < Terms; ++k)
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(v[coordinate[k]]), x[coordinate[k]]));
   return sum;
 }
 
-// plane_hits for one quad in every lane, summing only the products of its record's chosen
+// plane_hits for one quad in every lane, summing the products of its record's chosen
 // coordinates (QuadSet::Record::terms).
 template <int Terms, class Record>
 [[gnu::target("avx2")]] inline PlaneHits plane_hits_of_terms(const Record& r, const __m256d o[3],
@@ -321,21 +325,10 @@ template <int Terms, class Record>
     for (std::size_t i = run.begin; i < run.begin + run.count; ++i) {
       const Record& r = records_[i];
       PlaneHits h;
-      if (r.terms == 1) {
-        h = plane_hits_of_terms<1>(r, origin, direction);
-      } else if (r.terms == 2) {
-        h = plane_hits_of_terms<2>(r, origin, direction);
-      } else {
-        QuadLanes q;
-        for (int axis = 0; axis < 3; ++axis) {
-          q.normal[axis] = _mm256_set1_pd(r.normal[axis]);
-          q.axis_a[axis] = _mm256_set1_pd(r.axis_a[axis]);
-          q.axis_b[axis] = _mm256_set1_pd(r.axis_b[axis]);
-        }
-        q.plane_offset = _mm256_set1_pd(r.plane_offset);
-        q.offset_a = _mm256_set1_pd(r.offset_a);
-        q.offset_b = _mm256_set1_pd(r.offset_b);
-        h = plane_hits(q, origin, direction);
+      switch (r.terms) {
+        case 1: h = plane_hits_of_terms<1>(r, origin, direction); break;
+        case 2: h = plane_hits_of_terms<2>(r, origin, direction); break;
+        default: h = plane_hits_of_terms<3>(r, origin, direction);
       }
       keep_nearer(h, _mm256_set1_pd(r.parallel_threshold), _mm256_set1_pd(r.index), t_low,
                   best_t, best_index);

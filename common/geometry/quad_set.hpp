@@ -97,10 +97,10 @@ class QuadSet {
     double plane_offset, offset_a, offset_b, parallel_threshold, index;
     /// 1 when each of n, axis_a and axis_b has one coordinate that is not zero (a quad in a
     /// coordinate plane with its edges along the axes: a box's walls), 2 when each has at most
-    /// two (a box turned about an axis: its sides), 0 otherwise. `coordinate` then gives, for
-    /// n, axis_a and axis_b, the coordinates whose products the search sums.
-    std::int32_t terms = 0;
-    std::int32_t coordinate[3][2]{};
+    /// two (a box turned about an axis: its sides), 3 otherwise. `coordinate` gives, for n,
+    /// axis_a and axis_b, the coordinates whose products the search sums.
+    std::int32_t terms = 3;
+    std::int32_t coordinate[3][3]{};
   };
   std::vector<Record> records_;
 };
