@@ -22,11 +22,12 @@ namespace {
 struct Cleanup {
   std::recursive_mutex mutex;
   RunFolder* folder = nullptr;
+  std::string written_to;  // --out of a committed run no longer registered (a signal may follow)
   std::vector<pid_t> children;
 };
 
 Cleanup& cleanup() {
-  static Cleanup state;  // never destroyed before the process ends: the thread may use it
+  static Cleanup& state = *new Cleanup;  // never destroyed: the thread may use it during exit
   return state;
 }
 
@@ -52,11 +53,13 @@ sigset_t interrupt_signals() {
     ::waitpid(child, nullptr, 0);
   }
   std::string where = "nothing was written";
-  if (state.folder && state.folder->committed()) {
-    where = fmt::format("the run was already written to '{}'", state.folder->out().string());
-  } else if (state.folder) {
+  if (state.folder && !state.folder->committed()) {
     where = fmt::format("nothing written to '{}'", state.folder->out().string());
     state.folder->discard();
+  } else if (state.folder) {
+    where = fmt::format("the run was already written to '{}'", state.folder->out().string());
+  } else if (!state.written_to.empty()) {
+    where = fmt::format("the run was already written to '{}'", state.written_to);
   }
   const std::string line = fmt::format("{}: interrupted by {}; {}\n", program,
                                        signal == SIGINT ? "SIGINT" : "SIGTERM", where);
@@ -82,7 +85,10 @@ void without_interruption(const std::function<void()>& action) {
 
 void discard_on_interrupt(RunFolder* folder) {
   const std::lock_guard lock(cleanup().mutex);
-  cleanup().folder = folder;
+  Cleanup& state = cleanup();
+  // A committed run stays reported as written: the signal may come between here and exit.
+  if (state.folder && state.folder->committed()) state.written_to = state.folder->out().string();
+  state.folder = folder;
 }
 
 void stop_on_interrupt(pid_t child) {

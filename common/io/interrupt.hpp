@@ -22,7 +22,9 @@ void watch_interrupts(const std::string& program);
 /// Runs `action` while no interruption is handled (the cleanup waits until it is done).
 void without_interruption(const std::function<void()>& action);
 
-/// The run folder an interruption discards (nullptr: none).
+/// The run folder an interruption discards (nullptr: none). Replacing a committed folder
+/// keeps its --out, so that a signal after the swap, up to the process's exit, still says the
+/// run was written there.
 void discard_on_interrupt(RunFolder* folder);
 
 /// A child process an interruption stops (SIGKILL, then waited for). Call both under
