@@ -7,8 +7,8 @@
 #include "io/interrupt.hpp"
 
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <unistd.h>
@@ -16,36 +16,35 @@
 #include <gtest/gtest.h>
 
 #include "io/run_folder.hpp"
+#include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;
+using namespace mcrt::testing;  // support/temp_files.hpp
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mcrt_interrupt_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+fs::path fresh_dir(const std::string& name) { return fresh_temp_dir("interrupt_test", name); }
+
+// The summary.json of a chapter's run with this seed: it tells two runs apart.
+std::string summary_of(int seed) {
+  return R"({"chapter": "ch01_ray_tracing", "seed": )" + std::to_string(seed) + "}";
 }
 
-void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string read(const fs::path& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+void finished_run(const fs::path& out, int seed) {
+  mcrt::RunFolder folder(out);
+  write_text(folder.staging() / "summary.json", summary_of(seed));
+  folder.commit();
 }
 
-// A run of a chapter into `out` whose summary names `seed`; `until` says how far it gets
-// before `signal` is sent to the whole process (the waiting thread receives it).
+// A run into `out` as ChapterApp::run makes it, stopped by `signal` (sent to the whole
+// process, so the waiting thread receives it) when it has got as far as `until`.
 enum class Until { Writing, Committed, Forgotten };
 
 [[noreturn]] void interrupted_run(const fs::path& out, int seed, Until until, int signal) {
   mcrt::watch_interrupts("interrupt_test");
   mcrt::RunFolder folder(out);
   mcrt::discard_on_interrupt(&folder);
-  write(folder.staging() / "summary.json",
-        R"({"chapter": "ch01_ray_tracing", "seed": )" + std::to_string(seed) + "}");
+  write_text(folder.staging() / "summary.json", summary_of(seed));
   if (until != Until::Writing) folder.commit();
   if (until == Until::Forgotten) mcrt::discard_on_interrupt(nullptr);  // as before main returns
   ::kill(::getpid(), signal);
@@ -53,53 +52,35 @@ enum class Until { Writing, Committed, Forgotten };
   std::_Exit(0);
 }
 
-void finished_run(const fs::path& out, int seed) {
-  mcrt::RunFolder folder(out);
-  write(folder.staging() / "summary.json",
-        R"({"chapter": "ch01_ray_tracing", "seed": )" + std::to_string(seed) + "}");
-  folder.commit();
-}
-
-std::string seed_line(int seed) {
-  return R"({"chapter": "ch01_ray_tracing", "seed": )" + std::to_string(seed) + "}";
-}
-
-int entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n;
-  return n;
+// Sends `signal` to a run that has got as far as `until`, with a previous run (seed 1) in
+// --out; the run's line must match `line`, and --out must hold the run of `seed_left`.
+void expect_interrupted(const std::string& name, Until until, int signal,
+                        const std::string& line, int seed_left) {
+  const fs::path dir = fresh_dir(name);
+  finished_run(dir / "out", 1);
+  EXPECT_EXIT(interrupted_run(dir / "out", 2, until, signal),
+              ::testing::ExitedWithCode(128 + signal), line);
+  EXPECT_EQ(read_text(dir / "out" / "summary.json"), summary_of(seed_left));
+  EXPECT_EQ(entries(dir), 1);  // --out alone: no staging folder, no previous run left beside it
 }
 
 TEST(InterruptTest, ASignalWhileWritingKeepsThePreviousRunAndRemovesTheStagingFolder) {
-  const fs::path dir = fresh_dir("writing");
-  finished_run(dir / "out", 1);
-  EXPECT_EXIT(interrupted_run(dir / "out", 2, Until::Writing, SIGTERM),
-              ::testing::ExitedWithCode(128 + SIGTERM),
-              "interrupt_test: interrupted by SIGTERM; nothing written to '.*out'");
-  EXPECT_EQ(read(dir / "out" / "summary.json"), seed_line(1));
-  EXPECT_EQ(entries(dir), 1);  // no staging folder left beside --out
+  expect_interrupted("writing", Until::Writing, SIGTERM,
+                     "interrupt_test: interrupted by SIGTERM; nothing written to '.*out'", 1);
 }
 
 TEST(InterruptTest, ASignalAfterTheSwapSaysTheRunWasWritten) {
-  const fs::path dir = fresh_dir("committed");
-  finished_run(dir / "out", 1);
-  EXPECT_EXIT(interrupted_run(dir / "out", 2, Until::Committed, SIGINT),
-              ::testing::ExitedWithCode(128 + SIGINT),
-              "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'");
-  EXPECT_EQ(read(dir / "out" / "summary.json"), seed_line(2));
-  EXPECT_EQ(entries(dir), 1);
+  expect_interrupted("committed", Until::Committed, SIGINT,
+                     "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'",
+                     2);
 }
 
 // The folder is forgotten just before main returns; a signal may still come before the
 // process ends, and it must not claim that nothing was written.
 TEST(InterruptTest, ASignalAfterTheFolderIsForgottenStillSaysTheRunWasWritten) {
-  const fs::path dir = fresh_dir("forgotten");
-  finished_run(dir / "out", 1);
-  EXPECT_EXIT(interrupted_run(dir / "out", 2, Until::Forgotten, SIGINT),
-              ::testing::ExitedWithCode(128 + SIGINT),
-              "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'");
-  EXPECT_EQ(read(dir / "out" / "summary.json"), seed_line(2));
-  EXPECT_EQ(entries(dir), 1);
+  expect_interrupted("forgotten", Until::Forgotten, SIGINT,
+                     "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'",
+                     2);
 }
 
 }  // namespace

@@ -4,31 +4,18 @@
 #include "io/output.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include "support/temp_files.hpp"
+
 namespace fs = std::filesystem;
+using namespace mcrt::testing;  // support/temp_files.hpp
 
 namespace {
 
-// A fresh, empty folder for one test.
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mcrt_output_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-int entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n;
-  return n;
-}
+fs::path fresh_dir(const std::string& name) { return fresh_temp_dir("output_test", name); }
 
 // The message of the IoError `write` throws, or "" if it throws none.
 template <class Write>
@@ -45,9 +32,7 @@ TEST(OutputTest, WritesTheWholeFileAndLeavesNoTemporary) {
   const fs::path dir = fresh_dir("whole");
   const std::string bytes(100000, 'x');
   mcrt::write_file_atomic(dir / "a.txt", bytes);
-  std::ifstream file(dir / "a.txt", std::ios::binary);
-  const std::string read((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(read, bytes);
+  EXPECT_EQ(read_text(dir / "a.txt"), bytes);
   EXPECT_EQ(entries(dir), 1);
 }
 
@@ -55,7 +40,7 @@ TEST(OutputTest, AFailedRenameGivesItsRealReasonAndRemovesTheTemporary) {
   const fs::path dir = fresh_dir("rename");
   fs::create_directories(dir / "target" / "inside");  // a non-empty folder cannot be replaced
   const fs::path from = dir / ".temporary";
-  std::ofstream(from) << "new\n";
+  write_text(from, "new\n");
   const std::string message = io_error([&] { mcrt::commit_file(from, dir / "target"); });
   EXPECT_NE(message.find((dir / "target").string()), std::string::npos) << message;
   EXPECT_EQ(message.find("Success"), std::string::npos) << message;

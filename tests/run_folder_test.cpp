@@ -5,62 +5,40 @@
 #include "io/run_folder.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <string>
-
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "io/cli.hpp"
 #include "io/output.hpp"
 #include "support/exception_message.hpp"
+#include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;
+using namespace mcrt::testing;  // support/: message_of, fresh_temp_dir, read_text, ...
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mcrt_run_folder_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string read(const fs::path& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
-
-int entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n;
-  return n;
-}
+fs::path fresh_dir(const std::string& name) { return fresh_temp_dir("run_folder_test", name); }
 
 // A finished run of a chapter into `out`, with one file `name` holding `text`.
 void finished_run(const fs::path& out, const std::string& name, const std::string& text) {
   mcrt::RunFolder folder(out);
-  write(folder.staging() / "summary.json", R"({"chapter": "ch01_ray_tracing", "seed": 1})");
-  write(folder.staging() / name, text);
+  write_text(folder.staging() / "summary.json", R"({"chapter": "ch01_ray_tracing", "seed": 1})");
+  write_text(folder.staging() / name, text);
   folder.commit();
 }
-
-using mcrt::testing::message_of;  // support/exception_message.hpp
 
 TEST(RunFolderTest, AFirstRunAppearsWholeAtCommitAndNotBefore) {
   const fs::path dir = fresh_dir("first");
   const fs::path out = dir / "parent" / "out";
   mcrt::RunFolder folder(out);
   EXPECT_EQ(folder.staging().parent_path(), fs::canonical(dir / "parent"));
-  write(folder.staging() / "a.txt", "a");
+  write_text(folder.staging() / "a.txt", "a");
   EXPECT_FALSE(fs::exists(out));
   folder.commit();
-  EXPECT_EQ(read(out / "a.txt"), "a");
+  EXPECT_EQ(read_text(out / "a.txt"), "a");
   EXPECT_EQ(entries(dir / "parent"), 1);  // the staging folder is gone
 }
 
@@ -70,7 +48,7 @@ TEST(RunFolderTest, ASecondRunReplacesTheFirstWhole) {
   finished_run(out, "old.txt", "old");
   finished_run(out, "new.txt", "new");
   EXPECT_FALSE(fs::exists(out / "old.txt"));  // no mix of two runs
-  EXPECT_EQ(read(out / "new.txt"), "new");
+  EXPECT_EQ(read_text(out / "new.txt"), "new");
   EXPECT_EQ(entries(dir), 1);  // the previous run is removed
 }
 
@@ -80,9 +58,9 @@ TEST(RunFolderTest, AFailedRunLeavesThePreviousOneAndNoStagingFolder) {
   finished_run(out, "old.txt", "old");
   {
     mcrt::RunFolder folder(out);
-    write(folder.staging() / "new.txt", "new");
+    write_text(folder.staging() / "new.txt", "new");
   }  // destroyed without commit: the run failed
-  EXPECT_EQ(read(out / "old.txt"), "old");
+  EXPECT_EQ(read_text(out / "old.txt"), "old");
   EXPECT_FALSE(fs::exists(out / "new.txt"));
   EXPECT_EQ(entries(dir), 1);
 }
@@ -97,21 +75,21 @@ TEST(RunFolderTest, AnEmptyFolderIsAccepted) {
   const fs::path dir = fresh_dir("empty");
   fs::create_directory(dir / "out");
   finished_run(dir / "out", "a.txt", "a");
-  EXPECT_EQ(read(dir / "out" / "a.txt"), "a");
+  EXPECT_EQ(read_text(dir / "out" / "a.txt"), "a");
 }
 
 TEST(RunFolderTest, AFolderThatIsNotAChaptersOutputIsRefusedAndKept) {
   const fs::path dir = fresh_dir("foreign");
   fs::create_directory(dir / "out");
-  write(dir / "out" / "thesis.tex", "precious");
+  write_text(dir / "out" / "thesis.tex", "precious");
   const std::string message =
       message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "out"); });
   EXPECT_NE(message.find("--out"), std::string::npos) << message;
   EXPECT_NE(message.find((dir / "out").string()), std::string::npos) << message;
-  EXPECT_EQ(read(dir / "out" / "thesis.tex"), "precious");
+  EXPECT_EQ(read_text(dir / "out" / "thesis.tex"), "precious");
   EXPECT_EQ(entries(dir), 1);  // no staging folder made
   // A summary.json of something else does not make it ours either.
-  write(dir / "out" / "summary.json", R"({"chapter": "the methods chapter"})");
+  write_text(dir / "out" / "summary.json", R"({"chapter": "the methods chapter"})");
   EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "out"); }), "");
 }
 
@@ -127,7 +105,7 @@ TEST(RunFolderTest, ADanglingLinkAndAFileAreNamedAsSuch) {
   const std::string dangling =
       message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "link"); });
   EXPECT_NE(dangling.find("dangling"), std::string::npos) << dangling;
-  write(dir / "file", "x");
+  write_text(dir / "file", "x");
   const std::string file = message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "file"); });
   EXPECT_NE(file.find("is a file"), std::string::npos) << file;
   EXPECT_EQ(entries(dir), 2);
@@ -139,7 +117,7 @@ TEST(RunFolderTest, ALinkToAPreviousRunIsFollowed) {
   fs::create_directory_symlink(dir / "real", dir / "out");
   finished_run(dir / "out", "new.txt", "new");
   EXPECT_TRUE(fs::is_symlink(dir / "out"));
-  EXPECT_EQ(read(dir / "real" / "new.txt"), "new");
+  EXPECT_EQ(read_text(dir / "real" / "new.txt"), "new");
   EXPECT_FALSE(fs::exists(dir / "real" / "old.txt"));
 }
 

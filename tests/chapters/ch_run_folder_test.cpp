@@ -22,12 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n;
-  return n;
-}
-
 TEST(RunFolderChapterTest, AnInterruptedSecondRunLeavesTheFirstWhole) {
   const fs::path dir = fresh_dir("run_folder_interrupted");
   const fs::path out = dir / "out";

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "support/temp_files.hpp"
+
 namespace mcrt::testing {
 
 struct ProgramRun {
@@ -21,13 +23,6 @@ struct ProgramRun {
   std::string out;  // stdout
   std::string err;  // stderr
 };
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream s;
-  s << file.rdbuf();
-  return s.str();
-}
 
 /// Runs `bin/<program> <arguments>` (arguments as one shell-quoted string).
 inline ProgramRun run_program(const std::string& program, const std::string& arguments) {

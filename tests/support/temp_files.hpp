@@ -1,0 +1,43 @@
+#pragma once
+// Folders and files for the tests that write them: a fresh folder per test, whole files read
+// and written, a folder's entries counted.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+namespace mcrt::testing {
+
+/// An empty folder `name` under the system's temporary folder, in one of `suite`'s own
+/// (mcrt_<suite>_<pid>), emptied if a previous test left it.
+inline std::filesystem::path fresh_temp_dir(const std::string& suite, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("mcrt_" + suite + "_" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// The whole file, bytes as they are ("" if it cannot be read).
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream s;
+  s << file.rdbuf();
+  return s.str();
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+/// How many files and folders `dir` holds (not counting theirs).
+inline int entries(const std::filesystem::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++n;
+  return n;
+}
+
+}  // namespace mcrt::testing
