@@ -4,18 +4,37 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include <unistd.h>
 
 namespace mcrt::testing {
 
+/// The suites' folders of this process, removed when it exits normally (a death test's child
+/// leaves by _exit, so the folders its parent still reads stay).
+class TempSuiteDirs {
+ public:
+  void add(const std::filesystem::path& dir) { dirs_.insert(dir); }
+  ~TempSuiteDirs() {
+    std::error_code ignored;  // a folder already gone is fine
+    for (const std::filesystem::path& dir : dirs_) std::filesystem::remove_all(dir, ignored);
+  }
+
+ private:
+  std::set<std::filesystem::path> dirs_;
+};
+inline TempSuiteDirs temp_suite_dirs;
+
 /// An empty folder `name` under the system's temporary folder, in one of `suite`'s own
-/// (mcrt_<suite>_<pid>), emptied if a previous test left it.
+/// (mcrt_<suite>_<pid>, removed at exit), emptied if a previous test left it.
 inline std::filesystem::path fresh_temp_dir(const std::string& suite, const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("mcrt_" + suite + "_" + std::to_string(::getpid())) / name;
+  const std::filesystem::path suite_dir =
+      std::filesystem::temp_directory_path() / ("mcrt_" + suite + "_" + std::to_string(::getpid()));
+  temp_suite_dirs.add(suite_dir);
+  const std::filesystem::path dir = suite_dir / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
