@@ -8,17 +8,14 @@
 
 #include "io/image_file.hpp"
 #include "io/output.hpp"
+#include "support/temp_files.hpp"
 
 using namespace mcrt;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mcrt_image_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return mcrt::testing::temp_suite_dir("image_test") / name; }
 
 // Every channel counts once: (r + g + b) / 3 per pixel, then the mean over pixels. Distinct
 // channels, so a channel counted twice or left out changes the value (grey images cannot).

@@ -4,27 +4,23 @@
 #include "io/plot.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
-
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "io/image_file.hpp"
 #include "io/output.hpp"
 #include "render/image.hpp"
+#include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 fs::path file_with(const std::string& name, const std::string& bytes) {
-  const fs::path dir = fs::temp_directory_path() / ("mcrt_plot_file_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / name, std::ios::binary) << bytes;
-  return dir / name;
+  const fs::path path = mcrt::testing::temp_suite_dir("plot_file_test") / name;
+  mcrt::testing::write_text(path, bytes);
+  return path;
 }
 
 TEST(PlotFileTest, AWholePngIsAcceptedAndATruncatedOneRejected) {
@@ -50,10 +46,8 @@ TEST(PlotFileTest, AMissingFileIsRejected) {
 
 TEST(PlotFileTest, GnuplotDrawsInAFolderWhateverItsName) {
   if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
-  const fs::path dir = fs::temp_directory_path() /
-                       ("mcrt_plot_file_test_" + std::to_string(::getpid())) / "-it's a \"plot\" é";
-  fs::create_directories(dir);
-  std::ofstream(dir / "data.csv") << "x,y\n1,1\n2,4\n";
+  const fs::path dir = mcrt::testing::fresh_temp_dir("plot_file_test", "-it's a \"plot\" é");
+  mcrt::testing::write_text(dir / "data.csv", "x,y\n1,1\n2,4\n");
   mcrt::write_plot(dir, {"square", "title", "x", "y", false, false, "",
                          "plot 'data.csv' using \"x\":\"y\" with lines"});
   EXPECT_EQ(mcrt::image_file_problem(dir / "square.png"), "");
@@ -62,8 +56,7 @@ TEST(PlotFileTest, GnuplotDrawsInAFolderWhateverItsName) {
 
 TEST(PlotFileTest, AGnuplotErrorIsAnIoErrorAndLeavesNoImage) {
   if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
-  const fs::path dir = file_with("unused", "").parent_path() / "error";
-  fs::create_directories(dir);
+  const fs::path dir = mcrt::testing::fresh_temp_dir("plot_file_test", "error");
   std::string message;
   try {
     mcrt::write_plot(dir, {"broken", "title", "x", "y", false, false, "", "plot no_such_variable"});
@@ -77,16 +70,14 @@ TEST(PlotFileTest, AGnuplotErrorIsAnIoErrorAndLeavesNoImage) {
 
 TEST(PlotFileTest, ALogAxisWithNoPositiveValueIsDrawnLinear) {
   if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
-  const fs::path dir = file_with("unused", "").parent_path() / "zeros";
-  fs::create_directories(dir);
-  std::ofstream(dir / "data.csv") << "n,rmse\n1,0\n4,0\n";
+  const fs::path dir = mcrt::testing::fresh_temp_dir("plot_file_test", "zeros");
+  mcrt::testing::write_text(dir / "data.csv", "n,rmse\n1,0\n4,0\n");
   mcrt::Plot plot{"zeros", "title", "n", "rmse", true, true, "",
                   "plot 'data.csv' using \"n\":\"rmse\" with lines"};
   plot.x_values = {1.0, 4.0};
   plot.y_values = {0.0, 0.0};
   mcrt::write_plot(dir, plot);  // would throw on gnuplot's "all points y value undefined"
-  std::ifstream script(dir / "zeros.gp");
-  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  const std::string text = mcrt::testing::read_text(dir / "zeros.gp");
   EXPECT_NE(text.find("set logscale x"), std::string::npos);
   EXPECT_EQ(text.find("set logscale y"), std::string::npos);
   EXPECT_EQ(mcrt::image_file_problem(dir / "zeros.png"), "");

@@ -28,13 +28,19 @@ class TempSuiteDirs {
 };
 inline TempSuiteDirs temp_suite_dirs;
 
-/// An empty folder `name` under the system's temporary folder, in one of `suite`'s own
-/// (mcrt_<suite>_<pid>, removed at exit), emptied if a previous test left it.
-inline std::filesystem::path fresh_temp_dir(const std::string& suite, const std::string& name) {
-  const std::filesystem::path suite_dir =
+/// `suite`'s own folder under the system's temporary folder (mcrt_<suite>_<pid>), created if
+/// need be and removed when the process exits.
+inline std::filesystem::path temp_suite_dir(const std::string& suite) {
+  const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("mcrt_" + suite + "_" + std::to_string(::getpid()));
-  temp_suite_dirs.add(suite_dir);
-  const std::filesystem::path dir = suite_dir / name;
+  temp_suite_dirs.add(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// An empty folder `name` in `suite`'s own, emptied if a previous test left it.
+inline std::filesystem::path fresh_temp_dir(const std::string& suite, const std::string& name) {
+  const std::filesystem::path dir = temp_suite_dir(suite) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
