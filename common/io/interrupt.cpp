@@ -22,13 +22,19 @@ namespace {
 struct Cleanup {
   std::recursive_mutex mutex;
   RunFolder* folder = nullptr;
-  std::string written_to;  // --out of a committed run no longer registered (a signal may follow)
+  std::string written_to;  // --out of a committed run, kept after its folder is unregistered
   std::vector<pid_t> children;
 };
 
 Cleanup& cleanup() {
   static Cleanup& state = *new Cleanup;  // never destroyed: the thread may use it during exit
   return state;
+}
+
+// A committed run's --out is kept once the run is known to be written, whatever happens to
+// its RunFolder after (ChapterApp::run unregisters it before main returns).
+void remember_if_written(Cleanup& state) {
+  if (state.folder && state.folder->committed()) state.written_to = state.folder->out().string();
 }
 
 sigset_t interrupt_signals() {
@@ -52,14 +58,13 @@ sigset_t interrupt_signals() {
     ::kill(child, SIGKILL);
     ::waitpid(child, nullptr, 0);
   }
+  remember_if_written(state);
   std::string where = "nothing was written";
-  if (state.folder && !state.folder->committed()) {
+  if (!state.written_to.empty()) {
+    where = fmt::format("the run was already written to '{}'", state.written_to);
+  } else if (state.folder) {
     where = fmt::format("nothing written to '{}'", state.folder->out().string());
     state.folder->discard();
-  } else if (state.folder) {
-    where = fmt::format("the run was already written to '{}'", state.folder->out().string());
-  } else if (!state.written_to.empty()) {
-    where = fmt::format("the run was already written to '{}'", state.written_to);
   }
   const std::string line = fmt::format("{}: interrupted by {}; {}\n", program,
                                        signal == SIGINT ? "SIGINT" : "SIGTERM", where);
@@ -86,8 +91,7 @@ void without_interruption(const std::function<void()>& action) {
 void discard_on_interrupt(RunFolder* folder) {
   const std::lock_guard lock(cleanup().mutex);
   Cleanup& state = cleanup();
-  // A committed run stays reported as written: the signal may come between here and exit.
-  if (state.folder && state.folder->committed()) state.written_to = state.folder->out().string();
+  remember_if_written(state);  // the signal may come between here and the process's exit
   state.folder = folder;
 }
 
