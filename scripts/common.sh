@@ -55,6 +55,22 @@ configure_and_build() {
   fi
 }
 
+# describe_processor: one line naming the processor and its vector extensions, since the
+# benchmarks' rates depend on it (the same binary differs by tens of percent between the hosts
+# this project has run on).
+describe_processor() {
+  local model family number flags extensions=()
+  model="$(grep -m1 '^model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')"
+  flags=" $(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null | cut -d: -f2-) "
+  for flag in avx2 fma avx512f; do
+    [[ "$flags" == *" $flag "* ]] && extensions+=("$flag")
+  done
+  family="$(grep -m1 '^cpu family' /proc/cpuinfo 2>/dev/null | cut -d: -f2 | tr -d ' ')"
+  number="$(grep -m1 '^model[[:space:]]*:' /proc/cpuinfo 2>/dev/null | cut -d: -f2 | tr -d ' ')"
+  echo "== Processor: ${model:-unknown} (family ${family:-?}, model ${number:-?}), $(nproc) cores;" \
+    "${extensions[*]:-no AVX2}"
+}
+
 # The unit-test executables (tests/*_test.cpp): all a portability build needs to compile.
 unit_test_targets() {
   local source
