@@ -91,6 +91,12 @@ class UsageTest(unittest.TestCase):
     def test_no_revision(self):
         self.check_refused(self.run_script(), "revision")
 
+    def test_an_option_it_does_not_have(self):
+        self.check_refused(self.run_script("--rounds", "5"), "unknown option '--rounds'")
+
+    def test_more_than_two_arguments(self):
+        self.check_refused(self.run_script("HEAD", "BM_A", "BM_B"), "at most two arguments")
+
     def test_a_revision_that_does_not_exist(self):
         self.check_refused(self.run_script("no-such-revision-anywhere"), "'no-such-revision-anywhere'")
 
