@@ -105,8 +105,9 @@ TaskResult check_pdf_integral(const Pdf& pdf, const Binning<Point>& binning, con
   const bool ok = std::abs(total - 1.0) < 1e-6;
   std::string message = fmt::format("{} integrates to {:.6f} over its domain", name, total);
   if (!ok) {
-    message += "\n" + diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total,
-                                            near(total, 2.0, 0.01) ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)" : ""));
+    message += '\n';  // appended alone: "\n" + a temporary trips a false -Wrestrict in g++ 12
+    message += diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total,
+                                     near(total, 2.0, 0.01) ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)" : ""));
   }
   return {ok, message};
 }
