@@ -441,7 +441,9 @@ TEST(QuadSetDifferentialTest, GroupsBehindBoxesGiveThePlainLoopsAnswer) {
     std::vector<Quad> quads;
     std::vector<bool> grouped;
     QuadSet set;
-    const int parts = 1 + static_cast<int>(rng.uniform_below(5));
+    // Up to nine parts, so that many sets hold more than four groups: the one-ray search tests
+    // the groups' boxes four at a time.
+    const int parts = 1 + static_cast<int>(rng.uniform_below(9));
     for (int part = 0; part < parts; ++part) {
       if (rng.uniform_below(3) == 0) {
         quads.push_back(random_quad(rng, quads));

@@ -50,6 +50,16 @@ void QuadSet::add_group(std::span<const Quad> quads) {
     run.low[axis] = low[axis] - pad;
     run.high[axis] = high[axis] + pad;
   }
+  run.box = groups_++;
+  if (run.box % k_block == 0)
+    for (int axis = 0; axis < 3; ++axis) {
+      box_low_[axis].resize(box_low_[axis].size() + k_block, 0.0);
+      box_high_[axis].resize(box_high_[axis].size() + k_block, 0.0);
+    }
+  for (int axis = 0; axis < 3; ++axis) {
+    box_low_[axis][run.box] = run.low[axis];
+    box_high_[axis][run.box] = run.high[axis];
+  }
   runs_.push_back(run);
 }
 
@@ -250,12 +260,35 @@ template <int Terms, class Record>
   return _mm256_movemask_pd(_mm256_cmp_pd(enter, leave, _CMP_LE_OQ)) != 0;
 }
 
+// Which of four boxes (one per lane: lows and highs coordinate by coordinate) one ray meets
+// within (t_min, t_max): bit k for the box in lane k. Lane by lane, the same operations as
+// any_lane_meets_box with that box and the ray in every lane, so the same answer.
+[[gnu::target("avx2")]] inline unsigned boxes_met(const double* const low[3],
+                                                 const double* const high[3],
+                                                 const __m256d origin[3],
+                                                 const __m256d inverse_d[3], __m256d t_min,
+                                                 __m256d t_max) {
+  __m256d enter = t_min, leave = t_max;
+  for (int axis = 0; axis < 3; ++axis) {
+    const __m256d t_low =
+        _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(low[axis]), origin[axis]), inverse_d[axis]);
+    const __m256d t_high =
+        _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(high[axis]), origin[axis]), inverse_d[axis]);
+    enter = _mm256_max_pd(_mm256_min_pd(t_low, t_high), enter);
+    leave = _mm256_min_pd(_mm256_max_pd(t_low, t_high), leave);
+  }
+  return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(enter, leave, _CMP_LE_OQ)));
+}
+
 }  // namespace
 
 // The loop of nearest_portable on four quads per instruction, each lane keeping its own
 // nearest t and index; the lanes are merged at the end (nearest t, then lowest index). Only
 // AVX2 is enabled, not FMA: a fused multiply-add would round differently from the plain loop.
-// A group is skipped when the ray misses its box before the nearest hit so far.
+// A group is skipped when the ray misses its box before the nearest hit so far. The boxes are
+// tested four at a time, when the first group of each four comes up: against the nearest hit
+// as it was then, which is no nearer than when the later three come up, so no box that the
+// ray meets before the nearest hit is missed (some it meets only beyond are tested in vain).
 [[gnu::target("avx2")]] QuadSet::Nearest QuadSet::nearest_avx2(const Ray& ray,
                                                                Interval range) const {
   const __m256d origin[3] = {_mm256_set1_pd(ray.origin.x), _mm256_set1_pd(ray.origin.y),
@@ -269,10 +302,17 @@ template <int Terms, class Record>
                                 _mm256_div_pd(one, direction[2])};
   __m256d best_t = _mm256_set1_pd(range.max);
   __m256d best_index = _mm256_set1_pd(-1.0);  // indices as doubles: exact below 2^53
+  unsigned met = 0;  // of the four boxes last tested, those the ray meets (bit box % k_block)
   for (const Run& run : runs_) {
-    if (run.bounded && !any_lane_meets_box(run.low, run.high, origin, inverse_d, t_min,
-                                           avx2::all_lanes_min(best_t)))
-      continue;
+    if (run.bounded) {
+      if (run.box % k_block == 0) {
+        const std::size_t b = run.box;
+        const double* const low[3] = {&box_low_[0][b], &box_low_[1][b], &box_low_[2][b]};
+        const double* const high[3] = {&box_high_[0][b], &box_high_[1][b], &box_high_[2][b]};
+        met = boxes_met(low, high, origin, inverse_d, t_min, avx2::all_lanes_min(best_t));
+      }
+      if ((met >> (run.box % k_block) & 1u) == 0) continue;
+    }
     for (std::size_t i = run.begin; i < run.end; i += k_block) {
       QuadLanes q;
       for (int axis = 0; axis < 3; ++axis) {

@@ -76,12 +76,17 @@ class QuadSet {
     std::size_t begin, end, first, count;
     bool bounded;
     double low[3], high[3];  ///< the group's box, padded: every point of its quads is inside
+    std::size_t box = 0;     ///< a group's number among the groups: its box's slot below
   };
   void add_block();
   void put(std::size_t slot, const Quad& q);
 
   std::vector<Run> runs_;
   std::size_t size_ = 0;
+  /// The groups' boxes again, coordinate by coordinate, k_block to a block (the last block
+  /// padded with zeros, never read): the one-ray search tests four boxes per instruction.
+  std::vector<double> box_low_[3], box_high_[3];
+  std::size_t groups_ = 0;
   // Per slot, coordinate by coordinate (0, 1, 2: x, y, z): n = cross(u, v) (not normalised)
   // and the axes giving the edge coordinates; then the offsets n.corner, axis_a.corner and
   // axis_b.corner, the parallel-ray threshold 1e-12 |n|, and the quad's index (as a double,
