@@ -238,46 +238,38 @@ template <int Terms, class Record>
   best_index = _mm256_blendv_pd(best_index, index, closer);
 }
 
-// Whether any of four rays o + t d, t in (t_min, t_max), meets the box [low, high]: the slab
-// test, with 1/d precomputed. Where d has a zero coordinate, 1/d is infinite and the slab of
-// that axis is all of t (o inside it) or none (o outside). An origin exactly on a face plane of
-// the box, running in that plane, gives 0 x infinity = NaN: min and max (which return their
-// second operand if either is NaN) then either drop that axis's limit or make the lane miss.
-// Both are safe: such a ray stays the pad away from every quad of the group.
-[[gnu::target("avx2")]] inline bool any_lane_meets_box(const double low[3], const double high[3],
-                                                      const __m256d origin[3],
-                                                      const __m256d inverse_d[3], __m256d t_min,
-                                                      __m256d t_max) {
+// The slab test of four (ray, box) pairs, one per lane, with 1/d precomputed: bit l is set
+// where lane l's ray o + t d, t in (t_min, t_max), meets lane l's box [low, high]. Where d has a
+// zero coordinate, 1/d is infinite and the slab of that axis is all of t (o inside it) or none
+// (o outside). An origin exactly on a face plane of the box, running in that plane, gives
+// 0 x infinity = NaN: min and max (which return their second operand if either is NaN) then
+// either drop that axis's limit or make the lane miss. Both are safe: such a ray stays the pad
+// away from every quad of the group.
+[[gnu::target("avx2")]] inline unsigned lanes_meeting_boxes(const __m256d low[3],
+                                                           const __m256d high[3],
+                                                           const __m256d origin[3],
+                                                           const __m256d inverse_d[3],
+                                                           __m256d t_min, __m256d t_max) {
   __m256d enter = t_min, leave = t_max;
   for (int axis = 0; axis < 3; ++axis) {
-    const __m256d t_low =
-        _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(low[axis]), origin[axis]), inverse_d[axis]);
-    const __m256d t_high =
-        _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(high[axis]), origin[axis]), inverse_d[axis]);
-    enter = _mm256_max_pd(_mm256_min_pd(t_low, t_high), enter);
-    leave = _mm256_min_pd(_mm256_max_pd(t_low, t_high), leave);
-  }
-  return _mm256_movemask_pd(_mm256_cmp_pd(enter, leave, _CMP_LE_OQ)) != 0;
-}
-
-// Which of four boxes (one per lane: lows and highs coordinate by coordinate) one ray meets
-// within (t_min, t_max): bit k for the box in lane k. Lane by lane, the same operations as
-// any_lane_meets_box with that box and the ray in every lane, so the same answer.
-[[gnu::target("avx2")]] inline unsigned boxes_met(const double* const low[3],
-                                                 const double* const high[3],
-                                                 const __m256d origin[3],
-                                                 const __m256d inverse_d[3], __m256d t_min,
-                                                 __m256d t_max) {
-  __m256d enter = t_min, leave = t_max;
-  for (int axis = 0; axis < 3; ++axis) {
-    const __m256d t_low =
-        _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(low[axis]), origin[axis]), inverse_d[axis]);
-    const __m256d t_high =
-        _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(high[axis]), origin[axis]), inverse_d[axis]);
+    const __m256d t_low = _mm256_mul_pd(_mm256_sub_pd(low[axis], origin[axis]), inverse_d[axis]);
+    const __m256d t_high = _mm256_mul_pd(_mm256_sub_pd(high[axis], origin[axis]), inverse_d[axis]);
     enter = _mm256_max_pd(_mm256_min_pd(t_low, t_high), enter);
     leave = _mm256_min_pd(_mm256_max_pd(t_low, t_high), leave);
   }
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(enter, leave, _CMP_LE_OQ)));
+}
+
+// Whether any of four rays meets one box (the four-ray search's test of a group).
+[[gnu::target("avx2")]] inline bool any_lane_meets_box(const double low[3], const double high[3],
+                                                      const __m256d origin[3],
+                                                      const __m256d inverse_d[3], __m256d t_min,
+                                                      __m256d t_max) {
+  const __m256d low_lanes[3] = {_mm256_set1_pd(low[0]), _mm256_set1_pd(low[1]),
+                                _mm256_set1_pd(low[2])};
+  const __m256d high_lanes[3] = {_mm256_set1_pd(high[0]), _mm256_set1_pd(high[1]),
+                                 _mm256_set1_pd(high[2])};
+  return lanes_meeting_boxes(low_lanes, high_lanes, origin, inverse_d, t_min, t_max) != 0;
 }
 
 }  // namespace
@@ -306,10 +298,15 @@ template <int Terms, class Record>
   for (const Run& run : runs_) {
     if (run.bounded) {
       if (run.box % k_block == 0) {
+        // Four boxes, one per lane, against the ray in every lane: lane by lane, the test
+        // any_lane_meets_box makes of one box.
         const std::size_t b = run.box;
-        const double* const low[3] = {&box_low_[0][b], &box_low_[1][b], &box_low_[2][b]};
-        const double* const high[3] = {&box_high_[0][b], &box_high_[1][b], &box_high_[2][b]};
-        met = boxes_met(low, high, origin, inverse_d, t_min, avx2::all_lanes_min(best_t));
+        const __m256d low[3] = {_mm256_loadu_pd(&box_low_[0][b]), _mm256_loadu_pd(&box_low_[1][b]),
+                                _mm256_loadu_pd(&box_low_[2][b])};
+        const __m256d high[3] = {_mm256_loadu_pd(&box_high_[0][b]),
+                                 _mm256_loadu_pd(&box_high_[1][b]),
+                                 _mm256_loadu_pd(&box_high_[2][b])};
+        met = lanes_meeting_boxes(low, high, origin, inverse_d, t_min, avx2::all_lanes_min(best_t));
       }
       if ((met >> (run.box % k_block) & 1u) == 0) continue;
     }
