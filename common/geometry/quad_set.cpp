@@ -15,7 +15,7 @@ const bool QuadSet::k_has_avx2 = cpu_has_avx2();
 void QuadSet::add(const Quad& q) {
   // Quads added one by one share a run, which grows a block at a time.
   if (runs_.empty() || runs_.back().bounded)
-    runs_.push_back({index_.size(), index_.size(), size_, 0, false, {}, {}});
+    runs_.push_back({index_.size(), index_.size(), size_, 0, false});
   Run& run = runs_.back();
   if (run.begin + run.count == run.end) {
     add_block();
@@ -26,7 +26,7 @@ void QuadSet::add(const Quad& q) {
 
 void QuadSet::add_group(std::span<const Quad> quads) {
   if (quads.empty()) return;
-  Run run{index_.size(), index_.size(), size_, 0, true, {}, {}};
+  Run run{index_.size(), index_.size(), size_, 0, true};
   while (index_.size() < run.begin + quads.size()) add_block();
   run.end = index_.size();
   Vec3 low(std::numeric_limits<double>::infinity()), high(-low);
@@ -46,10 +46,6 @@ void QuadSet::add_group(std::span<const Quad> quads) {
   for (int axis = 0; axis < 3; ++axis)
     scale = std::max({scale, std::abs(low[axis]), std::abs(high[axis])});
   const double pad = 1e-6 * scale;
-  for (int axis = 0; axis < 3; ++axis) {
-    run.low[axis] = low[axis] - pad;
-    run.high[axis] = high[axis] + pad;
-  }
   run.box = groups_++;
   if (run.box % k_block == 0)
     for (int axis = 0; axis < 3; ++axis) {
@@ -57,8 +53,8 @@ void QuadSet::add_group(std::span<const Quad> quads) {
       box_high_[axis].resize(box_high_[axis].size() + k_block, 0.0);
     }
   for (int axis = 0; axis < 3; ++axis) {
-    box_low_[axis][run.box] = run.low[axis];
-    box_high_[axis][run.box] = run.high[axis];
+    box_low_[axis][run.box] = low[axis] - pad;
+    box_high_[axis][run.box] = high[axis] + pad;
   }
   runs_.push_back(run);
 }
@@ -260,15 +256,17 @@ template <int Terms, class Record>
   return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(enter, leave, _CMP_LE_OQ)));
 }
 
-// Whether any of four rays meets one box (the four-ray search's test of a group).
-[[gnu::target("avx2")]] inline bool any_lane_meets_box(const double low[3], const double high[3],
-                                                      const __m256d origin[3],
+// Whether any of four rays meets box `b` of the boxes held coordinate by coordinate in `low`
+// and `high` (the four-ray search's test of a group).
+[[gnu::target("avx2")]] inline bool any_lane_meets_box(const std::vector<double> low[3],
+                                                      const std::vector<double> high[3],
+                                                      std::size_t b, const __m256d origin[3],
                                                       const __m256d inverse_d[3], __m256d t_min,
                                                       __m256d t_max) {
-  const __m256d low_lanes[3] = {_mm256_set1_pd(low[0]), _mm256_set1_pd(low[1]),
-                                _mm256_set1_pd(low[2])};
-  const __m256d high_lanes[3] = {_mm256_set1_pd(high[0]), _mm256_set1_pd(high[1]),
-                                 _mm256_set1_pd(high[2])};
+  const __m256d low_lanes[3] = {_mm256_set1_pd(low[0][b]), _mm256_set1_pd(low[1][b]),
+                                _mm256_set1_pd(low[2][b])};
+  const __m256d high_lanes[3] = {_mm256_set1_pd(high[0][b]), _mm256_set1_pd(high[1][b]),
+                                 _mm256_set1_pd(high[2][b])};
   return lanes_meeting_boxes(low_lanes, high_lanes, origin, inverse_d, t_min, t_max) != 0;
 }
 
@@ -357,7 +355,8 @@ template <int Terms, class Record>
                                 _mm256_div_pd(one, direction[1]),
                                 _mm256_div_pd(one, direction[2])};
   for (const Run& run : runs_) {
-    if (run.bounded && !any_lane_meets_box(run.low, run.high, origin, inverse_d, t_low, best_t))
+    if (run.bounded &&
+        !any_lane_meets_box(box_low_, box_high_, run.box, origin, inverse_d, t_low, best_t))
       continue;
     for (std::size_t i = run.begin; i < run.begin + run.count; ++i) {
       const Record& r = records_[i];

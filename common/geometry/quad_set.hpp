@@ -75,16 +75,16 @@ class QuadSet {
   struct Run {
     std::size_t begin, end, first, count;
     bool bounded;
-    double low[3], high[3];  ///< the group's box, padded: every point of its quads is inside
-    std::size_t box = 0;     ///< a group's number among the groups: its box's slot below
+    std::size_t box = 0;  ///< a group's number among the groups: its box's slot below
   };
   void add_block();
   void put(std::size_t slot, const Quad& q);
 
   std::vector<Run> runs_;
   std::size_t size_ = 0;
-  /// The groups' boxes again, coordinate by coordinate, k_block to a block (the last block
-  /// padded with zeros, never read): the one-ray search tests four boxes per instruction.
+  /// The groups' boxes, padded (every point of a group's quads is inside its box), coordinate
+  /// by coordinate, k_block to a block (the last block padded with zeros, never read): the
+  /// one-ray search tests four boxes per instruction, the four-ray search one box in every lane.
   std::vector<double> box_low_[3], box_high_[3];
   std::size_t groups_ = 0;
   // Per slot, coordinate by coordinate (0, 1, 2: x, y, z): n = cross(u, v) (not normalised)
