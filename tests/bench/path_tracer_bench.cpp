@@ -12,8 +12,11 @@
 // three are measured in the same run, so their ratios compare.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
-// the same queries with the plain loop over intersect_distance.
+// the same queries with the plain loop over intersect_distance. BM_ThreadScaling<Scene> times
+// 1 and 2 threads in pairs, for the ratio of the two (below).
 
+#include <chrono>
+#include <cstdint>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -91,6 +94,46 @@ BENCHMARK(BM_LectureLoopPathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMil
     ->UseRealTime()->MinTime(2.0);
 BENCHMARK(BM_ReferencePathTracerCornell)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(2.0);
+
+// Two-thread scaling, measured in pairs: each iteration renders the image of BM_PathTracer
+// with 1 thread and with 2 (which goes first alternates), each timed alone. The counters are
+// the two rates over the whole run and their ratio, `scaling`. A pair is a fraction of a
+// second apart, so a host whose speed drifts over seconds or minutes (a shared virtual
+// machine's does, by 20 % or more) slows both alike, and the ratio stays where the ratio of two
+// separate benchmarks, run a minute apart, would not.
+void thread_scaling(benchmark::State& state, const char* scene_name) {
+  const mcrt::Scene scene = mcrt::make_scene(scene_name);
+  const mcrt::Camera camera(scene.camera, 256, 192);
+  double seconds[3] = {0.0, 0.0, 0.0};  // by thread count
+  std::uint64_t rays[3] = {0, 0, 0};
+  std::uint64_t seed = 1;
+  for (auto _ : state) {
+    const int first = seed % 2 == 1 ? 1 : 2;
+    for (const int threads : {first, 3 - first}) {
+      const mcrt::RenderSettings settings{16, 0, seed, threads, nullptr};
+      const auto start = std::chrono::steady_clock::now();
+      const mcrt::RenderResult result =
+          mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
+      seconds[threads] +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      benchmark::DoNotOptimize(result.image.pixels.data());
+      rays[threads] += result.rays;
+    }
+    ++seed;
+  }
+  const double one = static_cast<double>(rays[1]) / seconds[1];
+  const double two = static_cast<double>(rays[2]) / seconds[2];
+  state.counters["one_thread_rays_per_second"] = one;
+  state.counters["two_threads_rays_per_second"] = two;
+  state.counters["scaling"] = two / one;
+}
+void BM_ThreadScalingCornellSpheres(benchmark::State& state) {
+  thread_scaling(state, "cornell-spheres");
+}
+void BM_ThreadScalingCornell(benchmark::State& state) { thread_scaling(state, "cornell"); }
+BENCHMARK(BM_ThreadScalingCornellSpheres)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(4.0);
+BENCHMARK(BM_ThreadScalingCornell)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(4.0);
 
 using mcrt::bench::path_rays;
 
