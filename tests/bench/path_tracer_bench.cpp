@@ -13,14 +13,17 @@
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
 // the same queries with the plain loop over intersect_distance. BM_ThreadScaling<Scene> times
-// 1 and 2 threads in pairs, for the ratio of the two (below).
+// 1 and 2 threads in pairs, for the ratio of the two (below); BM_HostProbe* measures the same
+// ratio on three small loops, to tell what the host's two cores share.
 
 #include <chrono>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "bench/host_probe.hpp"
 #include "bench/path_rays.hpp"
 #include "support/plain_path_tracer.hpp"
 #include "render/path_tracer.hpp"
@@ -134,6 +137,62 @@ void BM_ThreadScalingCornell(benchmark::State& state) { thread_scaling(state, "c
 BENCHMARK(BM_ThreadScalingCornellSpheres)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(4.0);
 BENCHMARK(BM_ThreadScalingCornell)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(4.0);
+
+// The host's own two-thread scaling, measured the same way, on the three loops of
+// bench/host_probe.hpp: `work` is run by one thread, then by two at once (which goes first
+// alternates), and `scaling` is twice the one thread's time over the two threads'.
+template <class Work>
+void host_probe(benchmark::State& state, Work work) {
+  double seconds[3] = {0.0, 0.0, 0.0};  // by thread count
+  int turn = 0;
+  for (auto _ : state) {
+    const int first = turn++ % 2 == 0 ? 1 : 2;
+    for (const int threads : {first, 3 - first}) {
+      const auto start = std::chrono::steady_clock::now();
+      if (threads == 1) {
+        work();
+      } else {
+        std::thread other(work);
+        work();
+        other.join();
+      }
+      seconds[threads] +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  }
+  state.counters["scaling"] = 2.0 * seconds[1] / seconds[2];  // twice the work in seconds[2]
+}
+template <int Chains>
+void multiply_add_probe(benchmark::State& state) {
+#if defined(__x86_64__)
+  if (!mcrt::bench::cpu_has_fma()) {
+    state.SkipWithError("the probe needs AVX2 and FMA");
+    return;
+  }
+  constexpr std::uint64_t steps = Chains == 1 ? 40'000'000 : 10'000'000;  // 15-45 ms each
+  host_probe(state, [] {
+    benchmark::DoNotOptimize(mcrt::bench::multiply_add_chains<Chains>(steps));
+  });
+#else
+  state.SkipWithError("the probe is written for x86-64");
+#endif
+}
+void BM_HostProbeDependentMultiplyAdds(benchmark::State& state) { multiply_add_probe<1>(state); }
+void BM_HostProbeIndependentMultiplyAdds(benchmark::State& state) {
+  multiply_add_probe<12>(state);
+}
+void BM_HostProbeStoresAndLoads(benchmark::State& state) {
+  host_probe(state, [] {
+    volatile std::uint64_t counters[12] = {};  // on each thread's own stack
+    mcrt::bench::increment_counters(counters, 20'000'000);  // some 90 ms
+  });
+}
+BENCHMARK(BM_HostProbeDependentMultiplyAdds)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_HostProbeIndependentMultiplyAdds)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_HostProbeStoresAndLoads)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(2.0);
 
 using mcrt::bench::path_rays;
 
