@@ -12,9 +12,10 @@
 // three are measured in the same run, so their ratios compare.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
 // real paths), so it measures the intersection loop alone; BM_ReferenceClosestHit* answers
-// the same queries with the plain loop over intersect_distance. BM_ThreadScaling<Scene> times
-// 1 and 2 threads in pairs, for the ratio of the two (below); BM_HostProbe* measures the same
-// ratio on three small loops, to tell what the host's two cores share.
+// the same queries with the plain loop over intersect_distance.
+// BM_ThreadScaling<Scene> (four lanes) and BM_ThreadScalingLectureLoop<Scene> time 1 and 2
+// threads in pairs, for the ratio of the two (below); BM_HostProbe* measures the same ratio on
+// three small loops, to tell what the host's two cores share.
 
 #include <chrono>
 #include <cstdint>
@@ -40,6 +41,22 @@ using mcrt::testing::plain_path_radiance;
 
 enum class Engine { lecture_loop, plain_layers, lanes };
 
+// The image of the speed targets (256x192, 16 spp, depth 10) rendered by `engine`.
+template <Engine engine>
+mcrt::RenderResult render_with(const mcrt::Scene& scene, const mcrt::Camera& camera,
+                               const mcrt::RenderSettings& settings) {
+  if constexpr (engine == Engine::lanes)
+    return mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
+  else
+    return mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
+                                              mcrt::RayCount& count) {
+      if constexpr (engine == Engine::plain_layers)
+        return plain_path_radiance(scene, ray, k_depth, rng, count);
+      else
+        return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
+    });
+}
+
 template <Engine engine>
 void path_tracer(benchmark::State& state, const char* scene_name) {
   const mcrt::Scene scene = mcrt::make_scene(scene_name);
@@ -49,19 +66,7 @@ void path_tracer(benchmark::State& state, const char* scene_name) {
   std::uint64_t seed = 1;
   for (auto _ : state) {
     const mcrt::RenderSettings settings{16, 0, seed++, threads, nullptr};
-    const auto trace = [&] {
-      if constexpr (engine == Engine::lanes)
-        return mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
-      else
-        return mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
-                                                  mcrt::RayCount& count) {
-          if constexpr (engine == Engine::plain_layers)
-            return plain_path_radiance(scene, ray, k_depth, rng, count);
-          else
-            return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
-        });
-    };
-    const mcrt::RenderResult result = trace();
+    const mcrt::RenderResult result = render_with<engine>(scene, camera, settings);
     benchmark::DoNotOptimize(result.image.pixels.data());
     rays += result.rays;
   }
@@ -104,6 +109,7 @@ BENCHMARK(BM_ReferencePathTracerCornell)->Arg(1)->Unit(benchmark::kMillisecond)-
 // second apart, so a host whose speed drifts over seconds or minutes (a shared virtual
 // machine's does, by 20 % or more) slows both alike, and the ratio stays where the ratio of two
 // separate benchmarks, run a minute apart, would not.
+template <Engine engine>
 void thread_scaling(benchmark::State& state, const char* scene_name) {
   const mcrt::Scene scene = mcrt::make_scene(scene_name);
   const mcrt::Camera camera(scene.camera, 256, 192);
@@ -115,8 +121,7 @@ void thread_scaling(benchmark::State& state, const char* scene_name) {
     for (const int threads : {first, 3 - first}) {
       const mcrt::RenderSettings settings{16, 0, seed, threads, nullptr};
       const auto start = std::chrono::steady_clock::now();
-      const mcrt::RenderResult result =
-          mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
+      const mcrt::RenderResult result = render_with<engine>(scene, camera, settings);
       seconds[threads] +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       benchmark::DoNotOptimize(result.image.pixels.data());
@@ -131,12 +136,24 @@ void thread_scaling(benchmark::State& state, const char* scene_name) {
   state.counters["scaling"] = two / one;
 }
 void BM_ThreadScalingCornellSpheres(benchmark::State& state) {
-  thread_scaling(state, "cornell-spheres");
+  thread_scaling<Engine::lanes>(state, "cornell-spheres");
 }
-void BM_ThreadScalingCornell(benchmark::State& state) { thread_scaling(state, "cornell"); }
+void BM_ThreadScalingCornell(benchmark::State& state) {
+  thread_scaling<Engine::lanes>(state, "cornell");
+}
+void BM_ThreadScalingLectureLoopCornellSpheres(benchmark::State& state) {
+  thread_scaling<Engine::lecture_loop>(state, "cornell-spheres");
+}
+void BM_ThreadScalingLectureLoopCornell(benchmark::State& state) {
+  thread_scaling<Engine::lecture_loop>(state, "cornell");
+}
 BENCHMARK(BM_ThreadScalingCornellSpheres)->Unit(benchmark::kMillisecond)->UseRealTime()
     ->MinTime(4.0);
 BENCHMARK(BM_ThreadScalingCornell)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(4.0);
+BENCHMARK(BM_ThreadScalingLectureLoopCornellSpheres)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MinTime(4.0);
+BENCHMARK(BM_ThreadScalingLectureLoopCornell)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MinTime(4.0);
 
 // The host's own two-thread scaling, measured the same way, on the three loops of
 // bench/host_probe.hpp: `work` is run by one thread, then by two at once (which goes first
