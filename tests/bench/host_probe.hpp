@@ -13,6 +13,8 @@
 
 #include <cstdint>
 
+#include "core/cpu_features.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -45,10 +47,7 @@ __attribute__((target("avx2,fma"))) double multiply_add_chains(std::uint64_t ste
 }
 
 /// Whether the processor runs the probe's AVX2 and FMA instructions.
-inline bool cpu_has_fma() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-}
+inline bool cpu_has_avx2_and_fma() { return cpu_has_avx2() && __builtin_cpu_supports("fma"); }
 #endif
 
 }  // namespace mcrt::bench

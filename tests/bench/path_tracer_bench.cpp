@@ -182,7 +182,7 @@ void host_probe(benchmark::State& state, Work work) {
 template <int Chains>
 void multiply_add_probe(benchmark::State& state) {
 #if defined(__x86_64__)
-  if (!mcrt::bench::cpu_has_fma()) {
+  if (!mcrt::bench::cpu_has_avx2_and_fma()) {
     state.SkipWithError("the probe needs AVX2 and FMA");
     return;
   }
