@@ -205,4 +205,17 @@ TEST(SpawnRayTest, ToTargetReturnsTheRemainingDistance) {
   EXPECT_NEAR(glm::length(ray.direction), 1.0, k_tol);
 }
 
+// The shadow ray passes through its target: a light point 5 units away, seen at a slant from
+// a point at the sphere box's scale (push-off 1.5e-5), is reached at the returned distance,
+// not a push-off before it (where the light's own surface would block the ray).
+TEST(SpawnRayTest, ToTargetPassesThroughTheTarget) {
+  Hit hit;
+  hit.point = {72.8, 81.574, 150.0};
+  hit.normal = {0, 1, 0};
+  const Vec3 target(69.0, 85.0, 146.0);
+  const auto [ray, distance] = spawn_ray_to(hit, target);
+  EXPECT_GT(ray.origin.y, hit.point.y);
+  EXPECT_NEAR(glm::length(ray.origin + distance * ray.direction - target), 0.0, 1e-12);
+}
+
 }  // namespace

@@ -31,16 +31,21 @@ inline Ray spawn_ray(const Hit& hit, const Vec3& direction) {
   return {hit.point + side * offset * hit.normal, direction};
 }
 
-/// Shadow-ray helper: a ray from `hit` towards `target`, with the distance to it.
+/// Shadow-ray helper: a ray from `hit` towards `target`, with the distance to it. The ray is
+/// aimed from its pushed-off origin, so it passes through the target itself: aimed from the
+/// hit point instead, it would run parallel to the line to the target, a push-off (1e-5 in
+/// the sphere Cornell box) beside it, and meet a light's surface up to that much before the
+/// target, which for a light a few units away is more than the 1e-6 the shadow ray is cut
+/// short by (the light then hid itself).
 struct SegmentRay {
   Ray ray;
   double distance;
 };
 inline SegmentRay spawn_ray_to(const Hit& hit, const Vec3& target) {
-  const Vec3 to = target - hit.point;
+  const Vec3 origin = spawn_ray(hit, target - hit.point).origin;  // the side of the target
+  const Vec3 to = target - origin;
   const double distance = glm::length(to);
-  const Ray ray = spawn_ray(hit, to / distance);
-  return {ray, glm::length(target - ray.origin)};
+  return {{origin, to / distance}, distance};
 }
 
 }  // namespace mcrt
