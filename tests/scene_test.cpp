@@ -6,6 +6,7 @@
 
 #include "core/rng.hpp"
 #include "render/scene.hpp"
+#include "sampling/light.hpp"
 #include "sampling/sampling.hpp"
 
 using namespace mcrt;
@@ -144,11 +145,37 @@ TEST(SceneTest, EverySceneKnowsItsEmitters) {
   ASSERT_EQ(spheres.emitters().size(), 1u);
   EXPECT_EQ(spheres.emitters()[0].kind, Emitter::sphere);
   EXPECT_EQ(spheres.emitters()[0].index, 8u);
-  EXPECT_EQ(spheres.emitters()[0].cap_height, 0.27);
+  EXPECT_TRUE(spheres.emitters()[0].has_enclosure);
+  // The ceiling curves down away from its axis, so the light's part inside it is a little
+  // shallower than the 0.27 below the ceiling's plane: (d^2 - rho^2 + R^2) / 2d from the centre.
+  EXPECT_NEAR(spheres.emitters()[0].cap_height, 0.268390020, 1e-8);
   const Scene furnace = make_furnace(0.5, 1.0);
   ASSERT_EQ(furnace.emitters().size(), 1u);
   EXPECT_EQ(furnace.emitters()[0].cap_height, 2.0);  // the whole unit sphere
   EXPECT_FALSE(furnace.emitters()[0].one_sided);
+}
+
+// The cap the scene computes is exactly the light's part inside its enclosure (the ceiling):
+// points of the light sphere are inside the ceiling's ball if and only if they are on the cap
+// (away from its rim, where round-off decides).
+TEST(SceneTest, SphereLightCapIsItsPartInsideTheEnclosure) {
+  const Scene scene = make_cornell_spheres();
+  const Emitter& e = scene.emitters()[0];
+  const Sphere& light = scene.spheres()[e.index];
+  const double z_rim = 1.0 - e.cap_height / light.radius;
+  Rng rng(3, 0);
+  int inside = 0;
+  for (int i = 0; i < 200000; ++i) {
+    // Points on the light's lowest 0.6 units, where the cap's rim lies.
+    const Vec2 u = rng.uniform2();
+    const LightPoint y = sample_sphere_cap(light.center, light.radius, e.cap_axis, 0.6, u);
+    const double z = glm::dot(y.point - light.center, e.cap_axis) / light.radius;
+    const double rho = glm::length(y.point - e.enclosure.center) - e.enclosure.radius;
+    if (std::abs(z - z_rim) < 1e-9) continue;
+    EXPECT_EQ(z > z_rim, rho < 0.0) << "z " << z << ", distance outside the ceiling " << rho;
+    inside += rho < 0.0;
+  }
+  EXPECT_GT(inside, 80000);  // the cap is 0.268 of the 0.6 sampled: about 89000
 }
 
 }  // namespace

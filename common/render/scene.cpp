@@ -19,12 +19,22 @@ std::uint32_t Scene::add_material(const Material& m) {
 
 void Scene::add_sphere(const Sphere& s) {
   if (materials[s.material].is_emitter())
-    emitters_.push_back({Emitter::sphere, spheres_.size(), Vec3(0, -1, 0), 2.0 * s.radius, false});
+    emitters_.push_back({Emitter::sphere, spheres_.size(), Vec3(0, -1, 0), 2.0 * s.radius, false, false, {}});
   add_to_sphere_list(s);
 }
 
-void Scene::add_sphere_light(const Sphere& s, const Vec3& cap_axis, double cap_height) {
-  emitters_.push_back({Emitter::sphere, spheres_.size(), cap_axis, cap_height, false});
+// The part of the light's surface (centre c, radius R) inside the enclosing ball (centre b,
+// radius rho) is the cap beyond the plane of the circle where the two surfaces meet. That
+// plane lies at distance t from c along a = (b - c) / |b - c|, where both |p - c| = R and
+// |p - b| = rho:  t = (d^2 + R^2 - rho^2) / (2 d),  d = |b - c|,  so the cap's height is R - t.
+// d^2 - rho^2 is formed as (d - rho)(d + rho): d and rho are both about 1e5 for the ceiling.
+void Scene::add_sphere_light(const Sphere& s, std::size_t enclosure) {
+  const Sphere& ball = spheres_.at(enclosure);
+  const Vec3 to_ball = ball.center - s.center;
+  const double d = glm::length(to_ball);
+  const double t = ((d - ball.radius) * (d + ball.radius) + s.radius * s.radius) / (2.0 * d);
+  const double height = std::clamp(s.radius - t, 0.0, 2.0 * s.radius);
+  emitters_.push_back({Emitter::sphere, spheres_.size(), to_ball / d, height, false, true, ball});
   add_to_sphere_list(s);
 }
 
@@ -58,7 +68,7 @@ void Scene::add_small_quad(const Quad& q, std::uint32_t back_material) {
 void Scene::add_to_quad_list(const Quad& q, std::uint32_t back_material) {
   if (materials[q.material()].is_emitter()) {
     const bool one_sided = !materials[back_material].is_emitter();
-    emitters_.push_back({Emitter::quad, quads_.size(), q.normal(), 0.0, one_sided});
+    emitters_.push_back({Emitter::quad, quads_.size(), q.normal(), 0.0, one_sided, false, {}});
   }
   quads_.push_back(q);
   quad_back_materials_.push_back(back_material);
@@ -275,9 +285,10 @@ Scene make_cornell_spheres() {
       {{73, 16.5, 78}, 16.5, white},           // right sphere (smallpt's glass)
   };
   for (const Sphere& s : spheres) scene.add_sphere(s);
-  // The light: a sphere whose cap 0.27 deep pokes through the ceiling; only that cap is seen.
+  // The light: a 600-radius sphere whose bottom pokes 0.27 below the ceiling plane; the
+  // ceiling (a 1e5-radius sphere, index 5) hides the rest from the room.
   const double cap_height = 0.27;
-  scene.add_sphere_light({{50, 681.6 - cap_height, 81.6}, 600, light}, Vec3(0, -1, 0), cap_height);
+  scene.add_sphere_light({{50, 681.6 - cap_height, 81.6}, 600, light}, 5);
   scene.camera = {{50, 52, 295.6}, {0, -0.042612, -1}, {0, 1, 0}, 2.0 * std::atan(0.5135 / 2.0),
                   140.0};
   // The light is the cap of the 600-radius sphere below the ceiling (y = 81.6): height

@@ -37,15 +37,20 @@ struct PointLight {
   }
 };
 
-/// An emitter the light sampler can aim at: an emissive quad (the whole of it), or the part of an
-/// emissive sphere that can be seen, a cap {p : (p - c).axis >= R - height} around the unit
-/// `axis` (height 2R: the whole sphere).
+/// An emitter the light sampler can aim at: an emissive quad (the whole of it), or an emissive
+/// sphere. A sphere may have an ENCLOSURE: an opaque sphere of the scene (cornell-spheres'
+/// ceiling) whose inside holds only a cap of the light, {p : (p - c).axis >= R - height} around
+/// the unit `cap_axis`; from inside the enclosure that cap is all of the light that can be
+/// seen (render/light_sampling.hpp proves it), so light sampling aims at the cap there and at
+/// the whole sphere anywhere else. Without an enclosure the cap is the whole sphere (height 2R).
 struct Emitter {
   enum Kind { quad, sphere } kind = quad;
   std::size_t index = 0;  ///< into Scene::quads() or Scene::spheres()
   Vec3 cap_axis{0, -1, 0};
   double cap_height = 0.0;
   bool one_sided = false;  ///< emits only on its front (a quad's normal side)
+  bool has_enclosure = false;
+  Sphere enclosure;  ///< the enclosing ball (centre, radius), when has_enclosure
 };
 
 /// Primitives are added through add_sphere / add_quad only, so the structure-of-arrays copy
@@ -64,8 +69,10 @@ struct Scene {
 
   std::uint32_t add_material(const Material& m);
   void add_sphere(const Sphere& s);
-  /// A sphere light of which only the cap of `cap_height` around `cap_axis` can be seen.
-  void add_sphere_light(const Sphere& s, const Vec3& cap_axis, double cap_height);
+  /// A sphere light sunk into the opaque sphere spheres()[enclosure] (added before it): from
+  /// inside that sphere only the cap of the light inside it can be seen. The cap is computed
+  /// here, exactly, from the two spheres.
+  void add_sphere_light(const Sphere& s, std::size_t enclosure);
   void add_quad(const Quad& q);
   /// A quad whose side against its normal has `back_material` (for a one-sided lamp: black).
   void add_quad(const Quad& q, std::uint32_t back_material);

@@ -7,13 +7,16 @@
 /// with y the sampled point, r = |y - x| and theta_y the angle between the light's normal at y
 /// and the direction back to x. Pure functions of u in [0,1)^2, as every sampler here.
 ///
-/// The sphere light is sampled BY AREA over the part of it that can be seen, a spherical cap.
-/// Sampling by the solid angle of the cone the whole sphere subtends is the textbook choice for
-/// a sphere floating in the open, but the one sphere light of the lecture (cornell-spheres) is
-/// a 600-radius ball sunk into the ceiling with only a cap 0.27 deep showing: its cone fills
-/// most of the upper hemisphere and almost all of it is ceiling. Uniform area on that cap puts
-/// every sample on the visible light; for a whole sphere (the furnace: the cap is everything)
-/// it is uniform area on the sphere.
+/// A sphere light is sampled in one of three ways, chosen by where the shading point x is
+/// (render/light_sampling.hpp decides, and says why each choice covers every point x can see):
+///  - by AREA over a spherical cap, when only that cap can be seen from x (the one sphere light
+///    of the lecture, cornell-spheres, is a 600-radius ball sunk into the ceiling with a cap
+///    0.27 deep showing: from inside the room the cone of the whole sphere fills most of the
+///    upper hemisphere and almost all of it is ceiling, while uniform area on the cap puts every
+///    sample on the visible light);
+///  - by SOLID ANGLE over the cone the whole sphere subtends, from a point outside it (the
+///    textbook choice: every direction of the cone meets the sphere's near side);
+///  - by AREA over the whole sphere, from a point inside it (the furnace, where it is exact).
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +57,42 @@ inline LightPoint sample_sphere_cap(const Vec3& centre, double radius, const Vec
 }
 inline double sphere_cap_pdf_area(double radius, double height) {
   return 1.0 / (k_two_pi * radius * height);
+}
+
+/// The cone of directions from x (outside the sphere) that meet the sphere: half-angle
+/// theta_max with sin(theta_max) = R / d, d = |c - x|. Uniform in solid angle over it:
+///   p_w = 1 / (2 pi (1 - cos(theta_max))),   cos(theta) = 1 - u0 (1 - cos(theta_max)),
+///   phi = 2 pi u1 about the axis x -> c (the cap of directions has area 2 pi (1 - cos), and
+///   that area is linear in cos(theta): Archimedes again).
+/// 1 - cos(theta_max) is written as (R/d)^2 / (1 + cos(theta_max)): for a large sphere close by
+/// (cos near 0.1) either form is fine, for a small far one (cos near 1) this one keeps its digits.
+inline double sphere_cone_one_minus_cos(const Vec3& centre, double radius, const Vec3& x) {
+  const double d2 = glm::dot(centre - x, centre - x), sin2 = radius * radius / d2;
+  return sin2 / (1.0 + std::sqrt(std::max(0.0, 1.0 - sin2)));
+}
+inline double sphere_cone_pdf_solid_angle(const Vec3& centre, double radius, const Vec3& x) {
+  return 1.0 / (k_two_pi * sphere_cone_one_minus_cos(centre, radius, x));
+}
+
+/// A direction of the cone from x, and the point y where it first meets the sphere, with its
+/// pdf moved to area measure (p_A = p_w cos(theta_y) / r^2) so that every light sampler hands
+/// back the same record. x must lie outside the sphere.
+inline LightPoint sample_sphere_cone(const Vec3& centre, double radius, const Vec3& x, Vec2 u) {
+  const Vec3 axis = glm::normalize(centre - x);
+  const double one_minus_cos_max = sphere_cone_one_minus_cos(centre, radius, x);
+  const double cos_theta = 1.0 - u.x * one_minus_cos_max;
+  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  const Vec2 circle = cos_sin_two_pi(u.y);
+  const Vec3 w = Frame(axis).to_world({sin_theta * circle.x, sin_theta * circle.y, cos_theta});
+  // The near root of |x + t w - c| = R (the far one is hidden behind it); at the cone's rim
+  // the two meet and round-off can make the discriminant slightly negative.
+  const Vec3 xc = centre - x;
+  const double b = glm::dot(xc, w);
+  const double t = b - std::sqrt(std::max(0.0, b * b - glm::dot(xc, xc) + radius * radius));
+  const Vec3 y = x + t * w;
+  const Vec3 n = (y - centre) / radius;
+  const double cos_y = std::max(0.0, -glm::dot(n, w));
+  return {y, n, cos_y / (t * t) / (k_two_pi * one_minus_cos_max)};
 }
 
 /// p_w = p_A r^2 / |cos(theta_y)|: the area pdf of a point at distance r, seen at angle

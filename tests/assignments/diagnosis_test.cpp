@@ -176,9 +176,14 @@ TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {
   EXPECT_FALSE(check_nee_regions(with_path_end(nee_without_jacobian)).passed);
 }
 
+TEST_F(Diagnoses, A5NeeCapOnly) {
+  expect_diagnosis(check_nee_light_beyond_cap(with_path_end(nee_cap_only)),
+                   "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
+}
+
 TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
   expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_shadow_ray_hits_light)),
-                   "direct light is 0.08x: almost no shadow ray reaches the light");
+                   "direct light is 0.00x: almost no shadow ray reaches the light");
 }
 
 }  // namespace

@@ -8,8 +8,11 @@
 //  - the direct light on cornell's floor (depth 1) equals Lambert's polygon formula
 //    (support/quad_box_reference.hpp), for NEE and for MIS with either heuristic;
 //  - the furnace with Russian roulette: the mean is Le / (1 - a) (z-test);
-//  - NEE and MIS agree block by block with the independent renderer of the quad box
-//    (support/quad_box_reference.hpp), which chapter 05's path tracer is checked against too;
+//  - NEE and MIS agree by blocks, rows, columns and the image border with the independent
+//    renderers of the quad box (support/quad_box_reference.hpp, which chapter 05's path tracer
+//    is checked against too) and of smallpt's sphere box (support/sphere_box_reference.hpp),
+//    whose top rows start above the ceiling and see the light beyond its cap;
+//  - from such a point, above the ceiling, the light pdf per steradian integrates to 1 too;
 //  - NEE and MIS agree with chapter 07's cosine estimator block by block on a small cornell
 //    image, at light scales 1 and 3 (z-tests of block means, Sidak). Not at small light
 //    scales: there the cosine estimator's rare hits on a bright lamp make its block means too
@@ -26,6 +29,7 @@
 #include "integration/statistics.hpp"
 #include "render/importance_path_tracer.hpp"
 #include "render/mis.hpp"
+#include "render/path_tracer.hpp"
 #include "render/next_event_estimation.hpp"
 #include "render/russian_roulette.hpp"
 #include "render/scene.hpp"
@@ -34,6 +38,7 @@
 #include "stats/hypothesis.hpp"
 #include "support/nee_procedures.hpp"
 #include "support/quad_box_reference.hpp"
+#include "support/sphere_box_reference.hpp"
 
 namespace {
 
@@ -59,12 +64,53 @@ MCRT_STATISTICAL_CHECK(quad_light_pdf_per_steradian_integrates_to_one, 1e-4) {
                                                         Vec3(0, 1, 0), 100000, seed, 50);
 }
 
+// The cap from inside the room: the light and the ceiling that hides all of it but the cap.
 MCRT_STATISTICAL_CHECK(sphere_cap_light_pdf_per_steradian_integrates_to_one, 1e-4) {
   Scene scene;
   const auto light = scene.add_material({Color(0.0), Color(12.0)});
-  scene.add_sphere_light({{50, 681.6 - 0.27, 81.6}, 600, light}, Vec3(0, -1, 0), 0.27);
+  scene.add_sphere({{50, -1e5 + 81.6, 81.6}, 1e5, scene.add_material({Color(0.75), Color(0.0)})});
+  scene.add_sphere_light({{50, 681.6 - 0.27, 81.6}, 600, light}, 0);
   return mcrt::testing::light_pdf_normalisation_p_value(scene, Vec3(50, 41.6, 81.6),
                                                         Vec3(0, 1, 0), 100000, seed, 51);
+}
+
+// The cone sampler (sphere lights seen from outside): from a point between cornell-spheres'
+// ceiling and its light, above the ceiling plane, where the top rows' camera rays meet the
+// left wall. Its directions' (cos theta, phi) about the axis to the centre, chi-square against
+// the uniform density; and, the light alone, p_w integrates to 1 over uniform directions of
+// the hemisphere around that axis (the cone, 83 degrees wide, lies inside it). About 94% of
+// the 1e5 directions reach the light.
+MCRT_STATISTICAL_CHECK(sphere_cone_light_chi_square, 1e-4) {
+  return mcrt::testing::cone_light_p_value(seed, sphere_cone_pdf_solid_angle);
+}
+
+MCRT_STATISTICAL_CHECK(sphere_cone_light_pdf_per_steradian_integrates_to_one, 1e-4) {
+  const Sphere light = mcrt::testing::cornell_spheres_light();
+  const Vec3 x = mcrt::testing::k_above_ceiling;
+  Scene scene;
+  scene.add_sphere({light.center, light.radius, scene.add_material({Color(0.0), Color(12.0)})});
+  return mcrt::testing::light_pdf_normalisation_p_value(
+      scene, x, glm::normalize(light.center - x), 100000, seed, 52);
+}
+
+// Above cornell-spheres' ceiling (support/nee_procedures.hpp): 20000 rays per strip each.
+double above_ceiling_check(std::uint64_t seed, bool mis) {
+  return mcrt::testing::above_ceiling_direct_light_p_value(
+      20000, seed,
+      [mis](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
+        const PathEnd end{Roulette{}, depth};
+        return mis ? estimate_mis_radiance(s, ray, end, MisHeuristic::power, rng, count)
+                   : estimate_nee_radiance(s, ray, end, rng, count);
+      },
+      [](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
+        return estimate_path_radiance(s, ray, depth, rng, count);
+      });
+}
+MCRT_STATISTICAL_CHECK(nee_direct_light_above_ceiling_matches_path_tracer, 1e-4) {
+  return above_ceiling_check(seed, false);
+}
+MCRT_STATISTICAL_CHECK(mis_direct_light_above_ceiling_matches_path_tracer, 1e-4) {
+  return above_ceiling_check(seed, true);
 }
 
 // Direct light at four floor points (quad_box_reference.hpp), 20000 paths each at depth 1.
@@ -149,9 +195,10 @@ MCRT_STATISTICAL_CHECK(nee_agrees_with_cosine_estimator_by_block_large_light, 1e
   return agreement_check(seed, 3.0, false);
 }
 
-// NEE and MIS against the renderer written from scratch in the test tree (its own scene
-// statement and intersections, cosine sampling, Russian roulette, no light sampling): the same
-// procedure, block size and samples as the path tracer's check in quad_box_checks.cpp, with
+// NEE and MIS against the renderers written from scratch in the test tree (their own scene
+// statements and intersections, cosine sampling, Russian roulette, no light sampling), by
+// blocks, rows, columns and border. The quad box: the same procedure, image and samples as
+// the path tracer's check in quad_box_checks.cpp, with
 // paths ended by roulette and cut at its depth 50 (a bias below 6e-6 there, far below a
 // block's standard error of about 1e-2).
 MCRT_STATISTICAL_CHECK(nee_agrees_with_independent_renderer_cornell, 1e-4) {
@@ -168,6 +215,27 @@ MCRT_STATISTICAL_CHECK(mis_agrees_with_independent_renderer_cornell, 1e-4) {
         return estimate_mis_radiance(s, ray, PathEnd{Roulette{}, depth}, MisHeuristic::power,
                                      rng, count);
       });
+}
+
+// smallpt's sphere box, 32 x 24 pixels, 2000 samples per pixel each, paths ended by roulette
+// alone (unbiased for every bounce, like the reference). The top row's corner pixels start
+// partly above the ceiling: a light sampler that covers only the cap puts them at 0 where the
+// reference sees the walls lit by the light beyond the cap.
+double sphere_box_check(std::uint64_t seed, bool mis) {
+  return mcrt::testing::sphere_box_comparison(
+             make_cornell_spheres(), {32, 24, 4, 2000}, seed,
+             [mis](const Scene& s, const Ray& ray, Rng& rng, RayCount& count) {
+               const PathEnd end{Roulette{}, -1};
+               return mis ? estimate_mis_radiance(s, ray, end, MisHeuristic::power, rng, count)
+                          : estimate_nee_radiance(s, ray, end, rng, count);
+             })
+      .p_value;
+}
+MCRT_STATISTICAL_CHECK(nee_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
+  return sphere_box_check(seed, false);
+}
+MCRT_STATISTICAL_CHECK(mis_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
+  return sphere_box_check(seed, true);
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct NeeMistake {
   bool emission_twice = false;     ///< BSDF-sampled hits on lights add Le as well
   bool shadow_hits_light = false;  ///< the shadow ray's range includes the light point itself
   bool light_from_behind = false;  ///< |cos(theta_y)| and Le of a one-sided light's back
+  bool cap_only = false;  ///< a sphere light sampled on its cap from everywhere (the cap is
+                          ///< all the room sees, but not all a point outside the room sees)
 };
 
 /// A light sample with the mistake's way of tracing the shadow ray and converting the pdf.
@@ -34,7 +36,12 @@ inline DirectSample wrong_direct_light(const Scene& scene, const Hit& hit, Rng& 
   const std::size_t n = scene.emitters().size();
   const Emitter& e = scene.emitters()[std::min(
       n - 1, static_cast<std::size_t>(u_pick * static_cast<double>(n)))];
-  const LightPoint y = sample_emitter(scene, e, u);
+  const Vec3 x = spawn_ray(hit, hit.normal).origin;
+  const Sphere* sphere = e.kind == Emitter::sphere ? &scene.spheres()[e.index] : nullptr;
+  const LightPoint y =
+      m.cap_only && sphere
+          ? sample_sphere_cap(sphere->center, sphere->radius, e.cap_axis, e.cap_height, u)
+          : sample_emitter(scene, e, x, u);
   const auto [shadow_ray, distance] = spawn_ray_to(hit, y.point);
   d.wi = shadow_ray.direction;
   d.cos_x = glm::dot(hit.normal, d.wi);
@@ -100,6 +107,13 @@ inline Color nee_shadow_ray_hits_light(const Scene& scene, Ray ray, int depth, R
 inline Color nee_light_from_behind(const Scene& scene, Ray ray, int depth, Rng& rng,
                                    RayCount& c) {
   return wrong_nee_radiance(scene, ray, depth, rng, c, {.light_from_behind = true});
+}
+
+/// Wrong: a sphere light sampled on the cap its enclosure leaves visible, from every point,
+/// inside the enclosure or not (the sampler chapter 08 first shipped): paths that start above
+/// cornell-spheres' ceiling see the light outside the cap and get no direct light from it.
+inline Color nee_cap_only(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
+  return wrong_nee_radiance(scene, ray, depth, rng, c, {.cap_only = true});
 }
 
 /// Wrong: MIS whose weights do not sum to 1: balance for the light sample, power for the BSDF

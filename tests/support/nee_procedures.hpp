@@ -64,6 +64,71 @@ double cap_light_pdf_p_value(std::uint64_t seed, PdfArea&& pdf_area) {
   return square_sampler_p_value(sample, density, seed, k_cap_light_stream, "sphere cap (area)");
 }
 
+/// cornell-spheres' light, and a point between its ceiling and that light (above the ceiling
+/// plane, beside the left wall), where the top rows' camera rays arrive.
+inline Sphere cornell_spheres_light() { return make_cornell_spheres().spheres().back(); }
+inline const Vec3 k_above_ceiling(1.5, 83.0, 150.0);
+
+/// Chi-square of sample_sphere_cone from k_above_ceiling: a direction's cos(theta) about the
+/// axis to the centre, in [cos(theta_max), 1], and its phi, mapped to [-1,1]^2, where
+/// dw = dcos dphi = (pi (1 - cos(theta_max)) / 2) dx dy: the density is
+/// p_w pi (1 - cos(theta_max)) / 2. `pdf_solid_angle(centre, radius, x)` is the pdf under test.
+template <class PdfSolidAngle>
+double cone_light_p_value(std::uint64_t seed, PdfSolidAngle&& pdf_solid_angle) {
+  const Sphere light = cornell_spheres_light();
+  const Vec3& x = k_above_ceiling;
+  const Frame frame(glm::normalize(light.center - x));
+  const double one_minus_cos_max = sphere_cone_one_minus_cos(light.center, light.radius, x);
+  const auto sample = [&](Vec2 u) {
+    const Vec3 w = glm::normalize(sample_sphere_cone(light.center, light.radius, x, u).point - x);
+    double phi = std::atan2(glm::dot(w, frame.bitangent), glm::dot(w, frame.tangent));
+    if (phi < 0.0) phi += k_two_pi;
+    const double cos_theta = glm::dot(w, frame.normal);
+    return Vec2(2.0 * (cos_theta - (1.0 - one_minus_cos_max)) / one_minus_cos_max - 1.0,
+                phi / k_pi - 1.0);
+  };
+  const auto density = [&](Vec2) {
+    return pdf_solid_angle(light.center, light.radius, x) * k_pi * one_minus_cos_max / 2.0;
+  };
+  return square_sampler_p_value(sample, density, seed, k_cap_light_stream + 2, "sphere cone (solid angle)");
+}
+
+/// The direct light of points above cornell-spheres' ceiling, where the light is seen beyond its
+/// cap and a few units away: a strip of the left wall (rays from x = 1.5 going -x) and a strip
+/// of the ceiling's top (rays from the same points going +x, slightly down, meeting it near
+/// x = 72, 4 units under the light). n rays onto each at depth 1 (the strip's Le, 0, plus its
+/// direct light), `estimate` against chapter 05's path tracer (uniform directions, another
+/// seed): a z-test per strip from both sample variances, Sidak over the two.
+template <class Estimate, class Reference>
+double above_ceiling_direct_light_p_value(int n, std::uint64_t seed, Estimate&& estimate,
+                                          Reference&& reference) {
+  const Scene scene = make_cornell_spheres();
+  std::vector<double> p_values;
+  for (const Vec3 direction : {Vec3(-1, 0, 0), glm::normalize(Vec3(1, -0.02, 0))}) {
+    double sum[2] = {0, 0}, sum2[2] = {0, 0};
+    for (int k = 0; k < n; ++k)
+      for (int which = 0; which < 2; ++which) {
+        Rng rng(seed, stream_index((std::uint64_t{1} << 23) + which, static_cast<std::uint64_t>(k)));
+        const Vec2 u = rng.uniform2();  // y in [82, 86], z in [130, 160]
+        const Ray ray{{1.5, 82.0 + 4.0 * u.x, 130.0 + 30.0 * u.y}, direction};
+        RayCount count;
+        const Color l = which == 0 ? estimate(scene, ray, 1, rng, count)
+                                   : reference(scene, ray, 1, rng, count);
+        const double v = l.x + l.y + l.z;
+        sum[which] += v;
+        sum2[which] += v * v;
+      }
+    double mean[2], variance_of_mean[2];
+    for (int i = 0; i < 2; ++i) {
+      mean[i] = sum[i] / n;
+      variance_of_mean[i] = (sum2[i] - sum[i] * mean[i]) / (n - 1.0) / n;
+    }
+    p_values.push_back(z_test_p_value(mean[0], mean[1],
+                                      std::sqrt(variance_of_mean[0] + variance_of_mean[1])));
+  }
+  return sidak_p_value(p_values);
+}
+
 /// The light pdf per steradian integrates to 1 over the light's solid angle: from a point x
 /// that sees the whole light, E over uniform hemisphere directions w of
 /// [w reaches the light] p_w(w) / (1 / 2 pi) is 1. n directions; a z-test of the mean against 1.

@@ -31,6 +31,7 @@
 #include "render/scene.hpp"
 #include "stats/hypothesis.hpp"
 #include "support/color_moments.hpp"
+#include "support/region_comparison.hpp"
 
 namespace mcrt::testing {
 
@@ -227,19 +228,13 @@ struct QuadBoxComparison {
 };
 
 /// The project's render of `scene` (render/render.hpp, `estimate(scene, ray, depth, rng,
-/// count)` per sample) against the reference, block by block. Both estimate each block's mean
+/// count)` per sample) against the reference, by blocks, rows, columns and the image's border
+/// (support/region_comparison.hpp). Both estimate each region's mean
 /// radiance: the mean over its pixels of the pixel's mean over its area (box filter). The
 /// project's render is run once per sample index s (spp 1, first_sample s), so every pixel
 /// value is one sample and its spread is measured; the reference draws from streams
-/// (2^20 + pixel, s), which the render (streams (pixel, s)) never uses. In each block and
-/// channel, the difference d of the two means has variance v = v_ours + v_reference (each the
-/// sum over the block's pixels of their sample variance / n, over the block's pixel count
-/// squared), and d / sqrt(v) is standard normal when both are unbiased (CLT: tens of thousands
-/// of samples per block). A z-test per block and channel, Sidak over all of them: blocks are
-/// independent, a block's three channels are not, and for two-sided z-tests of correlated
-/// normal statistics the Sidak level is conservative (Sidak's inequality), so the family-wise
-/// false-failure rate is at most alpha. (A channel with no spread in either renderer must
-/// agree exactly.)
+/// (2^20 + pixel, s), which the render (streams (pixel, s)) never uses. The z-tests and their
+/// Sidak combination are region_comparison.hpp's (false-failure rate at most alpha).
 template <class Estimate>
 double quad_box_comparison_p_value(const Scene& scene, const QuadBoxComparison& c,
                                    std::uint64_t seed, Estimate&& estimate) {
@@ -262,23 +257,7 @@ double quad_box_comparison_p_value(const Scene& scene, const QuadBoxComparison& 
         reference[p].add(reference_radiance(box, box.eye, d, rng));
       }
   }
-  std::vector<double> p_values;
-  for (int by = 0; by < c.height; by += c.block)
-    for (int bx = 0; bx < c.width; bx += c.block) {
-      Vec3 d(0.0), variance(0.0);
-      for (int y = by; y < by + c.block; ++y)
-        for (int x = bx; x < bx + c.block; ++x) {
-          const auto p = static_cast<std::size_t>(y * c.width + x);
-          d += ours[p].mean() - reference[p].mean();
-          const glm::dmat3 s = ours[p].covariance_of_mean() + reference[p].covariance_of_mean();
-          variance += Vec3(s[0][0], s[1][1], s[2][2]);
-        }
-      // The block mean is d / m with variance v / m^2: the z statistic is the same.
-      for (int k = 0; k < 3; ++k)
-        p_values.push_back(variance[k] > 0.0 ? z_test_p_value(d[k], 0.0, std::sqrt(variance[k]))
-                                             : (d[k] == 0.0 ? 1.0 : 0.0));
-    }
-  return sidak_p_value(p_values);
+  return region_agreement(ours, reference, c.width, c.height, c.block).p_value;
 }
 
 /// Floor points where the lamp's direct light is known in closed form; `whole_box` says

@@ -338,4 +338,54 @@ TaskResult check_nee_regions(Nee&& radiance) {
                                                                 worst % regions, worst / regions, worst_z, worst_ratio))};
 }
 
+/// a5.3 where a sphere light shows more than its cap: cornell-spheres' light is a ball sunk
+/// into the ceiling, and only its cap shows in the room; but the top rows' camera rays start
+/// above the ceiling (140 units in front of the eye) and meet the left wall between the ceiling
+/// and the light, where the light is seen beyond its cap. 4000 rays onto that strip of wall at
+/// depth 1 (the wall's direct light): NEE's mean against a4's path tracer's (4000 paths at
+/// another seed), a z-test from both sample variances, at the three grading seeds.
+template <class Nee>
+double nee_beyond_cap_p_value(Nee&& radiance, std::uint64_t seed, double& ratio) {
+  const Scene scene = make_cornell_spheres();
+  constexpr int n = 4000;
+  const auto collect = [&](auto&& estimate, std::uint64_t at_seed) {
+    RunningStats stats;
+    for (int i = 0; i < n; ++i) {
+      Rng rng(at_seed, stream_index(70, static_cast<std::uint64_t>(i)));
+      const Vec2 u = rng.uniform2();  // a point of the strip: y in [82, 86], z in [130, 160]
+      const Ray ray{{1.5, 82.0 + 4.0 * u.x, 130.0 + 30.0 * u.y}, {-1.0, 0.0, 0.0}};
+      RayCount count;
+      stats.add(average(estimate(ray, rng, count)));
+    }
+    return stats;
+  };
+  const RunningStats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
+    return estimate_path_radiance(scene, ray, 1, rng, count);
+  }, seed ^ 0x5a5aULL);
+  const RunningStats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
+    return radiance(scene, ray, nee_depth_cut(1), rng, count);
+  }, seed);
+  ratio = student.mean() / reference.mean();
+  return z_test_p_value(student.mean(), reference.mean(),
+                        std::sqrt(student.variance() / n + reference.variance() / n));
+}
+
+template <class Nee>
+TaskResult check_nee_light_beyond_cap(Nee&& radiance) {
+  double ratio = 1.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    return nee_beyond_cap_p_value(radiance, seed, ratio);
+  });
+  std::string d;
+  if (!v.passed() && ratio < 0.1)
+    d = diagnosis("almost no light reaches this wall through your shadow rays, though the light is in plain view: "
+                  "do you sample only the cap of the sphere light? That cap is all of it the room can see, not all "
+                  "a point above the ceiling can see: sample_emitter(scene, e, x, u) aims at the part x can see "
+                  "(give it the point the shadow ray starts from)");
+  else if (!v.passed())
+    d = diagnose_mean_ratio(ratio, 1.0);
+  return {v.passed(), fmt::format("cornell-spheres, the left wall above the ceiling, depth 1, your NEE against "
+                                  "a4's path tracer ({:.2f}x its mean): {}\n{}", ratio, v.describe(), d)};
+}
+
 }  // namespace mcrt::testing::assignment
