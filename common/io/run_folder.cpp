@@ -309,10 +309,15 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
   const bool exists = ::stat(target_.c_str(), &target_info) == 0;
   if (exists) {
     remove_stale_staging(target_);
-    if (const std::optional<std::string> foreign = first_foreign_entry(target_))
-      throw UsageError("--out " + quoted(out_) + " holds '" + *foreign +
-                       "', which no run wrote (its " + k_manifest_name +
-                       " does not list it), so it is not replaced; choose a new or empty folder");
+    if (const std::optional<std::string> foreign = first_foreign_entry(target_)) {
+      std::error_code ec;
+      const bool listed = fs::exists(fs::symlink_status(target_ / k_manifest_name, ec));
+      throw UsageError("--out " + quoted(out_) + " holds '" + *foreign + "', which no run wrote (" +
+                       (listed ? std::string("not in its ") + k_manifest_name
+                               : std::string("no ") + k_manifest_name +
+                                     "; a run of an older version? remove it yourself") +
+                       "), so it is not replaced; choose a new or empty folder");
+    }
   }
   staging_ = parent / staging_name(target_.filename().string(), pid);
   if (!exists) {
