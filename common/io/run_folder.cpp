@@ -314,9 +314,8 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
       const bool listed = fs::exists(fs::symlink_status(target_ / k_manifest_name, ec));
       throw UsageError("--out " + quoted(out_) + " holds '" + *foreign + "', which no run wrote (" +
                        (listed ? std::string("not in its ") + k_manifest_name
-                               : std::string("no ") + k_manifest_name +
-                                     "; a run of an older version? remove it yourself") +
-                       "), so it is not replaced; choose a new or empty folder");
+                               : std::string("no ") + k_manifest_name + ": an old version's run?") +
+                       "); not replaced, choose a new or empty folder");
     }
   }
   staging_ = parent / staging_name(target_.filename().string(), pid);
