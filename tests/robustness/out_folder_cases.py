@@ -78,7 +78,8 @@ def case_home(r, chapters, tmp):
     (home / "Documents").mkdir()
     (home / "Documents" / "thesis.tex").write_text("\\chapter{mine}\n")
     shutil.copy(first / "summary.json", home / "summary.json")
-    shutil.copy(first / MANIFEST, home / MANIFEST)  # even a copied manifest does not help
+    if (first / MANIFEST).exists():  # even a copied manifest does not make a home replaceable
+        shutil.copy(first / MANIFEST, home / MANIFEST)
     before = r.snapshot(home)
     elsewhere = parent / "elsewhere"
     elsewhere.mkdir()
@@ -258,7 +259,9 @@ def case_closed_pipe(r, chapters, tmp, name, args, consumer, previous):
             return [f"the first run failed: {r.text(err)[:300]!r}"]
     before = r.snapshot(out)
     command = [chapters[name]] + args + ["--out", str(out)]
-    script = f'"$@" | {consumer}; exit "${{PIPESTATUS[0]}}"'
+    # The chapter starts a moment after the consumer, so the consumer has closed its end before
+    # the first write (0.3 s: a consumer that exits or closes at once needs milliseconds).
+    script = f'{{ sleep 0.3; exec "$@"; }} | {consumer}; exit "${{PIPESTATUS[0]}}"'
     p = subprocess.run(["bash", "-c", script, "bash"] + command, cwd=parent,
                        stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                        stderr=subprocess.PIPE, timeout=r.CASE_TIMEOUT)
