@@ -3,13 +3,13 @@
 Imported by robustness.py, which passes itself in (groups(r)) so the helpers are shared. Each
 case names the README guarantee it checks. Groups:
 
-  out-manifest  "Your folders are safe": only a folder whose manifest lists everything in it is
-                replaced; $HOME never; a FIFO is refused without blocking; another user's shared
-                folder keeps its owner and mode (root only); overlayfs (root only)
-  out-ends      "Every way a run ends": a closed stdout pipe, every handled signal beyond INT and
-                TERM, the staging folder of a killed run
-  out-flags     "Flags and paths": `--flag=` with nothing after it, values that are not UTF-8,
-                folder names of the longest length
+  out-manifest  "A run replaces only what runs wrote": only a folder whose manifest lists
+                everything in it is replaced; $HOME never; a FIFO is refused without blocking.
+                "Shared folders keep their owner and mode" (root only), overlayfs (root only)
+  out-ends      "Signals and pipes": a closed stdout pipe, every handled signal beyond INT and
+                TERM; "Whole folders": the staging folder of a killed run
+  out-flags     "Refused work": `--flag=` with nothing after it, values that are not UTF-8;
+                "Whole folders": folder names of the longest length
 """
 
 import os
@@ -62,7 +62,7 @@ def refused_problems(r, code, err, seconds, names, paths):
 
 
 # ---------------------------------------------------------------------------------------------
-# "Your folders are safe"
+# "A run replaces only what runs wrote", "Shared folders keep their owner and mode"
 
 def case_home(r, chapters, tmp):
     """HOME=H --out ~ (run from another folder), H holding .ssh/, a thesis and a copied
@@ -220,7 +220,8 @@ def group_out_manifest(r, chapters, tmp, checks):
     if CH01 not in chapters:
         checks.case("out-manifest", [f"{CH01} not built"])
         return
-    guarantee = "Your folders are safe: "
+    guarantee = "A run replaces only what runs wrote: "
+    shared = "Shared folders keep their owner and mode: "
     checks.case(guarantee + "HOME=H --out ~ with .ssh/ and a copied summary.json",
                 case_home(r, chapters, tmp))
     checks.case(guarantee + "notes.txt and my_edits/ added inside a previous run",
@@ -229,23 +230,23 @@ def group_out_manifest(r, chapters, tmp, checks):
                 case_summary_alone(r, chapters, tmp))
     checks.case(guarantee + "a FIFO as a previous run's summary.json", case_fifo(r, chapters, tmp))
     for name in [n for n in r.TINY if n in chapters]:
-        checks.case(f"Whole folders: {name}'s manifest lists exactly its folder",
+        checks.case(f"{guarantee}{name}'s manifest lists exactly its folder",
                     case_manifest_lists_everything(r, chapters, tmp, name))
     if os.geteuid() != 0:
         print("SKIP (not root): an empty shared folder of another user keeps owner and mode; "
               "overlayfs")
         return
-    checks.case(guarantee + "an empty shared folder of another user keeps its owner and mode",
+    checks.case(shared + "an empty shared folder of another user, then a second run",
                 case_shared_folder(r, chapters, tmp))
     overlay = case_overlayfs(r, chapters, tmp)
     if overlay is None:
         print("SKIP: overlayfs cannot be mounted here (the EXDEV case)")
     else:
-        checks.case("Whole folders: a previous run on overlayfs (EXDEV) is replaced whole", overlay)
+        checks.case(shared + "a previous run on overlayfs (EXDEV) is replaced whole", overlay)
 
 
 # ---------------------------------------------------------------------------------------------
-# "Every way a run ends"
+# "Signals and pipes", "Whole folders"
 
 def case_closed_pipe(r, chapters, tmp, name, args, consumer, previous):
     """`chapter | consumer` where the consumer closes its end: exit 1, one line naming stdout,
@@ -340,7 +341,7 @@ def group_out_ends(r, chapters, tmp, checks):
     if missing:
         checks.case("out-ends", [f"not built: {missing}"])
         return
-    guarantee = "Every way a run ends: "
+    guarantee = "Signals and pipes: "
     cases = []
     ch08 = "ch08_next_event_estimation"
     pipe_runs = [(CH01, r.TINY[CH01])]
@@ -356,7 +357,7 @@ def group_out_ends(r, chapters, tmp, checks):
     for signum in (signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM):
         cases.append((f"{guarantee}{signal.Signals(signum).name} mid-render", case_signal,
                       (r, chapters, tmp, signum)))
-    cases.append((f"{guarantee}a staging folder whose process is gone", case_stale_staging,
+    cases.append(("Whole folders: a staging folder whose process is gone", case_stale_staging,
                   (r, chapters, tmp)))
     import concurrent.futures
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
@@ -366,7 +367,7 @@ def group_out_ends(r, chapters, tmp, checks):
 
 
 # ---------------------------------------------------------------------------------------------
-# "Flags and paths"
+# "Refused work" (flag values), "Whole folders" (long names)
 
 def case_long_name(r, chapters, tmp, folder_name):
     """A folder name of up to NAME_MAX bytes: two runs, the second replacing the first whole."""
@@ -387,7 +388,7 @@ def case_long_name(r, chapters, tmp, folder_name):
 
 
 def group_out_flags(r, chapters, tmp, checks):
-    guarantee = "Flags and paths: "
+    guarantee = "Refused work: "
     cases = []
     for name, exe in chapters.items():
         text_flags = [flag for flag, kind, _ in r.parse_help(exe) if kind == "text"]
@@ -409,7 +410,7 @@ def group_out_flags(r, chapters, tmp, checks):
             checks.case(futures[future], future.result())
     if CH01 in chapters:
         for folder_name in ("n" * 255, "é" * 127, "x" * 246):
-            checks.case(f"{guarantee}a folder name of {len(folder_name.encode())} bytes",
+            checks.case(f"Whole folders: a folder name of {len(folder_name.encode())} bytes",
                         case_long_name(r, chapters, tmp, folder_name))
 
 
