@@ -84,9 +84,11 @@ def case_home(r, chapters, tmp):
     elsewhere = parent / "elsewhere"
     elsewhere.mkdir()
     start = time.monotonic()
-    p = subprocess.run(tiny(r, chapters) + ["--quiet", "--out", str(home)], cwd=elsewhere,
-                       env=dict(os.environ, HOME=str(home)), stdin=subprocess.DEVNULL,
-                       capture_output=True, timeout=r.CASE_TIMEOUT)
+    # As typed: `HOME=H chapter --out ~`, the shell expanding ~ to H.
+    script = 'export HOME="$1"; shift; exec "$@" --quiet --out ~'
+    p = subprocess.run(["bash", "-c", script, "bash", str(home)] + tiny(r, chapters),
+                       cwd=elsewhere, stdin=subprocess.DEVNULL, capture_output=True,
+                       timeout=r.CASE_TIMEOUT)
     problems = refused_problems(r, p.returncode, p.stderr, time.monotonic() - start,
                                 ["--out"], [home])
     if r.snapshot(home) != before:
