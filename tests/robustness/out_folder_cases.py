@@ -185,6 +185,36 @@ def case_shared_folder(r, chapters, tmp):
     return problems
 
 
+def case_shared_folder_as_another_user(r, chapters, tmp):
+    """The other way round: root's shared folder (3777) in a parent only root may write, given
+    as --out to an unprivileged user (nobody, through setpriv): the run cannot stage beside it,
+    so it writes into it, twice, and the folder stays root's 3777. None without setpriv."""
+    setpriv = shutil.which("setpriv")
+    if not setpriv:
+        return None
+    parent = r.fresh(tmp / "shared_root")
+    os.chmod(parent, 0o755)
+    os.chmod(tmp, 0o755)
+    out = parent / "shared"
+    out.mkdir()
+    os.chmod(out, 0o3777)
+    as_nobody = [setpriv, f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups"]
+    problems = []
+    for seed in ("1", "2"):
+        code, _, err, _ = r.run(as_nobody + tiny(r, chapters) + ["--quiet", "--seed", seed,
+                                                                 "--out", str(out)], cwd=parent)
+        problems += [f"run with seed {seed}: {p}" for p in r.exit_problems(code, 0, err)]
+        info = os.stat(out)
+        if (info.st_uid, stat.S_IMODE(info.st_mode)) != (0, 0o3777):
+            problems.append(f"after the run with seed {seed}: owner {info.st_uid} mode "
+                            f"{stat.S_IMODE(info.st_mode):o}, not root's 3777")
+        if code == 0:
+            problems += whole_run_problems(r, out)
+    if sorted(os.listdir(parent)) != ["shared"]:
+        problems.append(f"left beside --out: {sorted(os.listdir(parent))}")
+    return problems
+
+
 def case_overlayfs(r, chapters, tmp):
     """A previous run in an overlayfs lower layer (a container image): renaming the folder gives
     EXDEV; the run must still replace it whole. None when overlayfs cannot be mounted here."""
@@ -240,6 +270,12 @@ def group_out_manifest(r, chapters, tmp, checks):
         return
     checks.case(shared + "an empty shared folder of another user, then a second run",
                 case_shared_folder(r, chapters, tmp))
+    unprivileged = case_shared_folder_as_another_user(r, chapters, tmp)
+    if unprivileged is None:
+        print("SKIP: no setpriv (root's shared folder, written by nobody)")
+    else:
+        checks.case(shared + "root's shared folder, written into by an unprivileged user",
+                    unprivileged)
     overlay = case_overlayfs(r, chapters, tmp)
     if overlay is None:
         print("SKIP: overlayfs cannot be mounted here (the EXDEV case)")
