@@ -6,10 +6,12 @@
 
 #include "io/interrupt.hpp"
 
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include <unistd.h>
 
@@ -81,6 +83,48 @@ TEST(InterruptTest, ASignalAfterTheFolderIsForgottenStillSaysTheRunWasWritten) {
   expect_interrupted("forgotten", Until::Forgotten, SIGINT,
                      "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'",
                      2);
+}
+
+// Issue 34: SIGHUP (a closed terminal), SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM killed the run
+// without a word and left its staging folder.
+TEST(InterruptTest, EveryHandledSignalEndsTheRunLikeSigterm) {
+  for (const auto& [signal, name] : {std::pair{SIGHUP, "SIGHUP"}, {SIGQUIT, "SIGQUIT"},
+                                     {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"},
+                                     {SIGALRM, "SIGALRM"}})
+    expect_interrupted(std::string("handled_") + name, Until::Writing, signal,
+                       std::string("interrupt_test: interrupted by ") + name +
+                           "; nothing written to '.*out'",
+                       1);
+}
+
+// Issue 34: a write to a closed pipe killed the run (SIGPIPE, exit 141, no message).
+TEST(InterruptTest, AWriteToAClosedPipeFailsInsteadOfKillingTheRun) {
+  EXPECT_EXIT(
+      {
+        mcrt::watch_interrupts("interrupt_test");
+        int fds[2];
+        if (::pipe(fds) != 0) std::_Exit(2);
+        ::close(fds[0]);
+        const ssize_t written = ::write(fds[1], "x", 1);
+        std::_Exit(written < 0 && errno == EPIPE ? 7 : 8);
+      },
+      ::testing::ExitedWithCode(7), "");
+}
+
+// Issue 34: the signal thread waited for a lock that a blocked operation held, so SIGINT and
+// SIGTERM were swallowed. It waits two seconds at most, then ends the run anyway.
+TEST(InterruptTest, AnOperationStuckUnderTheLockDoesNotSwallowTheSignal) {
+  EXPECT_EXIT(
+      {
+        mcrt::watch_interrupts("interrupt_test");
+        mcrt::without_interruption([] {
+          ::kill(::getpid(), SIGTERM);
+          ::sleep(20);  // stuck I/O: far longer than the thread's patience
+        });
+        std::_Exit(0);
+      },
+      ::testing::ExitedWithCode(128 + SIGTERM),
+      "interrupt_test: interrupted by SIGTERM; a file operation did not finish");
 }
 
 }  // namespace

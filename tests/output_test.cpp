@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "support/temp_files.hpp"
@@ -64,6 +66,30 @@ TEST(OutputTest, ADanglingLinkAsTheOutputFolderIsNamedAsSuch) {
   fs::create_symlink(dir / "nowhere", dir / "out");
   const std::string message = io_error([&] { mcrt::prepare_output_dir(dir / "out"); });
   EXPECT_NE(message.find("dangling"), std::string::npos) << message;
+}
+
+// Issue 34: the temporary name was `.<name>.tmp-<pid>-<n>`, so another user could plant links
+// under the next pids' names. It now holds 64 random bits and no pid.
+TEST(OutputTest, TemporaryNamesCannotBeGuessed) {
+  const fs::path first = mcrt::temporary_path_for("/somewhere/summary.json");
+  const fs::path second = mcrt::temporary_path_for("/somewhere/summary.json");
+  EXPECT_EQ(first.parent_path(), fs::path("/somewhere"));  // beside it: rename() is atomic
+  const std::string a = first.filename().string(), b = second.filename().string();
+  EXPECT_EQ(a.rfind(".summary.json.tmp-", 0), 0u) << a;
+  EXPECT_EQ(a.find(std::to_string(::getpid())), std::string::npos) << a;
+  const std::size_t at = std::string(".summary.json.tmp-").size();
+  EXPECT_NE(a.substr(at, 16), b.substr(at, 16)) << a << " " << b;  // not a counter
+}
+
+// Writing over a link replaces the link, never the file it points to.
+TEST(OutputTest, AWriteReplacesALinkAndLeavesItsTargetAlone) {
+  const fs::path dir = fresh_dir("link");
+  write_text(dir / "victim", "precious");
+  fs::create_symlink(dir / "victim", dir / "out.txt");
+  mcrt::write_file_atomic(dir / "out.txt", "new");
+  EXPECT_EQ(read_text(dir / "victim"), "precious");
+  EXPECT_FALSE(fs::is_symlink(dir / "out.txt"));
+  EXPECT_EQ(read_text(dir / "out.txt"), "new");
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -217,6 +219,22 @@ nlohmann::ordered_json run_flags_json(const CLI::App& app) { return option_value
 
 namespace {
 
+// A filesystem_error in the project's words: "cannot access 'P': reason", not the library's
+// "filesystem error: ... [P]".
+std::string filesystem_message(const std::filesystem::filesystem_error& e) {
+  const std::filesystem::path& path = e.path1();
+  return (path.empty() ? std::string("a file operation failed")
+                       : "cannot access '" + path.string() + "'") +
+         ": " + e.code().message();
+}
+
+// A write to stdout that failed (a closed pipe: EPIPE, since SIGPIPE no longer ends the run;
+// a full disk): fmt::print throws system_error, and stdout's error flag tells it apart.
+std::optional<std::string> stdout_failure(const std::system_error& e) {
+  if (!std::ferror(stdout)) return std::nullopt;
+  return "cannot write to stdout: " + e.code().message();
+}
+
 // Flushes stdout. If anything written to it was lost (a full disk, /dev/full, a closed pipe),
 // says so in one line and turns a successful exit code into 1.
 int checked_stdout(const std::string& program, int exit_code) {
@@ -233,9 +251,71 @@ int checked_stdout(const std::string& program, int exit_code) {
   return 1;
 }
 
+// Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates, at most U+10FFFF):
+// every value ends up in summary.json, which holds text only.
+bool is_utf8(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = byte(i);
+    std::size_t length = 0;
+    unsigned char low = 0x80, high = 0xBF;  // the range of the second byte
+    if (lead < 0x80) length = 1;
+    else if (lead >= 0xC2 && lead <= 0xDF) length = 2;
+    else if (lead >= 0xE0 && lead <= 0xEF) {
+      length = 3;
+      if (lead == 0xE0) low = 0xA0;   // overlong
+      if (lead == 0xED) high = 0x9F;  // surrogates
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+      length = 4;
+      if (lead == 0xF0) low = 0x90;   // overlong
+      if (lead == 0xF4) high = 0x8F;  // above U+10FFFF
+    } else {
+      return false;
+    }
+    if (i + length > text.size()) return false;
+    for (std::size_t k = 1; k < length; ++k) {
+      const unsigned char c = byte(i + k);
+      if (k == 1 ? (c < low || c > high) : (c < 0x80 || c > 0xBF)) return false;
+    }
+    i += length;
+  }
+  return true;
+}
+
+// What is wrong with the values on the command line before CLI11 reads them: an empty value,
+// given as `--flag=` (which CLI11 would fill with the next argument) or as `--flag ""`, and a
+// value that is not UTF-8. The message names the flag; nullopt if nothing is wrong.
+std::optional<std::string> refused_value(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view argument = argv[i];
+    if (argument == "--") break;
+    if (argument.size() < 3 || argument.substr(0, 2) != "--") continue;
+    std::string flag;
+    std::string_view value;
+    if (const std::size_t equals = argument.find('='); equals != std::string_view::npos) {
+      flag = std::string(argument.substr(0, equals));
+      value = argument.substr(equals + 1);
+    } else {
+      const CLI::Option* option = app.get_option_no_throw(std::string(argument));
+      if (!option || option->get_expected_min() == 0 || i + 1 >= argc) continue;
+      flag = std::string(argument);
+      value = argv[++i];
+    }
+    if (value.empty()) return flag + ": the value is empty; give one, or leave the flag out";
+    if (!is_utf8(value))
+      return flag + ": the value is not valid UTF-8; give it in UTF-8 (the run's JSON files record it)";
+  }
+  return std::nullopt;
+}
+
 // Parses argv, then runs body; every failure becomes its exit code and one line.
 int parse_and_run(CLI::App& app, const std::string& program, int argc, char** argv,
                   const std::function<int()>& body) {
+  if (const std::optional<std::string> refused = refused_value(app, argc, argv)) {
+    std::cerr << program << ": error: " << *refused << " (see --help)\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -255,6 +335,9 @@ int parse_and_run(CLI::App& app, const std::string& program, int argc, char** ar
     return 2;
   } catch (const IoError& e) {
     std::cerr << program << ": error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << program << ": error: " << filesystem_message(e) << '\n';
     return 1;
   } catch (const std::exception& e) {
     std::cerr << program << ": error: " << e.what() << '\n';
@@ -296,6 +379,14 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
       const std::string message = folder->with_out_name(e.what());
       forget();
       throw UsageError(message);
+    } catch (const std::filesystem::filesystem_error& e) {
+      const std::string message = folder->with_out_name(filesystem_message(e));
+      forget();
+      throw IoError(message);
+    } catch (const std::system_error& e) {
+      const std::string message = folder->with_out_name(stdout_failure(e).value_or(e.what()));
+      forget();
+      throw IoError(message);
     } catch (const std::exception& e) {
       const std::string message = folder->with_out_name(e.what());
       forget();

@@ -112,7 +112,9 @@ class ChapterApp : public CLI::App {
  public:
   ChapterApp(const Chapter& chapter, CommonOptions& common);
   /// run_chapter on this app, with exit code 0 when `body` returns. Before any thread
-  /// starts, SIGINT and SIGTERM are set to end the run cleanly (io/interrupt.hpp). After the
+  /// starts, SIGINT, SIGTERM and the other handled signals are set to end the run cleanly, and
+  /// SIGPIPE to fail a write rather than end the run (io/interrupt.hpp). An empty value
+  /// (`--out=`) or one that is not UTF-8 is refused before parsing. After the
   /// flags are parsed, --out is checked and a staging folder made (io/run_folder.hpp):
   /// `body` writes into common.dir, and only when it returns is that folder swapped in as
   /// --out. Messages about files name them under --out, never under the staging folder.

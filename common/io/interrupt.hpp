@@ -1,10 +1,13 @@
 #pragma once
-/// SIGINT and SIGTERM during a run: the staging folder is removed, child processes (gnuplot)
-/// are stopped, one line is printed, and the program exits with 130 or 143 (128 + the signal).
+/// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM during a run: the staging
+/// folder is removed, child processes (gnuplot) are stopped, one line is printed, and the
+/// program exits with 128 + the signal (130 for SIGINT, 143 for SIGTERM, 129 for SIGHUP, ...).
+/// SIGPIPE never ends a run: a write to a closed pipe fails (EPIPE) and is reported as such.
 ///
-/// Both signals are blocked in main before any thread starts (threads inherit the mask), and
+/// The signals are blocked in main before any thread starts (threads inherit the mask), and
 /// one dedicated thread waits for them with sigwait(), so the cleanup is ordinary code rather
-/// than a signal handler. A lock keeps it from running in the middle of a spawn or a swap.
+/// than a signal handler. A lock keeps it from running in the middle of a spawn or a swap; it
+/// waits for that lock at most two seconds, so I/O stuck under the lock cannot swallow a signal.
 
 #include <functional>
 #include <string>
@@ -15,7 +18,7 @@ namespace mcrt {
 
 class RunFolder;
 
-/// Blocks SIGINT and SIGTERM in the calling thread and starts the thread that waits for them.
+/// Blocks the handled signals in the calling thread, catches SIGPIPE, and starts the thread that waits for them.
 /// Call it once, in main, before any other thread starts; `program` opens the printed line.
 void watch_interrupts(const std::string& program);
 

@@ -2,12 +2,16 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <system_error>
 
 #include <fcntl.h>
+#include <sys/random.h>
 #include <unistd.h>
+
+#include <fmt/format.h>
 
 namespace mcrt {
 
@@ -31,9 +35,17 @@ void prepare_output_dir(const fs::path& dir) {
 }
 
 fs::path temporary_path_for(const fs::path& path) {
+  // 64 random bits: another user cannot guess the name to plant a link under it (and the file
+  // is created with O_EXCL | O_NOFOLLOW besides); the counter keeps names apart if getrandom
+  // fails.
   static std::atomic<unsigned> counter{0};
-  return path.parent_path() / ("." + path.filename().string() + ".tmp-" +
-                               std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::uint64_t random = 0;
+  if (::getrandom(&random, sizeof random, 0) != static_cast<ssize_t>(sizeof random))
+    random = static_cast<std::uint64_t>(::getpid()) << 32;
+  std::string name = ".";
+  name += path.filename().string();
+  name += fmt::format(".tmp-{:016x}-{}", random, counter++);
+  return path.parent_path() / name;
 }
 
 void commit_file(const fs::path& from, const fs::path& to) {
@@ -50,7 +62,8 @@ namespace {
 // Writes all of `bytes` to a new file at `path` and closes it; the system's reason otherwise.
 // write() may write less than asked (a signal, a nearly full disk): it is called until done.
 std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  // A new file only: never one that exists, never through a link.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd < 0) return {errno, std::generic_category()};
   std::error_code failure;
   std::size_t written = 0;

@@ -20,12 +20,14 @@ class IoError : public std::runtime_error {
 /// naming the folder otherwise.
 void prepare_output_dir(const std::filesystem::path& dir);
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see
+/// Writes `bytes` to a new temporary file beside `path` (created with O_EXCL | O_NOFOLLOW under
+/// an unpredictable name, so a planted file or link is never written through), then renames it over `path`: readers see
 /// the old file or the new one, never half of one. Throws IoError on failure (a short write, a
 /// full disk, a failed close or rename), naming the file and the system's reason, leaving nothing.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
-/// A temporary name beside `path` (same folder, so rename() is atomic), unique in this process.
+/// A temporary name beside `path` (same folder, so rename() is atomic) that no one can guess:
+/// `.<name>.tmp-<64 random bits>-<counter>`.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 
 /// Renames `from` over `to`; on failure removes `from` and throws IoError with the rename's reason.

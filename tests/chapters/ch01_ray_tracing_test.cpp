@@ -35,7 +35,7 @@ TEST(Ch01Test, RendersTheCornellBoxAndWritesItsOutputs) {
   EXPECT_EQ(summary["flags"]["width"], "32");
   EXPECT_GT(read_json(dir / "timings.json")["rays_per_second"].get<double>(), 0.0);
   // image.png, image.pfm, summary.json, timings.json: no temporaries left
-  EXPECT_EQ(file_count(dir), 4);
+  EXPECT_EQ(file_count(dir), 5);  // the four files and the run's manifest
 }
 
 TEST(Ch01Test, PrintsASummaryAndHelp) {

@@ -136,7 +136,8 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   }
   EXPECT_EQ(summary["at_budget"].size(), 5u);
 
-  int expected_files = 5;  // errors.csv, slopes.csv, budget.csv, summary.json, timings.json
+  int expected_files = 6;  // errors.csv, slopes.csv, budget.csv, summary.json, timings.json,
+                           // the manifest
   for (const char* plot :
        {"smooth_1d", "discontinuous_1d", "disk_2d", "slopes_vs_k", "error_at_budget_vs_k"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(plot) + ".gp"))) << plot;

@@ -24,6 +24,8 @@ Groups:
   degenerate         zero emission, 1x1 images, --seed 0 at 8x6, a list of one value: exit 0, no
                      warning, every plot
   leading-zeros      --seed 010 is ten (or refused naming --seed), never octal eight
+  out-manifest, out-ends, out-flags
+                     --out, the ways a run ends, and flag values (out_folder_cases.py)
 
 Exit status: 0 all cases held, 1 some failed (each failure printed), 77 skipped (CTest
 SKIP_RETURN_CODE).
@@ -538,7 +540,7 @@ def output_problems(out, reference=None):
     names = sorted(p.name for p in out.iterdir())
     problems = []
     for name in names:
-        if name.startswith("."):
+        if name.startswith(".") and name != ".mcrt-manifest":  # the run's list of its files
             problems.append(f"hidden or temporary file left: {name}")
         path = out / name
         if name.endswith(".png"):
@@ -779,6 +781,12 @@ GROUPS = {
     "foreign-out": group_foreign_out,
     "degenerate": group_degenerate,
 }
+
+# The groups of out_folder_cases.py, given this module for its helpers.
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import out_folder_cases  # noqa: E402  (after the helpers it uses are defined)
+
+GROUPS.update(out_folder_cases.groups(sys.modules[__name__]))
 
 
 def main():
