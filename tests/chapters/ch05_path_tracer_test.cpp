@@ -70,8 +70,9 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   EXPECT_TRUE(std::filesystem::exists(dir / "noise_strip.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "rmse_vs_spp.gp"));
   for (const auto& entry : std::filesystem::directory_iterator(dir))  // the manifest aside
-    if (entry.path().filename() != mcrt::k_manifest_name)
+    if (entry.path().filename() != mcrt::k_manifest_name) {
       EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
+    }
 }
 
 // The error against the reference sees what the two-render estimate cannot: the light a depth

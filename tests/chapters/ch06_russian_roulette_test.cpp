@@ -89,8 +89,9 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
   for (const char* plot : {"bias.gp", "efficiency.gp", "path_length.gp"})
     EXPECT_TRUE(std::filesystem::exists(dir / plot)) << plot;
   for (const auto& entry : std::filesystem::directory_iterator(dir))  // the manifest aside
-    if (entry.path().filename() != mcrt::k_manifest_name)
+    if (entry.path().filename() != mcrt::k_manifest_name) {
       EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
+    }
 }
 
 // The example of the docs and the issue: the furnace of albedo 0.8 renders Le / (1 - a) = 5.

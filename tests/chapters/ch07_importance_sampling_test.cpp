@@ -67,8 +67,9 @@ TEST(Ch07Test, TinyRunWritesImagesTablesAndSummary) {
   EXPECT_TRUE(std::filesystem::exists(dir / "noise_strip.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "variance_vs_m.gp"));
   for (const auto& entry : std::filesystem::directory_iterator(dir))  // the manifest aside
-    if (entry.path().filename() != mcrt::k_manifest_name)
+    if (entry.path().filename() != mcrt::k_manifest_name) {
       EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
+    }
 }
 
 // The example: with the cosine pdf every path in the furnace returns Le (1 - a^6) /
