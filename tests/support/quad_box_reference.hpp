@@ -240,24 +240,17 @@ double quad_box_comparison_p_value(const Scene& scene, const QuadBoxComparison& 
                                    std::uint64_t seed, Estimate&& estimate) {
   const ReferenceQuadBox box = make_reference_quad_box();
   const Camera camera(scene.camera, c.width, c.height);
-  const auto pixels = static_cast<std::size_t>(c.width * c.height);
-  std::vector<ColorMoments> ours(pixels), reference(pixels);
-  for (int s = 0; s < c.samples; ++s) {
-    const RenderSettings settings{1, static_cast<std::uint64_t>(s), seed, 1, nullptr};
-    const Image image = render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-                          return estimate(scene, ray, c.depth, rng, count);
-                        }).image;
-    for (int y = 0; y < c.height; ++y)
-      for (int x = 0; x < c.width; ++x) {
-        const auto p = static_cast<std::size_t>(y * c.width + x);
-        ours[p].add(image.at(x, y));
-        Rng rng(seed, stream_index((std::uint64_t{1} << 20) + p, static_cast<std::uint64_t>(s)));
+  const PairedMoments m = paired_pixel_moments(
+      camera, c.width, c.height, c.samples, seed,
+      [&](const Ray& ray, Rng& rng, RayCount& count) {
+        return estimate(scene, ray, c.depth, rng, count);
+      },
+      [&](int x, int y, Rng& rng) {
         const Vec2 u = rng.uniform2();  // the box filter: a uniform point of the pixel
         const Vec3 d = reference_camera_direction(box, c.width, c.height, x + u.x, y + u.y);
-        reference[p].add(reference_radiance(box, box.eye, d, rng));
-      }
-  }
-  return region_agreement(ours, reference, c.width, c.height, c.block).p_value;
+        return reference_radiance(box, box.eye, d, rng);
+      });
+  return region_agreement(m.ours, m.reference, c.width, c.height, c.block).p_value;
 }
 
 /// Floor points where the lamp's direct light is known in closed form; `whole_box` says

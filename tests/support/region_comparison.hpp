@@ -19,6 +19,9 @@
 #include <vector>
 
 #include "core/math.hpp"
+#include "core/rng.hpp"
+#include "geometry/camera.hpp"
+#include "render/render.hpp"
 #include "stats/hypothesis.hpp"
 #include "support/color_moments.hpp"
 
@@ -48,6 +51,33 @@ inline std::vector<std::vector<std::size_t>> comparison_regions(int width, int h
     for (int x = 0; x < width; ++x)
       if (x == 0 || y == 0 || x == width - 1 || y == height - 1) border.push_back(index(x, y));
   return regions;
+}
+
+/// The per-pixel moments of both renders of a comparison, sample by sample: the project's
+/// (render/render.hpp run once per sample index s, spp 1, so every pixel value is one sample
+/// and its spread is measured) and the reference's `reference(x, y, rng)` for pixel (x, y),
+/// drawn from streams (2^20 + pixel, s), which the project's render never uses.
+struct PairedMoments {
+  std::vector<ColorMoments> ours, reference;
+};
+template <class Estimate, class Reference>
+PairedMoments paired_pixel_moments(const Camera& camera, int width, int height, int samples,
+                                   std::uint64_t seed, Estimate&& estimate,
+                                   Reference&& reference) {
+  const auto pixels = static_cast<std::size_t>(width * height);
+  PairedMoments m{std::vector<ColorMoments>(pixels), std::vector<ColorMoments>(pixels)};
+  for (int s = 0; s < samples; ++s) {
+    const RenderSettings settings{1, static_cast<std::uint64_t>(s), seed, 1, nullptr};
+    const Image image = render(camera, settings, estimate).image;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const auto p = static_cast<std::size_t>(y * width + x);
+        m.ours[p].add(image.at(x, y));
+        Rng rng(seed, stream_index((std::uint64_t{1} << 20) + p, static_cast<std::uint64_t>(s)));
+        m.reference[p].add(reference(x, y, rng));
+      }
+  }
+  return m;
 }
 
 /// The worst region of a comparison, for a failure's message.

@@ -117,24 +117,15 @@ RegionVerdict sphere_box_comparison(const Scene& scene, const SphereBoxCompariso
   const Vec3 eye(50, 52, 295.6), forward = glm::normalize(Vec3(0, -0.042612, -1));
   const Vec3 cx(c.width * 0.5135 / c.height, 0, 0);
   const Vec3 cy = glm::normalize(glm::cross(cx, forward)) * 0.5135;
-  const auto pixels = static_cast<std::size_t>(c.width * c.height);
-  std::vector<ColorMoments> ours(pixels), reference(pixels);
-  for (int s = 0; s < c.samples; ++s) {
-    const RenderSettings settings{1, static_cast<std::uint64_t>(s), seed, 1, nullptr};
-    const Image image = render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-                          return estimate(scene, ray, rng, count);
-                        }).image;
-    for (int y = 0; y < c.height; ++y)
-      for (int x = 0; x < c.width; ++x) {
-        const auto p = static_cast<std::size_t>(y * c.width + x);
-        ours[p].add(image.at(x, y));
-        Rng rng(seed, stream_index((std::uint64_t{1} << 20) + p, static_cast<std::uint64_t>(s)));
+  const PairedMoments m = paired_pixel_moments(
+      camera, c.width, c.height, c.samples, seed,
+      [&](const Ray& ray, Rng& rng, RayCount& count) { return estimate(scene, ray, rng, count); },
+      [&](int x, int y, Rng& rng) {
         const Vec2 u = rng.uniform2();
         const Vec3 d = cx * ((x + u.x) / c.width - 0.5) + cy * (0.5 - (y + u.y) / c.height) + forward;
-        reference[p].add(reference_sphere_radiance(box, eye + d * 140.0, glm::normalize(d), rng));
-      }
-  }
-  return region_agreement(ours, reference, c.width, c.height, c.block);
+        return reference_sphere_radiance(box, eye + d * 140.0, glm::normalize(d), rng);
+      });
+  return region_agreement(m.ours, m.reference, c.width, c.height, c.block);
 }
 
 }  // namespace mcrt::testing
