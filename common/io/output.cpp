@@ -9,6 +9,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "io/exclusive_file.hpp"
+
 namespace mcrt {
 
 namespace fs = std::filesystem;
@@ -31,9 +33,7 @@ void prepare_output_dir(const fs::path& dir) {
 }
 
 fs::path temporary_path_for(const fs::path& path) {
-  static std::atomic<unsigned> counter{0};
-  return path.parent_path() / ("." + path.filename().string() + ".tmp-" +
-                               std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  return path.parent_path() / std::string(".").append(path.filename().string()).append(".tmp-").append(random_suffix());
 }
 
 void commit_file(const fs::path& from, const fs::path& to) {
@@ -50,7 +50,8 @@ namespace {
 // Writes all of `bytes` to a new file at `path` and closes it; the system's reason otherwise.
 // write() may write less than asked (a signal, a nearly full disk): it is called until done.
 std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                        k_temporary_mode);  // a new file, never one planted under this name
   if (fd < 0) return {errno, std::generic_category()};
   std::error_code failure;
   std::size_t written = 0;
