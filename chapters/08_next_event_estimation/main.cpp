@@ -111,10 +111,15 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
 
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
+  // The shoot-out's furnace ends paths by roulette only: at albedo 1 they never end.
+  if (o.scene.params.furnace_albedo >= 1.0)
+    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
+                     "is infinite");
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --reference-spp, --width, --height",
                   o.common.threads, "lower one of them");
   const std::filesystem::path reference_dir =
       o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
+  check_reference_folder(reference_dir);
 
   const Reference reference = load_or_render_reference(
       reference_dir, reference_spec(o, o.scene.scene, o.scene.params.light_scale));
