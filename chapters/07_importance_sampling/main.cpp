@@ -98,6 +98,10 @@ struct RenderWithPdf {
 
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
+  // The furnace study's closed forms (mean and variance) diverge at albedo 1.
+  if (o.scene.params.furnace_albedo >= 1.0)
+    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
+                     "is infinite");
   check_ray_limit(predicted_work(o), k_max_rays,
                   "--spp, --reference-spp, --depth, --width, --height", o.common.threads,
                   "lower one of them");
