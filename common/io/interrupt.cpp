@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/parallel.hpp"
 #include "io/run_folder.hpp"
 
 namespace mcrt {
@@ -79,7 +80,7 @@ void watch_interrupts(const std::string& program) {
   std::call_once(once, [&] {
     const sigset_t set = interrupt_signals();
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
-    std::thread(wait_for_interrupt, program).detach();
+    start_detached_or_exit(program, [program] { wait_for_interrupt(program); });
   });
 }
 

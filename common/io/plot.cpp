@@ -275,7 +275,13 @@ std::string reason_for_incomplete(const fs::path& dir, const std::string& proble
 // broken, hanging) leaves the run's scripts and data written, with a note, like a missing one.
 bool gnuplot_can_draw(const fs::path& dir) {
   static const std::optional<std::string> problem = [&]() -> std::optional<std::string> {
-    const GnuplotRun probe = run_gnuplot(dir, {"-e", "set terminal pngcairo; set terminal svg"});
+    GnuplotRun probe;
+    try {
+      probe = run_gnuplot(dir, {"-e", "set terminal pngcairo; set terminal svg"});
+    } catch (const IoError& e) {  // it cannot be started (no process left under ulimit -u)
+      const std::string why = e.what();  // "cannot run gnuplot: <the system's reason>"
+      return "it cannot be started (" + why.substr(why.find(": ") + 2) + ")";
+    }
     if (probe.timed_out)
       return fmt::format("it did not answer within {} s", gnuplot_time_limit_ms() / 1000);
     const auto [message, only_warnings] = first_message(probe.messages);
