@@ -37,6 +37,7 @@
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
+#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/plot.hpp"
 #include "io/ray_limit.hpp"
@@ -148,6 +149,12 @@ void run(const CLI::App& app, const Options& o) {
   if (o.reference_spp > 0) check_reference_folder(reference_dir(o));
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --depth, --width, --height",
                   o.common.threads, "lower one of them");
+  // A pair of renders, the reference's three and one kept per spp for the noise strip (measured:
+  // 134 bytes per pixel at --spp 1,2,4, counted 240).
+  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height,
+                                      7.0 + static_cast<double>(o.spp.size()), o.common.threads,
+                                      "7 + spp values images"),
+                     "--width, --height, --spp", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   std::optional<Reference> reference;

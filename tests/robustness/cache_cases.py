@@ -19,6 +19,11 @@ README guarantee it checks:
                    hanging gnuplot and one that cannot draw PNG leave the run written with a note.
   divergent        [Refused work] --albedo 1 where a furnace's paths would never end: exit 2,
                    one line naming --albedo, within a second.
+  memory-threads   [Memory and threads] every renderer under `ulimit -v` below its predicted
+                   peak: exit 2 within a second, one line with the estimate and the flags; no
+                   thread for the workers: a run on one thread with a note; no thread at all:
+                   one line, exit 1. The thread cases run as an unused uid (root only: the
+                   process limit does not bind root), skipped with one line otherwise.
 """
 
 import concurrent.futures
@@ -54,6 +59,7 @@ def register(robustness):
         "cache-integrity": group_cache_integrity,
         "gnuplot-env": group_gnuplot_env,
         "divergent": group_divergent,
+        "memory-threads": group_memory_threads,
     })
 
 
@@ -516,3 +522,114 @@ def group_divergent(chapters, tmp, checks):
         if os.listdir(parent):
             problems.append(f"left: {os.listdir(parent)}")
         checks.case(f"[Refused work] {name} {' '.join(args)}", problems)
+
+
+# ---------------------------------------------------------------------------------------------
+# Memory and threads are work too.
+
+def limited(limits, uid=None):
+    """A preexec_fn that sets resource limits (and then drops to uid: the process limit counts
+    the processes of a user, and binds only one that is not root)."""
+    import resource
+
+    def apply():
+        for which, value in limits:
+            resource.setrlimit(which, (value, value))
+        if uid is not None:
+            os.setgroups([])
+            os.setgid(uid)
+            os.setuid(uid)
+    return apply
+
+
+def run_limited(command, cwd, preexec, timeout=20.0):
+    start = time.monotonic()
+    try:
+        p = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           stdin=subprocess.DEVNULL, timeout=timeout, preexec_fn=preexec)
+    except subprocess.TimeoutExpired as e:
+        return None, e.stdout or b"", e.stderr or b"", time.monotonic() - start
+    return p.returncode, p.stdout, p.stderr, time.monotonic() - start
+
+
+# A uid no account uses: its process count is this suite's alone (other suites on the machine
+# may run as nobody at the same time).
+UNUSED_UID = 64917
+
+
+def group_memory_threads(chapters, tmp, checks):
+    import resource
+    gigabyte = 1 << 30
+    # Each renderer at a size whose images alone exceed the address space allowed, with work
+    # small enough that the ray limits pass: the memory estimate must refuse it.
+    cases = [
+        ("ch01_ray_tracing", ["--width", "8192", "--height", "4096", "--spp", "1"]),
+        ("ch04_recursive_nk", ["--width", "4096", "--height", "2048", "--spp", "1",
+                               "--branching", "1", "--max-depth", "1", "--equal-cost-depth",
+                               "1", "--max-rays", "1e12"]),
+        ("ch05_path_tracer", ["--width", "8192", "--height", "4096", "--spp", "1", "--depth",
+                              "0", "--reference-spp", "0"]),
+        ("ch06_russian_roulette", ["--width", "8192", "--height", "4096", "--spp", "1",
+                                   "--depth", "0", "--paths", "100", "--q", "0.5"]),
+        ("ch07_importance_sampling", ["--width", "8192", "--height", "4096", "--spp", "1",
+                                      "--depth", "0", "--reference-spp", "1"]),
+        ("ch08_next_event_estimation", ["--width", "2048", "--height", "1024", "--spp", "1",
+                                        "--reference-spp", "2"]),
+    ]
+    cases = [c for c in cases if c[0] in chapters]
+    for i, (name, args) in enumerate(cases):
+        parent = base.fresh(tmp / f"mem{i}")
+        # 1 GB of address space: less than any of these runs' images, more than the program.
+        code, _, err, seconds = run_limited(
+            [chapters[name]] + args + ["--quiet", "--out", str(parent / "out")], parent,
+            limited([(resource.RLIMIT_AS, gigabyte)]))
+        problems = base.exit_problems(code, 2, err) + base.one_line_problems(err, [parent])
+        message = base.text(err)
+        if "memory" not in message or not base.names_a_large_estimate(message):
+            problems.append(f"message gives no memory estimate: {message!r}")
+        if "--width" not in message:
+            problems.append(f"message does not name --width: {message!r}")
+        if seconds > 1.0:
+            problems.append(f"took {seconds:.2f} s to refuse (limit 1 s)")
+        if (parent / "out").exists():
+            problems.append("--out was created")
+        checks.case(f"[Memory and threads] {name} {' '.join(args)} under ulimit -v 1 GB",
+                    problems)
+
+    if os.geteuid() != 0:
+        print("SKIP: the thread cases need root to run as an unused uid; they did not run")
+        return
+    name = "ch02_disk_area"
+    if name not in chapters:
+        return
+    tiny = base.TINY[name] + ["--threads", "4", "--quiet"]
+    # Threads and processes of the uid: 1, the process alone (its interruption watcher cannot
+    # start); 2, that watcher and no worker (nor gnuplot).
+    for limit in (1, 2):
+        shared = shared_folder(tmp)
+        try:
+            out = shared / "out"
+            code, _, err, _ = run_limited(
+                [chapters[name]] + tiny + ["--out", str(out)], shared,
+                limited([(resource.RLIMIT_NPROC, limit)], UNUSED_UID))
+            lines = base.lines_of(err)
+            if limit == 1:
+                problems = base.exit_problems(code, 1, err) + base.one_line_problems(err, [shared])
+                if "thread" not in base.text(err):
+                    problems.append(f"the line does not say a thread failed: {err!r}")
+                if out.exists():
+                    problems.append("--out was created")
+                what = "no thread at all: one line, exit 1"
+            else:
+                problems = base.exit_problems(code, 0, err)
+                if not any("threads could be started" in line for line in lines):
+                    problems.append(f"no note about the threads: {base.text(err)!r}")
+                if any(not line.startswith("note:") for line in lines):
+                    problems.append(f"stderr beyond notes: {base.text(err)!r}")
+                if code == 0 and not (out / "disk_area.csv").is_file():
+                    problems.append("the run's tables are missing")
+                what = "no worker thread: the run on one thread, with a note"
+            checks.case(f"[Memory and threads] {name} --threads 4 under ulimit -u {limit} "
+                        f"({what})", problems)
+        finally:
+            shutil.rmtree(shared, ignore_errors=True)

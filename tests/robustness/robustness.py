@@ -24,9 +24,9 @@ Groups:
   degenerate         zero emission, 1x1 images, --seed 0 at 8x6, a list of one value: exit 0, no
                      warning, every plot
   leading-zeros      --seed 010 is ten (or refused naming --seed), never octal eight
-  cache-links, cache-integrity, gnuplot-env, divergent
-                     the reference cache, temporary files, gnuplot and divergent parameters
-                     under attack: see cache_cases.py
+  cache-links, cache-integrity, gnuplot-env, divergent, memory-threads
+                     the reference cache, temporary files, gnuplot, divergent parameters,
+                     memory and threads under attack: see cache_cases.py
 
 Exit status: 0 all cases held, 1 some failed (each failure printed), 77 skipped (CTest
 SKIP_RETURN_CODE).
