@@ -48,13 +48,28 @@ double left_under(int resource, double used) {
   return std::max(0.0, static_cast<double>(limit.rlim_cur) - (std::isfinite(used) ? used : 0.0));
 }
 
+// What a container's memory limit (cgroup v2: memory.max less memory.current) leaves;
+// infinity outside one or without a limit.
+double left_in_cgroup() {
+  std::ifstream max_file("/sys/fs/cgroup/memory.max");
+  std::ifstream current_file("/sys/fs/cgroup/memory.current");
+  std::string max_text;
+  double current = 0.0;
+  if (!(max_file >> max_text) || max_text == "max" || !(current_file >> current)) return HUGE_VAL;
+  try {
+    return std::max(0.0, std::stod(max_text) - current);
+  } catch (const std::exception&) {
+    return HUGE_VAL;
+  }
+}
+
 }  // namespace
 
 double available_memory_bytes() {
   const double machine = proc_kilobytes("/proc/meminfo", "MemAvailable");
   const double address_space = left_under(RLIMIT_AS, proc_kilobytes("/proc/self/status", "VmSize"));
   const double data = left_under(RLIMIT_DATA, proc_kilobytes("/proc/self/status", "VmData"));
-  return std::min({machine, address_space, data});
+  return std::min({machine, left_in_cgroup(), address_space, data});
 }
 
 void check_memory_limit(const MemoryUse& use, std::string_view flags, std::string_view remedy) {

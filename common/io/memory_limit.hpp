@@ -28,7 +28,8 @@ inline MemoryUse images_in_memory(double pixels, double images, int threads,
 }
 
 /// The memory this process may still take: the smallest of the machine's available memory
-/// (MemAvailable in /proc/meminfo) and what `ulimit -v` (RLIMIT_AS) and `ulimit -d`
+/// (MemAvailable in /proc/meminfo), what a container's limit leaves (cgroup v2 memory.max
+/// less memory.current), and what `ulimit -v` (RLIMIT_AS) and `ulimit -d`
 /// (RLIMIT_DATA) leave beside what it holds already. Infinity when none is known.
 double available_memory_bytes();
 
