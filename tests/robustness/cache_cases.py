@@ -493,7 +493,7 @@ def group_gnuplot_env(chapters, tmp, checks):
                 problems.append(f"files {names}, expected every file but the plots' {expected}")
         if seconds > 10.0:  # one probe of 1 s at most, then no gnuplot at all
             problems.append(f"took {seconds:.1f} s")
-        left = base.processes_using(bin_dir)
+        left = base.processes_using(bin_dir) + base.processes_using(parent)
         if left:
             problems.append(f"gnuplot's processes left running: {left}")
             for entry in left:
