@@ -13,6 +13,7 @@
 
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
+#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/ray_limit.hpp"
 #include "io/render_summary.hpp"
@@ -95,6 +96,10 @@ void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --width, --height", o.common.threads,
                   "lower one of them");
+  // At most 3 images at once (measured: 36 bytes per pixel at 1024x512).
+  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 3.0,
+                                      o.common.threads, "3 images of --width x --height"),
+                     "--width, --height", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
 

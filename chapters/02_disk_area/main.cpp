@@ -25,6 +25,7 @@
 #include "integration/disk_counter.hpp"
 #include "integration/error_study.hpp"
 #include "integration/log_grid.hpp"
+#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"
 #include "io/work_limit.hpp"
@@ -193,6 +194,9 @@ Results run_studies(const Options& o) {
 }
 
 void run(const CLI::App& app, const Options& o) {
+  // No images: the program, its threads and its tables (a failed allocation still says why).
+  check_memory_limit(images_in_memory(0.0, 0.0, o.common.threads, "the program and its threads"),
+                     "--threads", "lower it");
   const Results r = run_studies(o);
   write_csv(o.common.dir / "disk_area.csv", r.disk);
   write_csv(o.common.dir / "ball_volume.csv", r.balls);

@@ -23,6 +23,7 @@
 #include "integration/error_study.hpp"
 #include "integration/monte_carlo.hpp"
 #include "integration/quadrature.hpp"
+#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/summary.hpp"
 #include "io/table.hpp"
@@ -152,6 +153,9 @@ void write_plots(const Options& o, const Plan& plan, const Results& r) {
 }
 
 void run(const CLI::App& app, const Options& o) {
+  // No images: the program, its threads and its tables (a failed allocation still says why).
+  check_memory_limit(images_in_memory(0.0, 0.0, o.common.threads, "the program and its threads"),
+                     "--threads", "lower it");
   const Plan plan = make_plan(o.dims, o.max_evaluations, o.trials);
   // Every task (a grid n, or N with its trials) on any core, largest first; each writes
   // only its own estimate, so the numbers do not depend on --threads.

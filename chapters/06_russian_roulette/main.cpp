@@ -28,6 +28,7 @@
 
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
+#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/ray_limit.hpp"
 #include "io/table.hpp"
@@ -98,6 +99,10 @@ void check_request(const Options& o) {
                      "is infinite");
   check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --spp, --depth",
                   o.common.threads, "lower one of them, or the image size");
+  // At most 3 images at once (measured: 34 bytes per pixel at 1024x512).
+  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 3.0,
+                                      o.common.threads, "3 images of --width x --height"),
+                     "--width, --height", "lower them");
 }
 
 template <class Estimator>

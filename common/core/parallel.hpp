@@ -7,14 +7,42 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <cstdio>
+#include <cstdlib>
 #include <mutex>
+#include <string>
+#include <system_error>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace mcrt {
 
 /// The number of hardware threads (at least 1): the default for --threads.
 inline int hardware_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+/// Says once, on stderr, that only `started` of `wanted` threads could be created and why.
+inline void note_fewer_threads(std::size_t started, std::size_t wanted, const std::string& why) {
+  static std::atomic<bool> told{false};
+  if (told.exchange(true)) return;
+  std::fprintf(stderr,
+               "note: only %zu of %zu threads could be started (%s); the run goes on with %zu\n",
+               started, wanted, why.c_str(), std::max<std::size_t>(started, 1));
+}
+
+/// Starts `body` on a detached thread. If the system gives no thread (ulimit -u), says so in
+/// one line opened by `program` and exits with code 1, before any work: a run whose helper
+/// thread cannot start does not start.
+template <class Body>
+void start_detached_or_exit(const std::string& program, Body&& body) {
+  try {
+    std::thread(std::forward<Body>(body)).detach();
+  } catch (const std::system_error& e) {
+    std::fprintf(stderr, "%s: error: cannot start a thread: %s\n", program.c_str(),
+                 e.code().message().c_str());
+    std::exit(1);
+  }
+}
 
 template <class Body>
 void parallel_for(std::size_t count, int threads, Body&& body) {
@@ -41,7 +69,14 @@ void parallel_for(std::size_t count, int threads, Body&& body) {
   // the other threads (the lecture's render loop ran 1.5x one thread instead of 2x).
   std::vector<std::jthread> pool;
   pool.reserve(workers);
-  for (std::size_t t = 0; t < workers; ++t) pool.emplace_back(work);
+  try {
+    for (std::size_t t = 0; t < workers; ++t) pool.emplace_back(work);
+  } catch (const std::system_error& e) {
+    // The system gives no more threads (ulimit -u, a container's pids limit): the run goes on
+    // with those it has, or on this thread alone; its results do not depend on the count.
+    note_fewer_threads(pool.size(), workers, e.code().message());
+    if (pool.empty()) work();
+  }
   pool.clear();  // joins
   if (failure) std::rethrow_exception(failure);
 }

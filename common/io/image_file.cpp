@@ -7,6 +7,15 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <charconv>
+#include <cctype>
+#include <cerrno>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
 
 #include <stb_image_write.h>
 
@@ -55,30 +64,80 @@ std::string encode_pfm(const Image& image) {
   return bytes;
 }
 
-Image read_pfm(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw IoError("cannot open '" + path.string() + "'");
-  std::string magic;
-  int width = 0, height = 0;
+Image decode_pfm(std::string_view bytes, const std::string& name) {
+  // The header: "PF", width, height, scale, each ended by one whitespace character.
+  std::size_t pos = 0;
+  const auto token = [&]() -> std::string_view {
+    while (pos < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const std::size_t begin = pos;
+    while (pos < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    return bytes.substr(begin, pos - begin);
+  };
+  const std::string_view magic = token(), width_text = token(), height_text = token(),
+                         scale_text = token();
+  ++pos;  // the single whitespace character after the scale
+  long long width = 0, height = 0;
   double scale = 0.0;
-  file >> magic >> width >> height >> scale;
-  file.get();  // the single whitespace character after the scale
-  if (!file || magic != "PF" || width <= 0 || height <= 0 || scale == 0.0)
-    throw IoError("'" + path.string() + "' is not a colour PFM file");
-  Image image(width, height);
+  const auto number = [](std::string_view text, auto& value) {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+  };
+  if (magic != "PF" || !number(width_text, width) || !number(height_text, height) ||
+      !number(scale_text, scale) || width <= 0 || height <= 0 || scale == 0.0 ||
+      !std::isfinite(scale) || width > (1 << 20) || height > (1 << 20) || pos > bytes.size())
+    throw IoError("'" + name + "' is not a colour PFM file");
+  // The size the header promises, checked before a pixel is allocated.
+  const auto floats = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
+  const std::size_t expected = pos + floats * sizeof(float);
+  if (bytes.size() != expected)
+    throw IoError(fmt::format("'{}' holds {} bytes, but its header ({}x{}) needs {}", name,
+                              bytes.size(), width, height, expected));
+  Image image(static_cast<int>(width), static_cast<int>(height));
   const bool swap = (scale > 0.0) != (std::endian::native == std::endian::big);
-  for (int y = height - 1; y >= 0; --y)
-    for (int x = 0; x < width; ++x)
+  const char* in = bytes.data() + pos;
+  for (int y = image.height - 1; y >= 0; --y)
+    for (int x = 0; x < image.width; ++x)
       for (int c = 0; c < 3; ++c) {
         std::uint32_t bits = 0;
-        file.read(reinterpret_cast<char*>(&bits), sizeof bits);
+        std::memcpy(&bits, in, sizeof bits);
+        in += sizeof bits;
         if (swap) bits = __builtin_bswap32(bits);
         float v;
         std::memcpy(&v, &bits, sizeof v);
         image.at(x, y)[c] = v;
       }
-  if (!file) throw IoError("'" + path.string() + "' is truncated");
   return image;
+}
+
+Image read_pfm(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0)
+    throw IoError("cannot open '" + name + "': " + std::strerror(errno));
+  if (!S_ISREG(status.st_mode))  // a FIFO would block the open, a device read forever
+    throw IoError("'" + name + "' is not a regular file");
+  // O_NONBLOCK: a file swapped for a FIFO after the stat is not waited on.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw IoError("cannot open '" + name + "': " + std::strerror(errno));
+  std::string bytes;
+  const bool regular = ::fstat(fd, &status) == 0 && S_ISREG(status.st_mode);
+  // A PFM of the largest image (16384 x 16384 floats x 3) and its header, no more.
+  constexpr off_t k_largest_pfm = off_t{16384} * 16384 * 12 + 64;
+  if (regular && status.st_size <= k_largest_pfm) {
+    bytes.resize(static_cast<std::size_t>(status.st_size));
+    std::size_t got = 0;
+    while (got < bytes.size()) {
+      const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    bytes.resize(got);
+  }
+  ::close(fd);
+  if (!regular) throw IoError("'" + name + "' is not a regular file");
+  if (status.st_size > k_largest_pfm) throw IoError("'" + name + "' is too large for a PFM file");
+  return decode_pfm(bytes, name);
 }
 
 void write_png(const std::filesystem::path& path, const Image& image) {

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "core/parallel.hpp"
 #include "io/run_folder.hpp"
 
 namespace mcrt {
@@ -118,7 +119,7 @@ void watch_interrupts(const std::string& program) {
     sigemptyset(&broken_pipe.sa_mask);
     broken_pipe.sa_flags = SA_RESTART;
     ::sigaction(SIGPIPE, &broken_pipe, nullptr);
-    std::thread(wait_for_interrupt, program).detach();
+    start_detached_or_exit(program, [program] { wait_for_interrupt(program); });
   });
 }
 

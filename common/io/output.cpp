@@ -1,6 +1,5 @@
 #include "io/output.hpp"
 
-#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -8,10 +7,9 @@
 #include <system_error>
 
 #include <fcntl.h>
-#include <sys/random.h>
 #include <unistd.h>
 
-#include <fmt/format.h>
+#include "io/exclusive_file.hpp"
 
 namespace mcrt {
 
@@ -35,17 +33,7 @@ void prepare_output_dir(const fs::path& dir) {
 }
 
 fs::path temporary_path_for(const fs::path& path) {
-  // 64 random bits: another user cannot guess the name to plant a link under it (and the file
-  // is created with O_EXCL | O_NOFOLLOW besides); the counter keeps names apart if getrandom
-  // fails.
-  static std::atomic<unsigned> counter{0};
-  std::uint64_t random = 0;
-  if (::getrandom(&random, sizeof random, 0) != static_cast<ssize_t>(sizeof random))
-    random = static_cast<std::uint64_t>(::getpid()) << 32;
-  std::string name = ".";
-  name += path.filename().string();
-  name += fmt::format(".tmp-{:016x}-{}", random, counter++);
-  return path.parent_path() / name;
+  return path.parent_path() / std::string(".").append(path.filename().string()).append(".tmp-").append(random_suffix());
 }
 
 void commit_file(const fs::path& from, const fs::path& to) {
@@ -62,8 +50,8 @@ namespace {
 // Writes all of `bytes` to a new file at `path` and closes it; the system's reason otherwise.
 // write() may write less than asked (a signal, a nearly full disk): it is called until done.
 std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
-  // A new file only: never one that exists, never through a link.
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                        k_temporary_mode);  // a new file, never one planted under this name
   if (fd < 0) return {errno, std::generic_category()};
   std::error_code failure;
   std::size_t written = 0;

@@ -14,7 +14,14 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+#include <chrono>
+#include <optional>
+#include <vector>
+
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/statvfs.h>
 #include <sys/wait.h>
@@ -128,10 +135,49 @@ std::string script_text(const Plot& p) {
   return s.str();
 }
 
-// Runs `gnuplot script` in `dir` (no shell: the folder's name never reaches a command line or
-// a script) and returns its exit status and what it wrote on stderr. An interruption meanwhile
-// stops it (io/interrupt.hpp).
-std::pair<int, std::string> run_gnuplot(const fs::path& dir, const std::string& script) {
+// gnuplot's environment: ours without the variables that change what gnuplot reads or draws
+// (GNUPLOT_LIB, GNUPLOT_DRIVER_DIR, GNUTERM, ...). Its init files are skipped by -d.
+std::vector<std::string> gnuplot_environment() {
+  std::vector<std::string> variables;
+  for (char** v = environ; *v != nullptr; ++v) {
+    const std::string_view variable = *v;
+    if (variable.starts_with("GNUPLOT") || variable.starts_with("GNUTERM")) continue;
+    variables.emplace_back(variable);
+  }
+  return variables;
+}
+
+// How long one gnuplot may run: a plot of a few thousand points draws in well under a second,
+// and 30 s leaves room for a machine shared by many. MCRT_GNUPLOT_TIMEOUT (seconds, 1 to 3600)
+// sets another limit (the robustness suite plays a hanging gnuplot with 1).
+int gnuplot_time_limit_ms() {
+  static const int limit = [] {
+    const char* text = std::getenv("MCRT_GNUPLOT_TIMEOUT");
+    int seconds = 30;
+    if (text != nullptr) {
+      const std::string_view value = text;
+      int parsed = 0;
+      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
+      if (error == std::errc() && end == value.data() + value.size() && parsed >= 1 &&
+          parsed <= 3600)
+        seconds = parsed;
+    }
+    return seconds * 1000;
+  }();
+  return limit;
+}
+
+struct GnuplotRun {
+  int status = 0;
+  std::string messages;  // what it wrote on stderr
+  bool timed_out = false;
+};
+
+// Runs `gnuplot -d arguments...` in `dir` (no shell: the folder's name never reaches a command
+// line or a script), without init files (-d: no gnuplotrc, no ~/.gnuplot), in a process group
+// of its own, for at most gnuplot_time_limit_ms(): then the group is killed. Returns its exit
+// status and what it wrote on stderr. An interruption meanwhile stops it (io/interrupt.hpp).
+GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& arguments) {
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
     throw IoError("cannot run gnuplot: " + std::error_code(errno, std::generic_category()).message());
@@ -146,33 +192,55 @@ std::pair<int, std::string> run_gnuplot(const fs::path& dir, const std::string& 
   sigset_t none;
   sigemptyset(&none);
   ::posix_spawnattr_setsigmask(&attributes, &none);  // main blocks SIGINT and SIGTERM
-  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
-  std::string program = "gnuplot", argument = script;
-  char* argv[] = {program.data(), argument.data(), nullptr};
+  ::posix_spawnattr_setpgroup(&attributes, 0);       // its own group: a timeout kills it all
+  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
+  std::vector<std::string> words = {"gnuplot", "-d"};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> variables = gnuplot_environment();
+  std::vector<char*> envp;
+  for (std::string& variable : variables) envp.push_back(variable.data());
+  envp.push_back(nullptr);
   pid_t child = 0;
   int spawned = 0;
   without_interruption([&] {
-    spawned = ::posix_spawnp(&child, "gnuplot", &actions, &attributes, argv, environ);
+    spawned = ::posix_spawnp(&child, "gnuplot", &actions, &attributes, argv.data(), envp.data());
     if (spawned == 0) stop_on_interrupt(child);
   });
   ::posix_spawn_file_actions_destroy(&actions);
   ::posix_spawnattr_destroy(&attributes);
   ::close(pipe_fds[1]);
-  std::string messages;
+  GnuplotRun result;
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(gnuplot_time_limit_ms());
   char buffer[512];
-  for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) != 0;) {
+  while (spawned == 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    pollfd readable{pipe_fds[0], POLLIN, 0};
+    const int ready = left.count() > 0 ? ::poll(&readable, 1, static_cast<int>(left.count())) : 0;
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) {  // out of time: the whole group goes, and its stderr with it
+      result.timed_out = true;
+      ::kill(-child, SIGKILL);
+      break;
+    }
+    if (ready < 0) break;
+    const ssize_t n = ::read(pipe_fds[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    messages.append(buffer, static_cast<std::size_t>(n));
+    if (n <= 0) break;
+    result.messages.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(pipe_fds[0]);
   if (spawned != 0)
     throw IoError("cannot run gnuplot: " + std::error_code(spawned, std::generic_category()).message());
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(child, &result.status, 0) < 0 && errno == EINTR) {
   }
+  ::kill(-child, SIGKILL);  // whatever it left running in its group
   forget_child(child);
-  return {status, messages};
+  return result;
 }
 
 // The first line of gnuplot's messages that says something ("" if none), and whether every
@@ -203,6 +271,35 @@ std::string reason_for_incomplete(const fs::path& dir, const std::string& proble
   return problem;
 }
 
+// Whether this gnuplot can draw PNG and SVG, asked once: one that cannot (built without cairo,
+// broken, hanging) leaves the run's scripts and data written, with a note, like a missing one.
+bool gnuplot_can_draw(const fs::path& dir) {
+  static const std::optional<std::string> problem = [&]() -> std::optional<std::string> {
+    GnuplotRun probe;
+    try {
+      probe = run_gnuplot(dir, {"-e", "set terminal pngcairo; set terminal svg"});
+    } catch (const IoError& e) {  // it cannot be started (no process left under ulimit -u)
+      const std::string why = e.what();  // "cannot run gnuplot: <the system's reason>"
+      return "it cannot be started (" + why.substr(why.find(": ") + 2) + ")";
+    }
+    if (probe.timed_out)
+      return fmt::format("it did not answer within {} s", gnuplot_time_limit_ms() / 1000);
+    const auto [message, only_warnings] = first_message(probe.messages);
+    if (!WIFEXITED(probe.status) || WEXITSTATUS(probe.status) != 0 ||
+        (!probe.messages.empty() && !only_warnings))
+      return "it cannot draw PNG and SVG (" + (message.empty() ? "it failed" : message) + ")";
+    return std::nullopt;
+  }();
+  if (problem) {
+    static bool told = false;
+    if (!told)
+      std::cerr << "note: gnuplot is installed but " << *problem << ", so no PNG/SVG plots were "
+                   "drawn; the .gp scripts and CSV files are written\n";
+    told = true;
+  }
+  return !problem;
+}
+
 }  // namespace
 
 PlotResult write_plot(const fs::path& dir, const Plot& plot) {
@@ -216,11 +313,17 @@ PlotResult write_plot(const fs::path& dir, const Plot& plot) {
     told = true;
     return PlotResult::no_gnuplot;
   }
+  if (!gnuplot_can_draw(dir)) return PlotResult::no_gnuplot;
   const fs::path png = dir / (plot.name + ".png"), svg = dir / (plot.name + ".svg");
-  const auto [status, messages] = run_gnuplot(dir, script);
+  const GnuplotRun drawn = run_gnuplot(dir, {script});
+  const int status = drawn.status;
+  const std::string& messages = drawn.messages;
   const auto [message, only_warnings] = first_message(messages);
   std::string problem;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  if (drawn.timed_out)
+    problem = fmt::format("gnuplot did not finish {} within {} s (MCRT_GNUPLOT_TIMEOUT sets "
+                          "the limit)", script, gnuplot_time_limit_ms() / 1000);
+  else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     problem = "gnuplot failed on " + script + ": " + message;
   else if (!messages.empty() && !only_warnings)
     problem = "gnuplot reported an error in " + script + ": " + message;

@@ -2,10 +2,10 @@
 /// Converged reference images, cached on disk between runs: one per scene, light scale, image
 /// size and depth cut, rendered by the best estimator (MIS, power heuristic, paths ended by
 /// Russian roulette) at many samples per pixel. Beside each PFM a JSON file gives the settings
-/// it was made with (seed, spp, scene, light scale, size, depth, estimator), its render time and
-/// its standard error. A cached reference is reused only when every setting matches; otherwise
-/// (or when missing or unreadable) it is rendered again, with a progress bar, and written with
-/// atomic file writes (the cache sits outside any run's output folder).
+/// it was made with (seed, spp, scene, light scale, size, depth, estimator), its render time,
+/// its standard error, and the PFM's size and SHA-256 (written last: the pair is one unit). A
+/// cached reference is reused only when every setting matches and the PFM verifies; otherwise
+/// it is rendered again, with a progress bar (the cache sits outside any run's output folder).
 ///
 /// It lives in io rather than render because it reads and writes files (render may not include
 /// io: the layering rule).
@@ -47,8 +47,21 @@ std::string reference_stem(const ReferenceSpec& spec);
 /// The settings the JSON must match for a cached reference to be reused.
 nlohmann::ordered_json reference_settings(const ReferenceSpec& spec);
 
-/// The reference for `spec`: the furnace's closed form; else dir/<stem>.pfm if its JSON's
-/// settings match, else a new render written there. Throws IoError if it cannot write.
+/// Throws UsageError (exit 2, one line naming --reference-dir) if `dir` exists and may not hold
+/// the cache: a symbolic link, not a folder, another user's, or writable by others without
+/// the sticky bit (anyone could replace its files). Call it with the flags, before any work.
+void check_reference_folder(const std::filesystem::path& dir);
+
+/// The reference for `spec`: the furnace's closed form; else the cached dir/<stem>.pfm if it
+/// is whole (below); else a new render written there. The folder is checked as by
+/// check_reference_folder, opened once, and every file is read and written relative to it.
+/// A cached reference is used only if its JSON (a regular file of ours) has the spec's
+/// settings and records the PFM's size and SHA-256, the PFM (a regular file of ours) has
+/// that size (checked before reading), that hash, and only finite non-negative values; any
+/// other cache is rendered again, with one line on stderr saying why. Writers create
+/// temporary files exclusively (io/exclusive_file.hpp), rename the PFM, then the JSON, under
+/// an exclusive lock of the folder (readers take it shared); temporaries of dead writers and
+/// PFMs without a JSON are removed. Throws IoError if it cannot write.
 Reference load_or_render_reference(const std::filesystem::path& dir, const ReferenceSpec& spec);
 
 /// Rays a reference render would trace at most, for io/ray_limit (the estimate the chapter

@@ -26,6 +26,9 @@ Groups:
   leading-zeros      --seed 010 is ten (or refused naming --seed), never octal eight
   out-manifest, out-ends, out-flags
                      --out, the ways a run ends, and flag values (out_folder_cases.py)
+  cache-links, cache-integrity, gnuplot-env, divergent, memory-threads
+                     the reference cache, temporary files, gnuplot, divergent parameters,
+                     memory and threads under attack: see cache_cases.py
 
 Exit status: 0 all cases held, 1 some failed (each failure printed), 77 skipped (CTest
 SKIP_RETURN_CODE).
@@ -787,6 +790,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import out_folder_cases  # noqa: E402  (after the helpers it uses are defined)
 
 GROUPS.update(out_folder_cases.groups(sys.modules[__name__]))
+
+# The reference cache, temporary files, gnuplot's environment and divergent parameters: their
+# groups live in cache_cases.py and use the helpers above.
+import cache_cases  # noqa: E402
+
+cache_cases.register(sys.modules[__name__])
 
 
 def main():

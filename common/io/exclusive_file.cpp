@@ -1,0 +1,117 @@
+#include "io/exclusive_file.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+
+#include <ctime>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace mcrt {
+
+std::string random_suffix() {
+  std::uint64_t bits = 0;
+  std::size_t got = 0;
+  auto* bytes = reinterpret_cast<unsigned char*>(&bits);
+  while (got < sizeof bits) {
+    const ssize_t n = ::getrandom(bytes + got, sizeof bits - got, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // no random source: the address of a local and the time still vary
+    got += static_cast<std::size_t>(n);
+  }
+  if (got < sizeof bits) {
+    timespec now{};
+    ::clock_gettime(CLOCK_REALTIME, &now);
+    bits ^= reinterpret_cast<std::uintptr_t>(&now) ^ static_cast<std::uint64_t>(now.tv_nsec) ^
+            (static_cast<std::uint64_t>(::getpid()) << 32);
+  }
+  static constexpr char k_hex[] = "0123456789abcdef";
+  std::string suffix(16, '0');
+  for (int i = 0; i < 16; ++i) suffix[i] = k_hex[(bits >> (4 * i)) & 0xf];
+  return suffix;
+}
+
+NewFile create_temporary(int dir_fd, std::string_view stem) {
+  NewFile file;
+  // 64 random bits: a name already taken is someone's plant or a one-in-2^64 draw; a few
+  // tries are plenty for the second, and the first is never opened.
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    std::string name(1, '.');
+    name.append(stem).append(".tmp-").append(random_suffix());
+    file.name = std::move(name);
+    file.fd = ::openat(dir_fd, file.name.c_str(),
+                       O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, k_temporary_mode);
+    if (file.fd >= 0) {
+      ::flock(file.fd, LOCK_EX);  // held until closed: the mark of a live writer
+      // A cleaner may have taken the lock first, between the open and the flock, and removed
+      // the name: then this file is nobody's, and another is made.
+      struct stat status {};
+      if (::fstat(file.fd, &status) == 0 && status.st_nlink > 0) {
+        file.error.clear();
+        return file;
+      }
+      ::close(file.fd);
+      file.fd = -1;
+      file.error = std::make_error_code(std::errc::no_such_file_or_directory);
+      continue;
+    }
+    file.error = {errno, std::generic_category()};
+    if (errno != EEXIST) break;
+  }
+  return file;
+}
+
+std::error_code write_all(int fd, std::string_view bytes) {
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return {errno, std::generic_category()};
+    if (n == 0) return std::make_error_code(std::errc::no_space_on_device);
+    written += static_cast<std::size_t>(n);
+  }
+  return {};
+}
+
+int remove_abandoned_temporaries(int dir_fd) {
+  const int list_fd = ::openat(dir_fd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (list_fd < 0) return 0;
+  DIR* folder = ::fdopendir(list_fd);
+  if (folder == nullptr) {
+    ::close(list_fd);
+    return 0;
+  }
+  int removed = 0;
+  while (const dirent* entry = ::readdir(folder)) {
+    const std::string_view name = entry->d_name;
+    if (name.size() < 2 || name[0] != '.' || name.find(".tmp-") == std::string_view::npos)
+      continue;
+    const std::string path(name);
+    struct stat before {};
+    if (::fstatat(dir_fd, path.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0) continue;
+    if (!S_ISREG(before.st_mode)) {
+      removed += ::unlinkat(dir_fd, path.c_str(), 0) == 0;
+      continue;
+    }
+    // O_NONBLOCK: a file swapped for a FIFO in between is not waited on.
+    const int fd = ::openat(dir_fd, path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) continue;
+    struct stat opened {};
+    // Its writer holds the lock while it lives: a free lock is a dead writer's file.
+    if (::fstat(fd, &opened) == 0 && opened.st_ino == before.st_ino &&
+        opened.st_dev == before.st_dev && ::flock(fd, LOCK_EX | LOCK_NB) == 0)
+      removed += ::unlinkat(dir_fd, path.c_str(), 0) == 0;
+    ::close(fd);
+  }
+  ::closedir(folder);
+  return removed;
+}
+
+}  // namespace mcrt

@@ -1,0 +1,41 @@
+#pragma once
+/// Files created, never reused: every temporary file the project writes (then renames) is new,
+/// made with O_CREAT|O_EXCL|O_NOFOLLOW under a name nobody can predict, so a link or file
+/// planted under that name by someone else is never written through (issue 34).
+
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace mcrt {
+
+/// Sixteen hexadecimal digits from the system's random source (getrandom): 64 bits nobody can
+/// guess, for the names of temporary files.
+std::string random_suffix();
+
+/// The mode of every temporary file: readable by others, writable by its owner only.
+inline constexpr unsigned k_temporary_mode = 0644;
+
+/// A temporary file this process created, open for writing.
+struct NewFile {
+  int fd = -1;       ///< -1 when it could not be created
+  std::string name;  ///< its name inside the folder it was created in
+  std::error_code error;
+};
+
+/// Creates `.<stem>.tmp-<random_suffix()>` in the folder open as `dir_fd` (O_CREAT|O_EXCL|
+/// O_NOFOLLOW|O_CLOEXEC, mode 0644) and locks it (flock, exclusive): a lock nobody holds marks
+/// the file of a writer that died (remove_abandoned_temporaries). Tries another name if the
+/// one drawn exists.
+NewFile create_temporary(int dir_fd, std::string_view stem);
+
+/// Writes all of `bytes` to `fd` (write() may write less than asked). The system's reason on
+/// failure; a write of nothing is reported as a full disk.
+std::error_code write_all(int fd, std::string_view bytes);
+
+/// Removes the temporary files (`.*.tmp-*`) in the folder open as `dir_fd` whose writer is
+/// gone: their lock can be taken. Links and other non-files under such names are removed too
+/// (unlinkat removes the link, never its target). Returns how many were removed.
+int remove_abandoned_temporaries(int dir_fd);
+
+}  // namespace mcrt
