@@ -123,6 +123,12 @@ for task in $(python3 -c "import json,sys; print(' '.join(t for t in json.load(o
   grep -qF "NOT IMPLEMENTED: task $task (" "$tmp/grade.txt" || fail "no feedback names task $task"
 done
 grep -q "^$a: 0 / " "$tmp/grade.txt" || fail "the stub kit scored points"
-python3 -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['score']==0 and r['tests'] and all({'name','score','max_score','output','visibility'} <= set(t) for t in r['tests'])" \
-    "$tmp/results.json" || fail "results.json is not in Gradescope's format"
+python3 - "$tmp/results.json" "$root/tests/assignments/results.schema.json" "$root/tests/assignments/tooling" <<'PY' || fail "results.json is not in Gradescope's format"
+import json, sys
+sys.path.insert(0, sys.argv[3])
+import schema_subset
+r, schema = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert not schema_subset.errors(r, schema), schema_subset.errors(r, schema)
+assert r["tests"] and sum(t["score"] for t in r["tests"]) == 0
+PY
 echo "kit_test $a: the stub kit builds, scores 0 with NOT IMPLEMENTED for every task, and leaks none of the checked solutions"

@@ -58,3 +58,13 @@ def run_script(path, args, cwd):
         sys.argv = saved_argv
         os.chdir(saved_cwd)
     return status, output.getvalue()
+
+
+def load_script(path):
+    """The Python script at `path` loaded as a module (its ROOT the tree it lies in)."""
+    import importlib.machinery
+    import importlib.util
+    loader = importlib.machinery.SourceFileLoader(f"loaded_{abs(hash(path))}", path)
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    return module
