@@ -268,7 +268,11 @@ def main():
         print(f"leak_check: {kit}: not a folder", file=sys.stderr)
         sys.exit(1)
     make = load_make_assignment(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    references = kit_references(assignment, make.read_tree(), make)
+    tree = make.read_tree()
+    if assignment not in {r["assignment"] for r in tree[2]}:
+        print(f"leak_check: no markers of {assignment} in the tree", file=sys.stderr)
+        sys.exit(2)
+    references = kit_references(assignment, tree, make)
     leaks, known = split_known(find_leaks(kit, build_index(references)))
     for rel, a, b, ref in known:
         print(f"leak_check {assignment}: known, still open: {rel}:{a}-{b} copies {ref} "
