@@ -13,6 +13,7 @@ import unittest
 
 ROOT = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else os.path.abspath(
     os.path.join(os.path.dirname(__file__), "../../.."))
+sys.dont_write_bytecode = True  # no __pycache__ left in the tree
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import leak_check  # noqa: E402
 
