@@ -10,13 +10,13 @@
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
 #include "support/plain_nearest.hpp"
-#include "support/plain_path_tracer.hpp"
+#include "support/plain_closest_hit.hpp"
 
 using namespace mcrt;
 
 namespace {
 
-using mcrt::testing::plain_closest_hit;  // support/plain_path_tracer.hpp
+using mcrt::testing::plain_closest_hit;  // support/plain_closest_hit.hpp
 
 // 3000 rays from inside and around `scene` (origins in a cube of side `scale`), with and without
 // a range: closest_hit must give the plain loop's hit, bit for bit.

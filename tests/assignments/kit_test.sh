@@ -56,13 +56,16 @@ grep -rq "// ASSIGNMENT" "$kit/common" "$kit/chapters" "$kit/tests" && fail "a m
 [ "$(ls "$kit/docs/assignments")" = "$a.md" ] || fail "another handout is in the kit: $(ls "$kit/docs/assignments")"
 [ -e "$kit/tests/known_bugs/assignments.hpp" ] && fail "a3's known-wrong recursions are in the kit"
 
-# The leaks: a solution of the kit's own assignment anywhere in it (the grep -F strings are
-# lines of the solutions, or of near-copies of them).
+# The token-level check: no window of the answers of aN and later (names and comments aside)
+python3 "$root/scripts/leak_check.py" "$a" "$kit" || fail "the token-level leak check found a copy"
+# The leaks: a solution of the kit's own or a later assignment anywhere in it (the grep -F
+# strings are lines of the solutions, or of near-copies of them); scripts/leak_check.py compares
+# token sequences, these lines are the ones a human reviewer would look for.
 leak() {  # leak FILE-OR-DIR STRING WHAT
   if grep -rqF -- "$2" "$kit/$1" 2>/dev/null; then fail "leak: $3 ($1: $2)"; fi
 }
 case "$a" in
-  a2)
+  a1|a2)
     grep -q 'throw std::logic_error("not implemented: a2.1 sample_uniform_hemisphere")' \
         "$kit/common/sampling/hemisphere.hpp" || fail "the a2.1 stub is not in the kit"
     leak common/sampling/hemisphere.hpp 'const double cos_theta = u.x;' "a2.1's sampler"
@@ -70,29 +73,34 @@ case "$a" in
     leak common/sampling/cosine_power.hpp 'std::pow(u.x, 1.0 / (m + 1.0))' "the cosine-power sampler"
     leak common/sampling/cosine_power.hpp '(m + 1.0) * k_inv_two_pi' "the cosine-power pdf"
     leak tests 'inline Vec2 disk_with_radius_u' "known_bugs/samplers.hpp (a2.4 but for one line)"
-    # a2.1 is used by a3.1 and a4.1: stubbed too; a1 keeps its solution
+    # every later assignment is stubbed; an earlier one keeps its solution
     grep -q 'not implemented: a4.1 estimate_path_radiance' "$kit/common/render/path_tracer.hpp" || fail "a4.1 is not stubbed"
-    grep -q 'not implemented: a1' "$kit/common/integration/disk_area.hpp" && fail "a1 is stubbed in the a2 kit"
+    if [ "$a" = a2 ] && grep -q 'not implemented: a1' "$kit/common/integration/disk_area.hpp"; then
+      fail "a1 is stubbed in the a2 kit"
+    fi
     ;;
-  a3)
+esac
+case "$a" in
+  a1|a2|a3)
     leak common/render/recursive_estimator.hpp 'incident_radiance(scene, spawn_ray(' "a3.1's recursion"
     ;;
 esac
 case "$a" in
-  a2|a4)  # a4.1's path loop, and the near-copies of it
+  a1|a2|a3|a4)  # a4.1's path loop, and the near-copies of it
     leak common/render/path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "a4.1's loop"
     leak common/render/importance_path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / p_wi;' "the importance-sampled path tracer"
     leak common/render/russian_roulette.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "the roulette path tracer"
     leak tests 'path_radiance_with(' "known_bugs/path_tracers.hpp's path loop"
     leak tests 'roulette_path_with(' "known_bugs/russian_roulette.hpp's path loop"
     leak tests 'reference_radiance(const ReferenceQuadBox' "support/quad_box_reference.hpp's path tracer"
+    leak tests 'plain_path_radiance(' "support/plain_path_tracer.hpp (a4.1's loop, a2.1's sampler)"
     leak common/render/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
     leak common/render/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
     leak common/render/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
     ;;
 esac
 case "$a" in
-  a2|a4|a5)  # a5's estimators, their copies in chapter 08's baselines and MIS, the known bugs
+  a1|a2|a3|a4|a5)  # a5's estimators, their copies in chapter 08's baselines and MIS, the known bugs
     leak common 'beta /= q;' "Russian roulette's 1/q"
     leak common 'beta *= material.albedo;' "the cosine-sampled weight f_r cos / p = rho"
     leak common/render/light_sampling.hpp 'area_to_solid_angle_pdf(y.pdf_area' "the light sample's change of measure"
@@ -115,6 +123,12 @@ for task in $(python3 -c "import json,sys; print(' '.join(t for t in json.load(o
   grep -qF "NOT IMPLEMENTED: task $task (" "$tmp/grade.txt" || fail "no feedback names task $task"
 done
 grep -q "^$a: 0 / " "$tmp/grade.txt" || fail "the stub kit scored points"
-python3 -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['score']==0 and r['tests'] and all({'name','score','max_score','output','visibility'} <= set(t) for t in r['tests'])" \
-    "$tmp/results.json" || fail "results.json is not in Gradescope's format"
+python3 - "$tmp/results.json" "$root/tests/assignments/results.schema.json" "$root/tests/assignments/tooling" <<'PY' || fail "results.json is not in Gradescope's format"
+import json, sys
+sys.path.insert(0, sys.argv[3])
+import schema_subset
+r, schema = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert not schema_subset.errors(r, schema), schema_subset.errors(r, schema)
+assert r["tests"] and sum(t["score"] for t in r["tests"]) == 0
+PY
 echo "kit_test $a: the stub kit builds, scores 0 with NOT IMPLEMENTED for every task, and leaks none of the checked solutions"

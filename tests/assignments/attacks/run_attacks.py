@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""The attack suite of the a2 grader (scripts/test --kits): each attack is a submission that
+tries to gain points it did not earn, graded by scripts/grade as Gradescope would (as root, so
+the tests run as `nobody` through scripts/sandbox-run). Each closed attack must score no more
+than the honest submission it is built on and must not reach its goal; the open one is run and
+reported as open.
+
+  run_attacks.py ROOT BUILD     BUILD: the grader's --build folder, kept between runs
+
+The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp not submitted
+(so a2.3 is graded as its stub and points are lost). The attacks add to it:
+  fork_rewrite   a process that outlives the grader and rewrites results.json (fork_rewrite.inc)
+  hidden_read    a read of the hidden test's source through __FILE__, printed into the feedback
+  hostile_kit    a kit whose CMakeLists.txt runs execute_process, whose tests are `true` and
+                 whose points.json gives 100 a test, with no editable file changed
+  early_exit     (open) a sampler that calls std::_Exit(0): its tests count as passed
+Exit status: 0 every closed attack gained nothing, 1 otherwise, 2 not run as root.
+"""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RESULTS_DIR = "/tmp/mcrt-attack"  # the path fork_rewrite.inc writes to
+# The forked rewriter writes once a second for 20 s: 3 s after the grader is done it has had
+# three chances, had it survived.
+k_wait_after_grading = 3
+
+
+def solution_file(root, rel):
+    with open(os.path.join(root, rel), encoding="utf-8") as f:
+        return f.read()
+
+
+def submission(root, folder, extra="", sphere=None):
+    """An a2 submission: the solution's hemisphere.hpp (with `extra` appended) and plane.hpp;
+    sphere.hpp only when given."""
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    with open(os.path.join(folder, "hemisphere.hpp"), "w") as f:
+        f.write(solution_file(root, "common/sampling/hemisphere.hpp") + "\n" + extra)
+    with open(os.path.join(folder, "plane.hpp"), "w") as f:
+        f.write(solution_file(root, "common/sampling/plane.hpp"))
+    if sphere is not None:
+        with open(os.path.join(folder, "sphere.hpp"), "w") as f:
+            f.write(sphere)
+    return folder
+
+
+def grade(root, build, kit):
+    shutil.rmtree(RESULTS_DIR, ignore_errors=True)
+    os.makedirs(RESULTS_DIR, mode=0o755)
+    results = os.path.join(RESULTS_DIR, "results.json")
+    run = subprocess.run([os.path.join(root, "scripts/grade"), "a2", "--kit", kit, "--hidden",
+                          os.path.join(root, "tests/assignments/hidden"), "--build", build,
+                          "--gradescope", results], stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    graded = json.load(open(results)) if os.path.exists(results) else None
+    return run, results, graded
+
+
+def score(results):
+    return sum(t["score"] for t in results["tests"]) if results else None
+
+
+def main():
+    if len(sys.argv) != 3:
+        print("run_attacks: usage: run_attacks.py ROOT BUILD", file=sys.stderr)
+        sys.exit(2)
+    root, build = (os.path.abspath(p) for p in sys.argv[1:])
+    if os.geteuid() != 0:
+        print("run_attacks: the sandbox needs root (the tests run as nobody); not run", file=sys.stderr)
+        sys.exit(2)
+    work = os.path.join(build, "attacks")
+    os.makedirs(work, exist_ok=True)
+    failures = []
+
+    def report(name, ok, line):
+        print(f"  {'closed' if ok else 'OPEN  '} {name}: {line}", flush=True)
+        if not ok:
+            failures.append(name)
+
+    run, _, honest = grade(root, build, submission(root, os.path.join(work, "honest")))
+    base = score(honest)
+    if honest is None:
+        print(run.stdout)
+        sys.exit(1)
+    print(f"  honest submission (a2.3 not submitted): {base} points", flush=True)
+
+    def include(name):
+        with open(os.path.join(HERE, name)) as f:
+            return f.read()
+
+    # fork_rewrite: the file must still say what the grader wrote, after the grader is gone
+    run, path, graded = grade(root, build, submission(root, os.path.join(work, "fork"), include("fork_rewrite.inc")))
+    time.sleep(k_wait_after_grading)
+    after = json.load(open(path)) if os.path.exists(path) else None
+    report("fork_rewrite", after == graded and score(after) <= base,
+           f"graded {score(graded)}, the file says {score(after)} {k_wait_after_grading} s later")
+
+    # hidden_read: no feedback carries a line of the hidden test's source
+    run, _, graded = grade(root, build, submission(root, os.path.join(work, "read"), include("hidden_read.inc")))
+    secret = "TEST(A2Hidden, CornersOfTheUnitSquare)"
+    shown = json.dumps(graded) if graded else ""
+    tried = "HIDDEN SOURCE: (unreadable)" in shown  # the attack ran and was refused
+    report("hidden_read", secret not in shown and score(graded) <= base,
+           f"graded {score(graded)}; the hidden source {'is' if secret in shown else 'is not'} in the "
+           f"feedback{' (its read was refused)' if tried else ''}")
+
+    # hostile_kit: a whole kit of its own; only its editable files (unchanged stubs) are taken
+    kit = os.path.join(work, "hostile-kit")
+    shutil.rmtree(kit, ignore_errors=True)
+    subprocess.run([os.path.join(root, "scripts/make-assignment"), "a2", "--out", kit],
+                   stdout=subprocess.DEVNULL, check=True)
+    with open(os.path.join(kit, "CMakeLists.txt"), "a") as f:
+        f.write('\nexecute_process(COMMAND sh -c "echo owned > /tmp/mcrt-attack-owned")\n')
+    with open(os.path.join(kit, "tests/assignments/a2/a2_test.cpp"), "w") as f:
+        f.write("int main() { return 0; }\n")
+    with open(os.path.join(kit, "tests/assignments/points.json"), "w") as f:
+        f.write('{"a2.A2.Task1UniformHemisphereFollowsItsPdf": 100}\n')
+    if os.path.exists("/tmp/mcrt-attack-owned"):
+        os.remove("/tmp/mcrt-attack-owned")
+    run, _, graded = grade(root, build, kit)
+    report("hostile_kit", score(graded) == 0 and not os.path.exists("/tmp/mcrt-attack-owned"),
+           f"graded {score(graded)} (the stub kit's 0); its execute_process "
+           f"{'ran' if os.path.exists('/tmp/mcrt-attack-owned') else 'did not run'}")
+
+    # early_exit: open, reported
+    sphere = solution_file(root, "common/sampling/sphere.hpp")
+    sphere = re.sub(r"(inline Vec3 sample_uniform_sphere\(Vec2 u\) \{\n)",
+                    r"\1  mcrt_attack::leave_early();\n", sphere)
+    sphere = sphere.replace('#pragma once\n', '#pragma once\n' + include("early_exit.inc"), 1)
+    run, _, graded = grade(root, build, submission(root, os.path.join(work, "exit"), sphere=sphere))
+    print(f"  open   early_exit (expected, needs the subject/checker split): graded {score(graded)} "
+          f"against the honest {base}", flush=True)
+
+    shutil.rmtree(RESULTS_DIR, ignore_errors=True)
+    if failures:
+        print(f"run_attacks: attacks that gained something: {', '.join(failures)}", file=sys.stderr)
+        sys.exit(1)
+    print("run_attacks: every closed attack gained nothing")
+
+
+if __name__ == "__main__":
+    main()
