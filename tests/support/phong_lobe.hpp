@@ -70,6 +70,13 @@ Binning<Vec3> lobe_cdf_binning() {
           &detail::lobe_cdf_parameters<M>};
 }
 
+/// The generator streams of the Phong checks (tests/checks/phong_checks.cpp), apart from the
+/// other checks' streams; the known-bug tests reuse them, so they see the same uniforms.
+inline constexpr std::uint64_t k_phong_hemisphere_stream = 320;  // + 0, 1: m = 1, 10
+inline constexpr std::uint64_t k_phong_cdf_stream = 330;         // + 0..4: m = 1 .. 1e4
+inline constexpr std::uint64_t k_phong_material_stream = 340;    // + 0, 1
+inline constexpr std::uint64_t k_phong_albedo_stream = 350;      // + 0..7
+
 /// The mirror direction the lobe tests use: wo at 40 degrees from a tilted normal, so r is
 /// tilted against the world axes and against n, and part of the lobe is below the surface.
 inline Vec3 phong_test_normal() { return glm::normalize(Vec3(0.2, -0.3, 0.9)); }
