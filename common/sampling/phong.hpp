@@ -8,8 +8,8 @@
 ///   cos(alpha) = wi . r        alpha the angle between wi and r,
 ///   f(wi, wo) = rho_d / pi + rho_s (m + 2) / (2 pi) max(0, cos alpha)^m,
 /// with rho_d + rho_s <= 1 and m >= 1 (1 is very rough, 10^4 nearly a mirror). f = 0 when wi
-/// or wo is below the surface (wi . n <= 0 or wo . n <= 0): a renderer passes the normal on
-/// wo's side, as for the diffuse material.
+/// or wo is below the surface (wi . n <= 0 or wo . n <= 0): a renderer passes Hit::normal,
+/// which faces the incoming ray (geometry/hit.hpp), so wo is above it.
 ///
 /// The lobe's pdf, per steradian, in a frame round r (alpha the polar angle, phi round r):
 ///   p(wi) = (m + 1) / (2 pi) cos^m(alpha)  for cos alpha > 0, else 0,
