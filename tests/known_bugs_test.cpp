@@ -24,6 +24,7 @@
 #include "stats/convergence.hpp"
 #include "stats/report.hpp"
 #include "stats/sampler_tests.hpp"
+#include "support/phong_lobe.hpp"
 #include "support/small_trials.hpp"
 #include "support/two_render_check.hpp"
 
@@ -70,6 +71,39 @@ TEST_F(KnownBugsTest, CosineSamplerWithAnExtraFactorTwoIsRejected) {
             k_sampler_alpha);
   EXPECT_LT(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_pdf_times_two, k_seed,
                                        k_cosine_hemisphere_stream, "wrong"),
+            k_sampler_alpha);
+}
+
+// The Phong lobe's checks (tests/checks/phong_checks.cpp): the same cells, streams and seed.
+TEST_F(KnownBugsTest, PhongLobePdfNormalisedWithMPlusTwoIsRejected) {
+  EXPECT_GE(phong_lobe_cdf_p_value<10>(sample_phong_lobe, phong_lobe_pdf, k_seed,
+                                       k_phong_cdf_stream + 1, "right"),
+            k_sampler_alpha);
+  EXPECT_LT(phong_lobe_cdf_p_value<10>(sample_phong_lobe, phong_lobe_pdf_with_m_plus_2, k_seed,
+                                       k_phong_cdf_stream + 1, "wrong"),
+            k_sampler_alpha);
+  EXPECT_LT(phong_lobe_hemisphere_p_value(sample_phong_lobe, phong_lobe_pdf_with_m_plus_2, 10.0,
+                                          k_seed, k_phong_hemisphere_stream + 1, "wrong"),
+            k_sampler_alpha);
+}
+
+TEST_F(KnownBugsTest, PhongLobeSampledWithCosUToOneOverMIsRejected) {
+  EXPECT_LT(phong_lobe_cdf_p_value<10>(sample_phong_lobe_cos_u_to_one_over_m, phong_lobe_pdf,
+                                       k_seed, k_phong_cdf_stream + 1, "wrong"),
+            k_sampler_alpha);
+  EXPECT_LT(phong_lobe_hemisphere_p_value(sample_phong_lobe_cos_u_to_one_over_m, phong_lobe_pdf,
+                                          1.0, k_seed, k_phong_hemisphere_stream, "wrong"),
+            k_sampler_alpha);
+}
+
+TEST_F(KnownBugsTest, PhongMaterialPdfMixedHalfAndHalfIsRejected) {
+  const Phong material{0.5, 0.3, 10.0};
+  const double theta_o = 30.0 * k_pi / 180.0;
+  EXPECT_GE(phong_material_p_value(sample_phong, phong_pdf, material, theta_o, k_seed,
+                                   k_phong_material_stream, "right"),
+            k_sampler_alpha);
+  EXPECT_LT(phong_material_p_value(sample_phong, phong_pdf_mixed_half_and_half, material,
+                                   theta_o, k_seed, k_phong_material_stream, "wrong"),
             k_sampler_alpha);
 }
 

@@ -6,11 +6,14 @@
 ///   sampling/hemisphere.hpp  uniform and cosine-weighted directions (per steradian)
 ///   sampling/cosine_power.hpp  the family p ~ cos^m(theta), and a pdf that favours grazing
 ///                            directions (chapter 07)
+///   sampling/phong.hpp       a glossy lobe round the mirror direction (normalised modified
+///                            Phong), with its diffuse mix (chapter 08)
 ///   sampling/sphere.hpp      uniform directions on the whole sphere
 ///   sampling/frame.hpp       local directions (normal = +z) to world directions
 
 #include "sampling/cosine_power.hpp"
 #include "sampling/frame.hpp"
 #include "sampling/hemisphere.hpp"
+#include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
 #include "sampling/sphere.hpp"
