@@ -10,7 +10,7 @@
 //       (MIS: the light sample and the new direction's hit on a light are both added, each
 //        weighted by w = p_s^2 / (p_light^2 + p_bsdf^2), and w_light + w_bsdf = 1)
 //     set the sample colour to the sum
-//   then, for every scene, every estimator, the same time budgets: error against a reference
+//   then, for every scene, every estimator, the same ray budgets: error against a reference
 //
 // Aiming at the light turns the noise of a small bright lamp (which a bouncing path finds by
 // luck) into the noise of one shadow ray. For a large dim light the cosine already finds it,
@@ -46,7 +46,7 @@ namespace {
 
 const Chapter k_chapter{"ch08_next_event_estimation",
                         "Chapter 08: next-event estimation (a shadow ray to a point on a light "
-                        "at every bounce) and multiple importance sampling, then an equal-time "
+                        "at every bounce) and multiple importance sampling, then an equal-ray "
                         "shoot-out of every estimator of chapters 05-08 on the furnace, the "
                         "Cornell box at light scales 0.1, 1 and 3, and the sphere Cornell box."};
 
@@ -61,7 +61,7 @@ struct Options {
   int depth = -1;                          // bounces after the first hit; -1: roulette only
   int reference_spp = 1024;                // samples per pixel of every reference
   std::filesystem::path reference_dir;     // default: --out's parent / reference
-  std::vector<double> budgets{0.125, 0.25, 0.5, 1.0};  // seconds of rendering, per estimator
+  std::vector<double> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
 };
 
 ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
@@ -79,13 +79,18 @@ ReferenceSpec reference_spec(const Options& o, const std::string& scene, double 
   return spec;
 }
 
-// The references (at most 5, one per scene of the shoot-out and the chosen one, if not cached)
-// and the two images at --spp; the shoot-out is bounded by time, not rays.
+// The references (at most 5, one per scene of the shoot-out and the chosen one, if not cached),
+// the two images at --spp, and the shoot-out: 6 estimators x 5 scenes, each up to its largest
+// budget plus one pass (at most 65 rays a pixel: the depth-64 baselines).
 RayWork predicted_work(const Options& o) {
+  const double pixels = static_cast<double>(o.image.width) * o.image.height;
   const double references = 5.0 * reference_predicted_rays(reference_spec(o, "cornell", 1.0),
                                                             k_rays_per_sample);
-  const double images = 2.0 * o.spp * o.image.width * o.image.height * k_rays_per_sample;
-  return {references + images, "(5 references x reference spp + 2 x spp) x pixels x 32 rays"};
+  const double images = 2.0 * o.spp * pixels * k_rays_per_sample;
+  const double shootout = 30.0 * (o.budgets.back() + 65.0) * pixels;
+  return {references + images + shootout,
+          "(5 references x reference spp + 2 x spp) x pixels x 32 rays + 30 x (largest "
+          "--ray-budgets + 65) x pixels"};
 }
 
 // nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
@@ -95,7 +100,6 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
   Table table({{"image", Column::text},
                {"spp", Column::integer},
                {"rays", Column::integer},
-               {"seconds", Column::real, 6},
                {"rel_mse", Column::real, 6}});
   for (const auto& [stem, kind] : {std::pair{"nee", EstimatorKind::nee},
                                    std::pair{"mis", EstimatorKind::mis_power}}) {
@@ -105,7 +109,7 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
     total.add(r);
     write_png(o.common.dir / (std::string(stem) + ".png"), r.image);
     write_pfm(o.common.dir / (std::string(stem) + ".pfm"), r.image);
-    table.add_row({stem, o.spp, r.rays, r.seconds, relative_mse(r.image, reference.image)});
+    table.add_row({stem, o.spp, r.rays, relative_mse(r.image, reference.image)});
   }
   return table;
 }
@@ -119,7 +123,7 @@ void run(const CLI::App& app, const Options& o) {
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --reference-spp, --width, --height",
                   o.common.threads, "lower one of them");
   // Every scene's estimators and references, their snapshots and the contact sheet (measured:
-  // 3.4 KB per pixel at 512x256 whatever --budgets; counted 170 images, 4 KB).
+  // 3.4 KB per pixel at 512x256 whatever --ray-budgets; counted 170 images, 4 KB).
   check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 170.0,
                                       o.common.threads, "about 170 images of --width x --height"),
                      "--width, --height", "lower them");
@@ -144,9 +148,9 @@ void run(const CLI::App& app, const Options& o) {
 
   write_csv(o.common.dir / "images.csv", images);
   write_csv(o.common.dir / "efficiency.csv", shootout.table);
-  for (std::size_t n = 0; n < scenes.size(); ++n) write_relmse_plot(o.common.dir, scenes[n], n);
+  for (const ShootoutScene& s : scenes) write_relmse_plot(o.common.dir, s);
   write_contact_sheet(o.common.dir, scenes, shootout, o.budgets.back());
-  write_summary(k_chapter, app, o, images, shootout.table, reference.info, total);
+  write_summary(k_chapter, app, o, images, shootout, reference.info, total);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
 }
 
@@ -169,8 +173,8 @@ int main(int argc, char** argv) {
                     2, 1 << 20);
   app.add_option("--reference-dir", o.reference_dir,
                  "Folder of the cached references (default: the reference folder beside --out)");
-  add_list_option(app, "--budgets", o.budgets,
-                  "Render times of the shoot-out, in seconds per estimator and scene (a list: "
-                  "0.125,0.25,0.5,1)", 0.001, 60.0);
+  add_list_option(app, "--ray-budgets", o.budgets,
+                  "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
+                  "each scene (a list: 64,128,256,512)", 1.0, 1e6);
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -9,11 +9,13 @@
 #include "io/table.hpp"
 #include "render/render_totals.hpp"
 
+#include "shootout.hpp"
+
 namespace mcrt {
 
 // summary.json: the setup, the chosen scene's images against the reference, the shoot-out.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
-                          const Table& images, const Table& efficiency, const Json& reference,
+                          const Table& images, const Shootout& shootout, const Json& reference,
                           const RenderTotals& total) {
   Json summary = start_summary(chapter, o.common);
   add_render_setup(summary, o.scene, o.image);
@@ -21,12 +23,22 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["spp"] = o.spp;
   summary["depth"] = o.depth >= 0 ? Json(o.depth) : Json("none: Russian roulette");
   summary["reference"] = reference;
+  summary["reference"].erase("seconds");  // the machine's: timings.json's
   summary["images"] = images.json();
-  summary["shootout"] = efficiency.json();
+  summary["shootout"] = shootout.table.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter, o.common);
   add_render_timings(timings, total);
+  if (reference.contains("seconds")) timings["reference_seconds"] = reference["seconds"];
+  // The same photographs in seconds, every column (Table::json leaves timing columns out).
+  Json seconds = Json::array();
+  for (std::size_t i = 0; i < shootout.seconds.size(); ++i) {
+    Json row = Json::object();
+    for (const Column& c : shootout.seconds.columns()) row[c.name] = shootout.seconds.at(i, c.name).json();
+    seconds.push_back(std::move(row));
+  }
+  timings["shootout"] = std::move(seconds);
   write_timings(o.common.dir, timings, app);
 }
 
@@ -36,14 +48,14 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& ima
              o.scene.scene, o.scene.params.light_scale, o.image.width, o.image.height, o.spp,
              o.common.threads);
   fmt::print("  the chosen scene against its reference:\n{}",
-             images.console({"image", "spp", "seconds", "rel_mse"}));
-  fmt::print("  the shoot-out (equal time budgets):\n{}",
-             efficiency.console({"scene", "light_scale", "estimator", "budget_seconds", "spp",
-                                 "rel_mse", "efficiency_vs_uniform"}));
+             images.console({"image", "spp", "rays", "rel_mse"}));
+  fmt::print("  the shoot-out (equal ray budgets, rays per pixel):\n{}",
+             efficiency.console({"scene", "light_scale", "estimator", "budget_rays_per_pixel",
+                                 "spp", "rel_mse", "efficiency_vs_uniform"}));
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{nee,mis}}.{{png,pfm}}, images.csv, efficiency.csv, "
-             "relmse_vs_time_N.png, contact_sheet.png, summary.json, timings.json\n",
+             "relmse_vs_rays_SCENE.png, contact_sheet.png, summary.json, timings.json\n",
              o.common.out.string());
 }
 

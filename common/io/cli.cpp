@@ -188,9 +188,10 @@ void check_image_size(const ImageOptions& options) {
 
 namespace {
 
-// The flags that change nothing a run computes.
+// The flags that change nothing a run computes (--reference-dir: where a reference is kept,
+// which is used only if it is the one the run's settings ask for).
 bool is_run_flag(const std::string& name) {
-  return name == "out" || name == "threads" || name == "quiet";
+  return name == "out" || name == "threads" || name == "quiet" || name == "reference-dir";
 }
 
 // Every option with its value in this run (given or default), run flags or the others.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "chapters/csv_file.hpp"
@@ -18,7 +19,7 @@ using namespace mcrt::testing;
 namespace {
 
 const std::string k_program = "ch08_next_event_estimation";
-const std::string k_tiny = "--width 12 --height 9 --spp 2 --reference-spp 4 --budgets 0.002,0.004 ";
+const std::string k_tiny = "--width 12 --height 9 --spp 2 --reference-spp 4 --ray-budgets 8,16 ";
 
 TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   const auto dir = fresh_dir("ch08_smoke");
@@ -46,17 +47,28 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   }
   const CsvFile csv(dir / "efficiency.csv");
   const std::vector<std::string>& header = csv.header();
-  for (const char* column : {"scene", "light_scale", "estimator", "spp", "seconds", "rel_mse",
-                             "efficiency", "efficiency_vs_uniform", "mean", "mean_ci_low",
-                             "mean_ci_high", "rays_per_second"})
+  for (const char* column : {"scene", "light_scale", "estimator", "budget_rays_per_pixel", "spp",
+                             "rays_per_pixel", "rel_mse", "efficiency", "efficiency_vs_uniform",
+                             "mean", "mean_ci_low", "mean_ci_high"})
     EXPECT_NE(std::find(header.begin(), header.end(), column), header.end()) << column;
+  for (const char* column : {"seconds", "rays_per_second"})  // timings.json's, not the CSV's
+    EXPECT_EQ(std::find(header.begin(), header.end(), column), header.end()) << column;
   EXPECT_EQ(csv.size(), 5u * 6u * 2u);  // scenes x estimators x budgets
   for (std::size_t i = 0; i < csv.size(); ++i) {
     EXPECT_GE(csv.number(i, "spp"), 1.0);
-    EXPECT_GE(csv.number(i, "seconds"), csv.number(i, "budget_seconds"));
+    // photographed at the first pass that reaches the budget: past it by less than one pass
+    // (at most 65 rays a pixel: the depth-64 baselines)
+    EXPECT_GE(csv.number(i, "rays_per_pixel"), csv.number(i, "budget_rays_per_pixel"));
+    EXPECT_LT(csv.number(i, "rays_per_pixel"), csv.number(i, "budget_rays_per_pixel") + 66.0);
+    if (csv.number(i, "rel_mse") == 0.0) continue;  // exact (cosine in the furnace): infinite
+    EXPECT_NEAR(csv.number(i, "efficiency"),
+                1.0 / (csv.number(i, "rel_mse") * csv.number(i, "rays_per_pixel")),
+                1e-5 * csv.number(i, "efficiency"));  // the CSV's 6 significant digits
   }
+  EXPECT_EQ(read_json(dir / "timings.json")["shootout"].size(), 60u);
   EXPECT_TRUE(std::filesystem::exists(dir / "contact_sheet.png"));
-  EXPECT_TRUE(std::filesystem::exists(dir / "relmse_vs_time_0.gp"));
+  for (const char* scene : {"furnace", "cornell_x0.1", "cornell_x1", "cornell_x3", "cornell-spheres"})
+    EXPECT_TRUE(std::filesystem::exists(dir / fmt::format("relmse_vs_rays_{}.gp", scene))) << scene;
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["scene"], "cornell");
   EXPECT_EQ(summary["shootout"].size(), 60u);
@@ -67,8 +79,8 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   ASSERT_EQ(run_program(k_program, k_tiny + "--quiet --reference-dir " + refs.string() +
                                        " --out " + dir.string()).exit_code, 0);
   EXPECT_EQ(std::filesystem::last_write_time(pfm), written);
-  ASSERT_EQ(run_program(k_program, "--width 12 --height 9 --spp 2 --reference-spp 6 --budgets "
-                                   "0.002 --quiet --reference-dir " + refs.string() +
+  ASSERT_EQ(run_program(k_program, "--width 12 --height 9 --spp 2 --reference-spp 6 --ray-budgets "
+                                   "8 --quiet --reference-dir " + refs.string() +
                                        " --out " + dir.string()).exit_code, 0);
   EXPECT_EQ(read_json(refs / "cornell_ls1_12x9.json")["spp"], 6);
 }
@@ -84,7 +96,10 @@ TEST(Ch08Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
                                        " --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --reference-dir " + refs2.string() +
                                        " --out " + two.string()).exit_code, 0);
-  for (const char* file : {"nee.pfm", "nee.png", "mis.pfm", "mis.png"})
+  // every output but timings.json: the shoot-out counts rays, not seconds
+  for (const char* file : {"nee.pfm", "nee.png", "mis.pfm", "mis.png", "images.csv",
+                           "efficiency.csv", "summary.json", "contact_sheet.png",
+                           "relmse_vs_rays_cornell_x0.1.gp", "relmse_vs_rays_cornell_x0.1.svg"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   EXPECT_EQ(read_text(refs1 / "cornell-spheres_ls1_12x9.pfm"),
             read_text(refs2 / "cornell-spheres_ls1_12x9.pfm"));
@@ -105,8 +120,10 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, Ch08BadInputTest,
     ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--light-scale 5", "--light-scale"},
                       BadInput{"--light-scale 0", "--light-scale"},
-                      BadInput{"--budgets 0", "--budgets"}, BadInput{"--budgets 1,x", "--budgets"},
-                      BadInput{"--budgets 100", "--budgets"}, BadInput{"--depth -1", "--depth"},
+                      BadInput{"--ray-budgets 0", "--ray-budgets"},
+                      BadInput{"--ray-budgets 1,x", "--ray-budgets"},
+                      BadInput{"--ray-budgets 1e7", "--ray-budgets"},
+                      BadInput{"--budgets 1", "--budgets"}, BadInput{"--depth -1", "--depth"},
                       BadInput{"--reference-spp 1", "--reference-spp"},
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 8192 --height 4096 --reference-spp 100000",

@@ -385,7 +385,7 @@ def group_out_ends(r, chapters, tmp, checks):
     pipe_runs = [(CH01, r.TINY[CH01])]
     if ch08 in chapters:  # its table is longer than a pipe's buffer: it fails mid-print
         pipe_runs.append((ch08, ["--width", "12", "--height", "9", "--spp", "2",
-                                 "--reference-spp", "4", "--budgets", "0.002,0.004"]))
+                                 "--reference-spp", "4", "--ray-budgets", "8,16"]))
     for name, args in pipe_runs:
         for consumer in ("head -c0", "(exec 0<&-; sleep 1)"):
             for previous in (False, True):
