@@ -1,0 +1,306 @@
+#!/usr/bin/env python3
+"""The numbers the docs pages quote from runs: docs/numbers.json, and the pages' tags.
+
+A page quotes a run's number as the number followed at once by a tag naming it:
+
+    the mean radiance was 0.0913<!--n:ch01.mean_radiance-->
+    trapezoid $-2.04$<!--n:ch03.slope_gaussian_1d_trapezoid-->   (a maths span holding a number)
+    $1.4 \\times 10^{-4}$<!--n:ch03.mc_rmse_1d-->                 (or a \\times 10^{e} number)
+    0.6 %<!--n:ch05.depth_cut_shortfall_percent-->               (a percent sign may sit between)
+
+The named value rounded to the printed precision must be the printed number: see check().
+
+    scripts/doc_numbers.py write SCRATCH [LABEL...]   docs/numbers.json from the runs in SCRATCH
+                                                  (scripts/make-figures' run folders); only
+                                                  the names of the given run labels change
+    scripts/doc_numbers.py check                      every page against docs/numbers.json
+"""
+
+import csv
+import json
+import math
+import os
+import re
+import sys
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+TAG = re.compile(r"<!--n:([A-Za-z0-9_.\-]+)-->")
+PLAIN = r"-?\d[\d,]*(?:\.\d+)?"
+# What a tag quotes: a maths span holding one number (maybe times a power of ten), or a plain
+# number, each maybe followed by a percent sign.
+QUOTED = re.compile(
+    r"(?:\$(?P<mant>" + PLAIN + r")(?:\s*\\times\s*10\^\{?(?P<exp>-?\d+)\}?)?\$"
+    r"|(?<![\w.])(?P<plain>" + PLAIN + r"))(?:\s?\\?%)?$")
+
+# Pages whose every measured-looking decimal must be tagged (chapter 08's page and its answers
+# are pinned with chapter 08's own work; under-the-hood keeps machine-dependent numbers).
+CHECKED_PAGES = ["01_ray_tracing.md", "02_disk_area.md", "03_trapezoid_vs_mc.md",
+                 "04_recursive_nk.md", "05_path_tracer.md", "06_russian_roulette.md",
+                 "07_importance_sampling.md", "index.md", "answers.md"]
+SKIPPED_SECTION = re.compile(r"^## Chapter 08")  # answers.md's chapter 08 (see above)
+
+# Closed-form constants a page may print untagged, each with what it is.
+CLOSED_FORM = {
+    "99.9",      # the confidence level of chapter 06's intervals, a chosen constant
+    "0.598144",  # J = integral of exp(-2x^2) over [0, 1], chapter 03's exercise 4
+}
+
+# A decimal with 3 or more significant digits looks measured.
+DECIMAL = re.compile(r"(?<![\w.])\d[\d,]*\.\d+(?![\w.])")
+
+
+def significant_digits(text):
+    return len(text.replace(",", "").replace(".", "").lstrip("0"))
+
+
+class Quote:
+    def __init__(self, page, line, name, printed, value, half_step):
+        self.page, self.line, self.name = page, line, name
+        self.printed, self.value, self.half_step = printed, value, half_step
+
+    def where(self):
+        return f"{self.page}:{self.line}"
+
+
+def parse_quoted(before):
+    """The number a tag quotes, from the text just before the tag: (printed, value, half a step
+    of its last printed digit), or None."""
+    match = QUOTED.search(before)
+    if not match:
+        return None
+    digits = match.group("mant") or match.group("plain")
+    decimals = len(digits.split(".")[1]) if "." in digits else 0
+    value = float(digits.replace(",", ""))
+    half_step = 0.5 * 10.0 ** -decimals
+    if match.group("exp"):
+        scale = 10.0 ** int(match.group("exp"))
+        value, half_step = value * scale, half_step * scale
+    return match.group(0), value, half_step
+
+
+def prose_lines(text):
+    """Each line with code (fenced and inline), maths and HTML comments blanked out; lines in
+    a fenced block come back empty."""
+    lines, fenced = [], False
+    for line in text.split("\n"):
+        if line.lstrip().startswith("```"):
+            fenced = not fenced
+            lines.append("")
+            continue
+        if fenced:
+            lines.append("")
+            continue
+        line = re.sub(r"`[^`]*`", " ", line)
+        line = re.sub(r"\$\$.*?\$\$|\$[^$]*\$", " ", line)
+        lines.append(re.sub(r"<!--.*?-->", " ", line))
+    return lines
+
+
+def find_quotes(page, text):
+    """Every tag of a page as a Quote; a tag that quotes no number is a Quote with printed None."""
+    quotes, fenced = [], False
+    for number, line in enumerate(text.split("\n"), start=1):
+        if line.lstrip().startswith("```"):
+            fenced = not fenced
+        if fenced:
+            continue
+        # A tag shown in inline code is an example, not a quote: blank code spans out.
+        line = re.sub(r"`[^`]*`", lambda code: " " * len(code.group()), line)
+        for tag in TAG.finditer(line):
+            parsed = parse_quoted(line[:tag.start()])
+            printed, value, half_step = parsed if parsed else (None, None, None)
+            quotes.append(Quote(page, number, tag.group(1), printed, value, half_step))
+    return quotes
+
+
+def find_untagged(page, text):
+    """Measured-looking decimals of a page's prose that no tag names: [(line, number)]."""
+    found, skipping = [], False
+    raw = text.split("\n")
+    for number, line in enumerate(prose_lines(text), start=1):
+        if raw[number - 1].startswith("## "):
+            skipping = bool(SKIPPED_SECTION.match(raw[number - 1]))
+        if skipping:
+            continue
+        # A tagged number's tag was blanked with the other comments: find tags in the raw line.
+        tagged_ends = {t.start() for t in TAG.finditer(raw[number - 1])}
+        for match in DECIMAL.finditer(line):
+            if significant_digits(match.group()) < 3 or match.group() in CLOSED_FORM:
+                continue
+            end = match.end()
+            rest = raw[number - 1][end:]
+            gap = re.match(r"\s?\\?%?", rest).end()
+            if end + gap in tagged_ends:
+                continue
+            found.append((number, match.group()))
+    return found
+
+
+def check(docs, numbers, checked_pages=CHECKED_PAGES):
+    """Every problem of the pages in `docs` ({page: text}) against `numbers` ({name: value}),
+    one line each: a wrong number, an unknown name, a tag that quotes no number, a name no
+    page quotes, a measured-looking number without a tag."""
+    problems, quoted = [], set()
+    for page, text in sorted(docs.items()):
+        for quote in find_quotes(page, text):
+            quoted.add(quote.name)
+            if quote.name not in numbers:
+                problems.append(f"{quote.where()}: unknown name {quote.name}")
+            elif quote.printed is None:
+                problems.append(f"{quote.where()}: the tag {quote.name} follows no number")
+            else:
+                value = numbers[quote.name]
+                # The printed number is the value rounded: within half a step of its last digit
+                # (plus a relative 1e-9 for the binary representation of both).
+                if not abs(quote.value - value) <= quote.half_step + 1e-9 * abs(value):
+                    problems.append(f"{quote.where()}: {quote.name} is {value!r}, the page "
+                                    f"prints {quote.printed}")
+        if page in checked_pages:
+            for line, number in find_untagged(page, text):
+                problems.append(f"{page}:{line}: {number} looks measured but has no "
+                                f"<!--n:name--> tag (or belongs in CLOSED_FORM)")
+    for name in sorted(set(numbers) - quoted):
+        problems.append(f"numbers.json: {name} is quoted by no page")
+    return problems
+
+
+def read_docs(folder):
+    return {name: open(os.path.join(folder, name), encoding="utf-8").read()
+            for name in sorted(os.listdir(folder)) if name.endswith(".md")}
+
+
+# ---------------------------------------------------------------------------------------------
+# The runs: where each name's value comes from.
+
+class Runs:
+    """The outputs of scripts/make-figures' runs, folder per run label."""
+
+    def __init__(self, scratch):
+        self.scratch = scratch
+
+    def has(self, label):
+        return os.path.isfile(os.path.join(self.scratch, label, "summary.json"))
+
+    def summary(self, label):
+        with open(os.path.join(self.scratch, label, "summary.json"), encoding="utf-8") as file:
+            return json.load(file)
+
+    def rows(self, label, name):
+        with open(os.path.join(self.scratch, label, name), encoding="utf-8", newline="") as file:
+            return list(csv.DictReader(file))
+
+    def cell(self, label, name, column, **where):
+        """The `column` of the one row of CSV `name` whose columns equal `where`."""
+        rows = [row for row in self.rows(label, name)
+                if all(row[key] == str(value) for key, value in where.items())]
+        if len(rows) != 1:
+            raise KeyError(f"{label}/{name}: {len(rows)} rows match {where}")
+        return float(rows[0][column])
+
+
+SOURCES = {}  # name -> (run label, function of Runs giving the value)
+
+
+def source(name, label):
+    def register(function):
+        SOURCES[name] = (label, function)
+        return function
+    return register
+
+
+def number(name, label, function):
+    SOURCES[name] = (label, function)
+
+
+def write(scratch, labels, path):
+    """Updates numbers.json at `path` with every name whose run is in `labels` (all runs in
+    `scratch` when empty); the other names keep their values, names no longer listed go."""
+    runs = Runs(scratch)
+    try:
+        with open(path, encoding="utf-8") as file:
+            numbers = json.load(file)
+    except FileNotFoundError:
+        numbers = {}
+    numbers = {name: value for name, value in numbers.items() if name in SOURCES}
+    failed = []
+    for name, (label, function) in sorted(SOURCES.items()):
+        if labels and label not in labels or not runs.has(label):
+            continue
+        try:
+            value = float(function(runs))
+        except (KeyError, IndexError, ValueError, OSError) as error:
+            failed.append(f"{name}: {error}")
+            continue
+        if not math.isfinite(value):
+            failed.append(f"{name}: not finite ({value})")
+            continue
+        numbers[name] = value
+    text = json.dumps(dict(sorted(numbers.items())), indent=1) + "\n"
+    temporary = path + ".tmp"
+    with open(temporary, "w", encoding="utf-8") as file:
+        file.write(text)
+    os.replace(temporary, path)
+    for line in failed:
+        print(f"scripts/doc_numbers.py: {line}", file=sys.stderr)
+    return not failed
+
+
+def main(argv):
+    if len(argv) >= 2 and argv[1] == "write":
+        if len(argv) < 3:
+            print("scripts/doc_numbers.py: write needs the scratch folder", file=sys.stderr)
+            return 2
+        return 0 if write(argv[2], set(argv[3:]), os.path.join(REPO, "docs", "numbers.json")) else 1
+    if len(argv) == 2 and argv[1] == "check":
+        with open(os.path.join(REPO, "docs", "numbers.json"), encoding="utf-8") as file:
+            numbers = json.load(file)
+        problems = check(read_docs(os.path.join(REPO, "docs")), numbers)
+        for line in problems:
+            print(line)
+        return 1 if problems else 0
+    print("usage: scripts/doc_numbers.py write SCRATCH [LABEL...] | check", file=sys.stderr)
+    return 2
+
+
+# ---------------------------------------------------------------------------------------------
+# Every name, chapter by chapter.
+
+def summary_value(label, *keys):
+    """A number of run `label`'s summary.json, at the path `keys`."""
+    def read(runs):
+        value = runs.summary(label)
+        for key in keys:
+            value = value[key]
+        return value
+    return read
+
+
+def cell(label, file, column, **where):
+    return lambda runs: runs.cell(label, file, column, **where)
+
+
+# Chapter 01: the default run (cornell).
+number("ch01.rays", "ch01", summary_value("ch01", "rays"))
+number("ch01.mean_radiance", "ch01", summary_value("ch01", "mean_radiance"))
+
+# Chapter 02: the default run.
+number("ch02.disk_slope", "ch02", summary_value("ch02", "disk", "fitted_slope"))
+number("ch02.disk_slope_se", "ch02",
+       summary_value("ch02", "disk", "fitted_slope_standard_error"))
+number("ch02.median_std_ratio", "ch02",
+       summary_value("ch02", "disk", "median_empirical_over_theory_std"))
+number("ch02.rmse_at_largest_n", "ch02", cell("ch02", "disk_area.csv", "rmse", n=10000000))
+for k in (2, 5, 10):
+    number(f"ch02.ball_slope_k{k}", "ch02", lambda runs, k=k: next(
+        row["fitted_slope"] for row in runs.summary("ch02")["ball"]["fitted_slopes"]
+        if row["k"] == k))
+    number(f"ch02.ball_std_n10_k{k}", "ch02",
+           cell("ch02", "ball_error_vs_n.csv", "empirical_std", k=k, n=10))
+    number(f"ch02.ball_theory_std_n10_k{k}", "ch02",
+           cell("ch02", "ball_error_vs_n.csv", "theory_std", k=k, n=10))
+
+# (end of sources)
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
