@@ -300,6 +300,74 @@ for k in (2, 5, 10):
     number(f"ch02.ball_theory_std_n10_k{k}", "ch02",
            cell("ch02", "ball_error_vs_n.csv", "theory_std", k=k, n=10))
 
+# Chapter 03: the default run.
+def ch03_slope(integrand, dims, method, column="fitted_slope"):
+    return cell("ch03", "slopes.csv", column, integrand=integrand, dims=dims, method=method)
+
+
+def ch03_at_budget(integrand, dims, method, column):
+    return cell("ch03", "errors.csv", column, integrand=integrand, dims=dims, method=method,
+                evaluations=1048576)
+
+
+for stem, integrand, dims in (("smooth_1d", "gaussian_1d", 1), ("jump_1d", "ceil_sin_1d", 1),
+                              ("disk", "unit_ball_kd", 2)):
+    for method in ("trapezoid", "monte_carlo") if stem == "smooth_1d" else ("trapezoid",):
+        number(f"ch03.slope_{stem}_{method}", "ch03", ch03_slope(integrand, dims, method))
+        number(f"ch03.slope_{stem}_{method}_se", "ch03",
+               ch03_slope(integrand, dims, method, "standard_error"))
+    if stem != "disk":
+        number(f"ch03.error_{stem}_trapezoid", "ch03",
+               ch03_at_budget(integrand, dims, "trapezoid", "abs_error"))
+        number(f"ch03.rmse_{stem}_monte_carlo", "ch03",
+               ch03_at_budget(integrand, dims, "monte_carlo", "rmse"))
+for k in range(1, 9):
+    number(f"ch03.slope_gaussian_k{k}_trapezoid", "ch03",
+           ch03_slope("gaussian_kd", k, "trapezoid"))
+for k in (2, 4, 6, 8):
+    number(f"ch03.budget_gaussian_k{k}_trapezoid", "ch03",
+           cell("ch03", "budget.csv", "trapezoid_error", integrand="gaussian_kd", dims=k))
+    number(f"ch03.budget_gaussian_k{k}_monte_carlo", "ch03",
+           cell("ch03", "budget.csv", "monte_carlo_rmse", integrand="gaussian_kd", dims=k))
+
+
+def ch03_monte_carlo_slopes(runs):
+    return [float(row["fitted_slope"]) for row in runs.rows("ch03", "slopes.csv")
+            if row["method"] == "monte_carlo" and row["integrand"].endswith("_kd")]
+
+
+number("ch03.mc_slope_steepest", "ch03", lambda runs: min(ch03_monte_carlo_slopes(runs)))
+number("ch03.mc_slope_flattest", "ch03", lambda runs: max(ch03_monte_carlo_slopes(runs)))
+
+
+def ch03_grid_last_win(integrand):
+    """The largest k up to which the grid beats Monte Carlo at the budget at every k."""
+    def read(runs):
+        last = 0
+        for row in runs.rows("ch03", "budget.csv"):
+            if row["integrand"] != integrand:
+                continue
+            if float(row["trapezoid_error"]) >= float(row["monte_carlo_rmse"]):
+                break
+            last = int(row["dims"])
+        return last
+    return read
+
+
+number("ch03.grid_last_win_k_smooth", "ch03", ch03_grid_last_win("gaussian_kd"))
+number("ch03.grid_last_win_k_ball", "ch03", ch03_grid_last_win("unit_ball_kd"))
+number("ch03.budget_ball_k3_trapezoid", "ch03",
+       cell("ch03", "budget.csv", "trapezoid_error", integrand="unit_ball_kd", dims=3))
+number("ch03.budget_ball_k3_monte_carlo", "ch03",
+       cell("ch03", "budget.csv", "monte_carlo_rmse", integrand="unit_ball_kd", dims=3))
+for method, column in (("trapezoid", "trapezoid_error"), ("monte_carlo", "monte_carlo_rmse")):
+    number(f"ch03.ball_k8_{method}_percent", "ch03", lambda runs, column=column: 100 * runs.cell(
+        "ch03", "budget.csv", column, integrand="unit_ball_kd", dims=8) / runs.cell(
+        "ch03", "budget.csv", "reference", integrand="unit_ball_kd", dims=8))
+
+number("ch03.budget_gaussian_k1_monte_carlo", "ch03",
+       cell("ch03", "budget.csv", "monte_carlo_rmse", integrand="gaussian_kd", dims=1))
+
 # (end of sources)
 
 if __name__ == "__main__":
