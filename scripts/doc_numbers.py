@@ -368,6 +368,25 @@ for method, column in (("trapezoid", "trapezoid_error"), ("monte_carlo", "monte_
 number("ch03.budget_gaussian_k1_monte_carlo", "ch03",
        cell("ch03", "budget.csv", "monte_carlo_rmse", integrand="gaussian_kd", dims=1))
 
+# Chapter 05: the default run (cornell) and the depth-0 run.
+number("ch05.rays", "ch05", summary_value("ch05", "rays"))
+number("ch05.rmse_slope", "ch05", summary_value("ch05", "rmse_slope"))
+for spp in (1, 4, 16, 64, 256):
+    number(f"ch05.rmse_spp{spp}", "ch05", cell("ch05", "rmse_vs_spp.csv", "rmse", spp=spp))
+number("ch05.rmse_fall_1_to_256", "ch05", lambda runs: runs.cell(
+    "ch05", "rmse_vs_spp.csv", "rmse", spp=1) / runs.cell("ch05", "rmse_vs_spp.csv", "rmse", spp=256))
+number("ch05.mean_radiance", "ch05", summary_value("ch05", "mean_radiance"))
+number("ch05.mean_radiance_reference", "ch05", summary_value("ch05", "mean_radiance_reference"))
+number("ch05.depth_cut_shortfall_percent", "ch05", lambda runs: 100 * (
+    1 - runs.summary("ch05")["mean_radiance"] / runs.summary("ch05")["mean_radiance_reference"]))
+number("ch05.largest_error_gap_percent", "ch05", lambda runs: max(
+    100 * abs(float(row["rmse_vs_reference"]) / float(row["rmse"]) - 1)
+    for row in runs.rows("ch05", "rmse_vs_spp.csv")))
+for spp in (1, 4, 16, 64, 256, 1024):
+    for column in ("rmse", "rmse_vs_reference"):
+        number(f"ch05.depth0_{column}_spp{spp}", "ch05-depth0",
+               cell("ch05-depth0", "rmse_vs_spp.csv", column, spp=spp))
+
 # (end of sources)
 
 if __name__ == "__main__":
