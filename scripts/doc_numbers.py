@@ -91,9 +91,10 @@ def prose_lines(text):
         if fenced:
             lines.append("")
             continue
-        line = re.sub(r"`[^`]*`", " ", line)
-        line = re.sub(r"\$\$.*?\$\$|\$[^$]*\$", " ", line)
-        lines.append(re.sub(r"<!--.*?-->", " ", line))
+        # Blanked with as many spaces, so that positions stay those of the page's line.
+        for pattern in (r"`[^`]*`", r"\$\$.*?\$\$|\$[^$]*\$", r"<!--.*?-->"):
+            line = re.sub(pattern, lambda found: " " * len(found.group()), line)
+        lines.append(line)
     return lines
 
 
@@ -386,6 +387,73 @@ for spp in (1, 4, 16, 64, 256, 1024):
     for column in ("rmse", "rmse_vs_reference"):
         number(f"ch05.depth0_{column}_spp{spp}", "ch05-depth0",
                cell("ch05-depth0", "rmse_vs_spp.csv", column, spp=spp))
+
+# Chapter 06: the default run (furnace a = 0.5 studies, cornell) and the furnace a = 0.8 render.
+def read_pfm_gray_means(path):
+    """The mean over channels of every pixel of a PFM (little- or big-endian colour)."""
+    import struct
+    with open(path, "rb") as file:
+        header = [file.readline().strip() for _ in range(3)]
+        width, height = (int(text) for text in header[1].split())
+        order = "<" if float(header[2]) < 0 else ">"
+        values = struct.unpack(f"{order}{3 * width * height}f", file.read(12 * width * height))
+    return [sum(values[i:i + 3]) / 3 for i in range(0, len(values), 3)]
+
+
+def pixel_mean_standard_error(label, image):
+    def read(runs):
+        pixels = read_pfm_gray_means(os.path.join(runs.scratch, label, image))
+        mean = sum(pixels) / len(pixels)
+        variance = sum((p - mean) ** 2 for p in pixels) / (len(pixels) - 1)
+        return math.sqrt(variance / len(pixels))
+    return read
+
+
+for estimator in ("depth_cut", "roulette"):
+    number(f"ch06.furnace_{estimator}_mean", "ch06-furnace",
+           cell("ch06-furnace", "renders.csv", "mean_radiance", estimator=estimator))
+    number(f"ch06.cornell_{estimator}_mean", "ch06",
+           cell("ch06", "renders.csv", "mean_radiance", estimator=estimator))
+    number(f"ch06.cornell_{estimator}_rays_per_sample", "ch06",
+           cell("ch06", "renders.csv", "rays_per_sample", estimator=estimator))
+number("ch06.furnace_roulette_standard_error", "ch06-furnace",
+       pixel_mean_standard_error("ch06-furnace", "roulette.pfm"))
+number("ch06.cornell_roulette_fewer_rays_percent", "ch06", lambda runs: 100 * (1 - runs.cell(
+    "ch06", "renders.csv", "rays", estimator="roulette") / runs.cell(
+    "ch06", "renders.csv", "rays", estimator="depth_cut")))
+
+
+def ch06_largest_roulette_bias(column):
+    def read(runs):
+        rows = runs.rows("ch06", "bias.csv")
+        row = max(rows, key=lambda row: abs(float(row["roulette_bias"])))
+        return abs(float(row[column]))
+    return read
+
+
+number("ch06.roulette_largest_bias", "ch06", ch06_largest_roulette_bias("roulette_bias"))
+number("ch06.roulette_largest_bias_ci", "ch06", ch06_largest_roulette_bias("roulette_ci"))
+ch06_qs = ("0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "0.95")
+for q in ch06_qs:
+    for column in ("variance", "variance_theory", "rays_per_path"):
+        number(f"ch06.q{q}_{column}", "ch06", cell("ch06", "efficiency.csv", column, q=q))
+    number(f"ch06.q{q}_variance_times_rays", "ch06", lambda runs, q=q: runs.cell(
+        "ch06", "efficiency.csv", "variance", q=q) * runs.cell(
+        "ch06", "efficiency.csv", "rays_per_path", q=q))
+for column in ("variance", "rays_per_path"):
+    number(f"ch06.throughput_{column}", "ch06",
+           cell("ch06", "efficiency.csv", column, policy="throughput"))
+number("ch06.throughput_variance_times_rays", "ch06", lambda runs: runs.cell(
+    "ch06", "efficiency.csv", "variance", policy="throughput") * runs.cell(
+    "ch06", "efficiency.csv", "rays_per_path", policy="throughput"))
+number("ch06.best_fixed_q_by_rays", "ch06", lambda runs: min(
+    (float(row["variance"]) * float(row["rays_per_path"]), float(row["q"]))
+    for row in runs.rows("ch06", "efficiency.csv") if row["policy"] == "fixed")[1])
+number("ch06.largest_variance_gap_percent_from_q0.5", "ch06", lambda runs: max(
+    100 * abs(float(row["variance"]) / float(row["variance_theory"]) - 1)
+    for row in runs.rows("ch06", "efficiency.csv")
+    if row["policy"] == "fixed" and float(row["q"]) >= 0.5))
+number("ch06.mean_path_length", "ch06", summary_value("ch06", "mean_path_length"))
 
 # (end of sources)
 
