@@ -455,6 +455,29 @@ number("ch06.largest_variance_gap_percent_from_q0.5", "ch06", lambda runs: max(
     if row["policy"] == "fixed" and float(row["q"]) >= 0.5))
 number("ch06.mean_path_length", "ch06", summary_value("ch06", "mean_path_length"))
 
+# Chapter 07: the default run.
+ch07_pdfs = {"uniform": "uniform", "cosine": "cosine", "cos2": "cos^2", "cos4": "cos^4",
+             "cos8": "cos^8", "grazing": "grazing"}
+for key, pdf in ch07_pdfs.items():
+    columns = ["furnace_variance", "scene_variance"]
+    if key != "uniform":
+        columns.append("scene_variance_vs_uniform")
+    if key in ("uniform", "cos2", "grazing"):
+        columns.append("furnace_variance_theory")
+    for column in columns:
+        number(f"ch07.{key}_{column}", "ch07", cell("ch07", "variance_vs_m.csv", column, pdf=pdf))
+for image in ("uniform", "cosine", "cosine_equal_time"):
+    number(f"ch07.{image}_relative_mse", "ch07",
+           cell("ch07", "equal_time.csv", "relative_mse", image=image))
+for image in ("uniform", "cosine_equal_time"):
+    number(f"ch07.{image}_rays", "ch07", cell("ch07", "equal_time.csv", "rays", image=image))
+number("ch07.cosine_equal_time_spp", "ch07",
+       cell("ch07", "equal_time.csv", "spp", image="cosine_equal_time"))
+number("ch07.equal_time_less_error_percent", "ch07", lambda runs: 100 * (1 - runs.cell(
+    "ch07", "equal_time.csv", "relative_mse", image="cosine_equal_time") / runs.cell(
+    "ch07", "equal_time.csv", "relative_mse", image="uniform")))
+number("ch07.rays", "ch07", summary_value("ch07", "rays"))
+
 # (end of sources)
 
 if __name__ == "__main__":
