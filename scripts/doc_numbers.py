@@ -478,6 +478,43 @@ number("ch07.equal_time_less_error_percent", "ch07", lambda runs: 100 * (1 - run
     "ch07", "equal_time.csv", "relative_mse", image="uniform")))
 number("ch07.rays", "ch07", summary_value("ch07", "rays"))
 
+# Chapter 04: the default run (equal cost), --branching 1 --max-depth 10 (the missing light)
+# and the furnace of albedo 0.5.
+for n in (1, 2, 4, 8):
+    for column in ("spp", "rays_per_pixel", "rms_error", "rms_error_at_budget"):
+        number(f"ch04.equal_cost_n{n}_{column}", "ch04",
+               cell("ch04", "equal_cost.csv", column, branching=n))
+number("ch04.equal_cost_n8_over_n1", "ch04", lambda runs: runs.cell(
+    "ch04", "equal_cost.csv", "rms_error_at_budget", branching=8) / runs.cell(
+    "ch04", "equal_cost.csv", "rms_error_at_budget", branching=1))
+for k in (0, 1, 2, 3, 4, 5, 6, 8, 10):
+    number(f"ch04.missing_percent_k{k}", "ch04-depth10", lambda runs, k=k: 100 * runs.cell(
+        "ch04-depth10", "missing_light.csv", "missing_fraction", depth=k))
+for k in range(5):
+    number(f"ch04.furnace_missing_percent_k{k}", "ch04-furnace", lambda runs, k=k: 100 * runs.cell(
+        "ch04-furnace", "missing_light.csv", "missing_fraction", depth=k))
+
+# The answers' runs.
+number("ch02.theory_std_n1e6", "ch02", cell("ch02", "disk_area.csv", "theory_std", n=1000000))
+number("ch02.ball15_mean", "ch02-ball15",
+       cell("ch02-ball15", "ball_volume.csv", "mean_estimate", k=15))
+number("ch02.ball15_relative_std", "ch02-ball15",
+       cell("ch02-ball15", "ball_volume.csv", "relative_std", k=15))
+number("ch05.furnace_mean_radiance", "ch05-furnace", summary_value("ch05-furnace", "mean_radiance"))
+number("ch05.furnace_rmse_spp64", "ch05-furnace",
+       cell("ch05-furnace", "rmse_vs_spp.csv", "rmse", spp=64))
+number("ch05.rmse_fall_1_to_64", "ch05", lambda runs: runs.cell(
+    "ch05", "rmse_vs_spp.csv", "rmse", spp=1) / runs.cell("ch05", "rmse_vs_spp.csv", "rmse", spp=64))
+for depth in (1, 2, 4):
+    label = f"ch05-depth{depth}"
+    for spp in (256, 1024):
+        for column in ("rmse", "rmse_vs_reference"):
+            number(f"ch05.depth{depth}_{column}_spp{spp}", label,
+                   cell(label, "rmse_vs_spp.csv", column, spp=spp))
+    number(f"ch05.depth{depth}_mean_radiance", label, summary_value(label, "mean_radiance"))
+number("ch05.depth4_mean_radiance_reference", "ch05-depth4",
+       summary_value("ch05-depth4", "mean_radiance_reference"))
+
 # (end of sources)
 
 if __name__ == "__main__":
