@@ -47,7 +47,8 @@ CLOSED_FORM = {
 }
 
 # A decimal with 3 or more significant digits looks measured.
-DECIMAL = re.compile(r"(?<![\w.])\d[\d,]*\.\d+(?![\w.])")
+# (a full stop after it ends the sentence; a digit after a second point is a version, not a number)
+DECIMAL = re.compile(r"(?<![\w.])\d[\d,]*\.\d+(?!\w|\.\d)")
 
 
 def significant_digits(text):

@@ -72,6 +72,10 @@ class TheCheckTest(unittest.TestCase):
         found = problems("the mean radiance was 0.0793 (seed 1)", {})
         self.assertEqual(len(found), 1)
         self.assertIn("x.md:1: 0.0793 looks measured", found[0])
+        # At the end of a sentence too (the full stop after it is not part of the number).
+        found = problems("its mean radiance was 0.0793.\nand 2.79, then", {})
+        self.assertEqual([line.split(" looks")[0] for line in found],
+                         ["x.md:1: 0.0793", "x.md:2: 2.79"])
 
     def test_code_maths_short_numbers_and_closed_forms_are_not_measured(self):
         text = "\n".join([
