@@ -26,7 +26,7 @@ import sys
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 TAG = re.compile(r"<!--n:([A-Za-z0-9_.\-]+)-->")
-PLAIN = r"-?\d[\d,]*(?:\.\d+)?"
+PLAIN = r"[-+]?\d[\d,]*(?:\.\d+)?"
 # What a tag quotes: a maths span holding one number (maybe times a power of ten), or a plain
 # number, each maybe followed by a percent sign.
 QUOTED = re.compile(
@@ -515,6 +515,33 @@ for depth in (1, 2, 4):
     number(f"ch05.depth{depth}_mean_radiance", label, summary_value(label, "mean_radiance"))
 number("ch05.depth4_mean_radiance_reference", "ch05-depth4",
        summary_value("ch05-depth4", "mean_radiance_reference"))
+
+number("ch04.rays", "ch04", summary_value("ch04", "rays"))
+number("ch04.bounce3_share_percent", "ch04-depth10", lambda runs: 100 * (runs.cell(
+    "ch04-depth10", "missing_light.csv", "missing_fraction", depth=2) - runs.cell(
+    "ch04-depth10", "missing_light.csv", "missing_fraction", depth=3)))
+
+def ch03_dims12(integrand, column, percent=False):
+    def read(runs):
+        value = runs.cell("ch03-dims12", "budget.csv", column, integrand=integrand, dims=12)
+        if percent:
+            value *= 100 / runs.cell("ch03-dims12", "budget.csv", "reference",
+                                     integrand=integrand, dims=12)
+        return value
+    return read
+
+
+number("ch03.k12_gaussian_trapezoid", "ch03-dims12", ch03_dims12("gaussian_kd", "trapezoid_error"))
+number("ch03.k12_gaussian_trapezoid_percent", "ch03-dims12",
+       ch03_dims12("gaussian_kd", "trapezoid_error", percent=True))
+number("ch03.k12_gaussian_monte_carlo", "ch03-dims12",
+       ch03_dims12("gaussian_kd", "monte_carlo_rmse"))
+number("ch03.k12_ball_monte_carlo", "ch03-dims12", ch03_dims12("unit_ball_kd", "monte_carlo_rmse"))
+number("ch03.k12_ball_monte_carlo_percent", "ch03-dims12",
+       ch03_dims12("unit_ball_kd", "monte_carlo_rmse", percent=True))
+number("ch03.k12_ball_trapezoid_slope", "ch03-dims12", cell(
+    "ch03-dims12", "slopes.csv", "fitted_slope", integrand="unit_ball_kd", dims=12,
+    method="trapezoid"))
 
 # (end of sources)
 
