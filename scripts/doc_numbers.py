@@ -543,6 +543,29 @@ number("ch03.k12_ball_trapezoid_slope", "ch03-dims12", cell(
     "ch03-dims12", "slopes.csv", "fitted_slope", integrand="unit_ball_kd", dims=12,
     method="trapezoid"))
 
+for n in (1, 2, 4, 8):
+    for k in (1, 2, 3, 4):
+        number(f"ch04.rays_n{n}_k{k}", "ch04", cell("ch04", "rays.csv", "rays", branching=n, depth=k))
+number("ch04.rays_ratio_n8_k3_to_k4", "ch04", lambda runs: runs.cell(
+    "ch04", "rays.csv", "rays", branching=8, depth=4) / runs.cell(
+    "ch04", "rays.csv", "rays", branching=8, depth=3))
+
+
+def ch04_fitted_albedo(runs):
+    """The a of the guide a^(k+1) in missing_light_vs_depth: least squares of log(missing)
+    against k + 1 through the origin, as chapters/04_recursive_nk/plots.hpp fits it."""
+    sum_xy = sum_xx = 0.0
+    for row in runs.rows("ch04", "missing_light.csv"):
+        missing = float(row["missing_fraction"])
+        if missing > 0:
+            x = int(row["depth"]) + 1
+            sum_xy += x * math.log(missing)
+            sum_xx += x * x
+    return math.exp(sum_xy / sum_xx)
+
+
+number("ch04.fitted_albedo", "ch04", ch04_fitted_albedo)
+
 # (end of sources)
 
 if __name__ == "__main__":

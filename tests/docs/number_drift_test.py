@@ -40,10 +40,10 @@ def problems(text, numbers):
 class TheCheckTest(unittest.TestCase):
     def test_a_number_rounded_to_its_printed_digits_passes(self):
         numbers = {"a.mean": 0.09129, "a.slope": -2.0412, "a.small": 1.43e-4, "a.rays": 1991691,
-                   "a.share": 0.64}
+                   "a.share": 0.64, "a.rise": 0.4455}
         text = ("mean 0.0913<!--n:a.mean--> and 0.09<!--n:a.mean-->, slope $-2.04$<!--n:a.slope-->,"
                 " error $1.4 \\times 10^{-4}$<!--n:a.small-->, 1,991,691<!--n:a.rays--> rays,"
-                " 0.6 %<!--n:a.share--> less")
+                " 0.6 %<!--n:a.share--> less, **0.45<!--n:a.rise-->**, $+0.45$<!--n:a.rise-->")
         self.assertEqual(problems(text, numbers), [])
 
     def test_a_wrong_digit_fails(self):
