@@ -80,7 +80,8 @@ class TheCheckTest(unittest.TestCase):
     def test_code_maths_short_numbers_and_closed_forms_are_not_measured(self):
         text = "\n".join([
             "```sh", "build/bin/ch07 --albedo 0.625 # cosine.pfm: 2.38336", "```",
-            "run `--fixed-q 0.725`, where $E[L] = 1.75$ and $$b = 0.3333$$",
+            "run `--fixed-q 0.725`, where $E[L] = 1.75$ and $$b = 0.3333$$, $J \\approx",
+            "0.598144$ over two lines,",
             "about 0.5 of it, or 12 %, at a 99.9 % interval",
             "<!-- a comment with 1.234 -->"])
         self.assertEqual(problems(text, {}), [])
