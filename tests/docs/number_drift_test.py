@@ -9,6 +9,7 @@ digit, an unknown name, a name no page quotes, a measured-looking number left un
 import json
 import os
 import sys
+import tempfile
 import unittest
 
 REPO = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else os.getcwd()
@@ -90,6 +91,52 @@ class TheCheckTest(unittest.TestCase):
         text = "## Chapter 07: x\n## Chapter 08: y\nmeasured 0.1234\n"
         self.assertEqual(problems(text, {}), [])
         self.assertEqual(len(problems(text.replace("08", "09"), {})), 1)
+
+
+class TheWriterTest(unittest.TestCase):
+    """scripts/make-figures' step: numbers.json from the runs it made, the rest kept."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.scratch = os.path.join(self.folder.name, "scratch")
+        for label, mean in (("r1", 0.25), ("r2", 0.5)):
+            os.makedirs(os.path.join(self.scratch, label))
+            with open(os.path.join(self.scratch, label, "summary.json"), "w") as file:
+                json.dump({"mean": mean}, file)
+            with open(os.path.join(self.scratch, label, "t.csv"), "w") as file:
+                file.write("k,error\n1,0.125\n2,0.0625\n")
+        self.path = os.path.join(self.folder.name, "numbers.json")
+        with open(self.path, "w") as file:
+            json.dump({"r1.mean": 9.0, "r2.mean": 9.0, "r3.mean": 7.0, "gone.mean": 1.0}, file)
+        self.saved = dict(doc_numbers.SOURCES)
+        doc_numbers.SOURCES.clear()
+        for label in ("r1", "r2", "r3"):
+            doc_numbers.number(f"{label}.mean", label, doc_numbers.summary_value(label, "mean"))
+        doc_numbers.number("r1.error_k2", "r1", doc_numbers.cell("r1", "t.csv", "error", k=2))
+
+    def tearDown(self):
+        doc_numbers.SOURCES.clear()
+        doc_numbers.SOURCES.update(self.saved)
+        self.folder.cleanup()
+
+    def written(self):
+        with open(self.path) as file:
+            return json.load(file)
+
+    def test_only_the_runs_named_change_and_unlisted_names_go(self):
+        self.assertTrue(doc_numbers.write(self.scratch, {"r1"}, self.path))
+        # r2 was run but not named: kept; r3 was not run: kept; gone.mean has no source: gone.
+        self.assertEqual(self.written(),
+                         {"r1.mean": 0.25, "r1.error_k2": 0.0625, "r2.mean": 9.0, "r3.mean": 7.0})
+
+    def test_no_label_means_every_run_in_the_folder(self):
+        self.assertTrue(doc_numbers.write(self.scratch, set(), self.path))
+        self.assertEqual(self.written()["r2.mean"], 0.5)
+
+    def test_a_value_that_cannot_be_read_fails_and_keeps_the_old_one(self):
+        doc_numbers.number("r1.mean", "r1", doc_numbers.cell("r1", "t.csv", "error", k=3))
+        self.assertFalse(doc_numbers.write(self.scratch, {"r1"}, self.path))
+        self.assertEqual(self.written()["r1.mean"], 9.0)
 
 
 if __name__ == "__main__":
