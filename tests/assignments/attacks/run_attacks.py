@@ -13,7 +13,10 @@ The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp n
   hidden_read    a read of the hidden test's source through __FILE__, printed into the feedback
   hostile_kit    a kit whose CMakeLists.txt runs execute_process, whose tests are `true` and
                  whose points.json gives 100 a test, with no editable file changed
-  early_exit     (open) a sampler that calls std::_Exit(0): its tests count as passed
+  early_exit     a sampler that calls std::_Exit(0), so CTest sees its tests pass
+  atexit_exit    a wrong sampler whose exit hook turns the failed program's status into 0
+  forged_report  (open) a sampler that writes passing gtest reports itself, then exits with 0:
+                 code that runs in the test's process can forge what it reports
 Exit status: 0 every closed attack gained nothing, 1 otherwise, 2 not run as root.
 """
 
@@ -130,14 +133,34 @@ def main():
            f"graded {score(graded)} (the stub kit's 0); its execute_process "
            f"{'ran' if os.path.exists('/tmp/mcrt-attack-owned') else 'did not run'}")
 
-    # early_exit: open, reported
-    sphere = solution_file(root, "common/sampling/sphere.hpp")
-    sphere = re.sub(r"(inline Vec3 sample_uniform_sphere\(Vec2 u\) \{\n)",
-                    r"\1  mcrt_attack::leave_early();\n", sphere)
-    sphere = sphere.replace('#pragma once\n', '#pragma once\n' + include("early_exit.inc"), 1)
-    run, _, graded = grade(root, build, submission(root, os.path.join(work, "exit"), sphere=sphere))
-    print(f"  open   early_exit (expected, needs the subject/checker split): graded {score(graded)} "
-          f"against the honest {base}", flush=True)
+    def sphere_with(call, inc):
+        """The solution's sphere sampler with `call` as its first statement."""
+        sphere = solution_file(root, "common/sampling/sphere.hpp")
+        sphere = re.sub(r"(inline Vec3 sample_uniform_sphere\(Vec2 u\) \{\n)", r"\1  " + call + "\n", sphere)
+        return sphere.replace('#pragma once\n', '#pragma once\n' + (include(inc) if inc else ""), 1)
+
+    # early_exit and atexit_exit: a status of 0 from a program that did not finish its test, or
+    # whose test failed, scores nothing (gtest's report decides). Their sphere.hpp has the right
+    # pdf, which earns its own test: each is held to a sampler that always returns the pole, the
+    # same submission without the attack (a unit vector but the wrong distribution).
+    run, _, graded = grade(root, build, submission(
+        root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
+    pole = score(graded)
+    print(f"  the same with a sampler that returns the pole: {pole} points", flush=True)
+    run, _, graded = grade(root, build, submission(
+        root, os.path.join(work, "exit"), sphere=sphere_with("mcrt_attack::leave_early();", "early_exit.inc")))
+    report("early_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
+    run, _, graded = grade(root, build, submission(
+        root, os.path.join(work, "atexit"),
+        sphere=sphere_with("mcrt_attack::succeed_at_exit(); return {0.0, 0.0, 1.0};", "atexit_exit.inc")))
+    report("atexit_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
+
+    # forged_report: open, reported
+    run, _, graded = grade(root, build, submission(
+        root, os.path.join(work, "forged"), sphere=sphere_with("mcrt_attack::forge_report_and_leave();",
+                                                                 "forged_report.inc")))
+    print(f"  open   forged_report (expected, needs the subject/checker split): graded {score(graded)} "
+          f"against the pole sampler's {pole}", flush=True)
 
     shutil.rmtree(RESULTS_DIR, ignore_errors=True)
     if failures:

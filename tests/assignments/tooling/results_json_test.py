@@ -33,7 +33,7 @@ FAKE = {
 set(mode ${PROJECT_SOURCE_DIR}/src/student.txt)
 add_custom_target(assignment_a9 ALL COMMAND ${CMAKE_COMMAND} -DMODE=${mode} -P ${CMAKE_CURRENT_SOURCE_DIR}/compile.cmake)
 foreach(t IN ITEMS First Second)
-  add_test(NAME a9.A9.${t} COMMAND ${CMAKE_COMMAND} -DMODE=${mode} -DWHICH=${t} -P ${CMAKE_CURRENT_SOURCE_DIR}/run.cmake)
+  add_test(NAME a9.A9.${t} COMMAND ${CMAKE_COMMAND} -DMODE=${mode} -DSUITE=A9 -DWHICH=${t} -P ${CMAKE_CURRENT_SOURCE_DIR}/run.cmake)
   set_tests_properties(a9.A9.${t} PROPERTIES LABELS a9)
 endforeach()
 if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/hidden/CMakeLists.txt)
@@ -54,6 +54,12 @@ endif()
 if(mode MATCHES "hang" AND WHICH STREQUAL "Second")
   execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 30)
 endif()
+# a test that finished writes its report where GTEST_OUTPUT says, as gtest does; one that
+# "leaves early" exits 0 without it
+if(NOT (mode MATCHES "early" AND WHICH STREQUAL "First"))
+  string(REGEX REPLACE "^xml:" "" dir "$ENV{GTEST_OUTPUT}")
+  file(WRITE "${dir}/${SUITE}.${WHICH}.xml" "<testsuites><testsuite name='${SUITE}'><testcase name='${WHICH}' classname='${SUITE}' status='run' result='completed'/></testsuite></testsuites>\\n")
+endif()
 """,
     "tests/assignments/a9/a9_test.cpp": "TEST(A9, First) {}\nTEST(A9, Second) {}\n",
     "tests/assignments/points.json": '{"a9.A9.First": 2, "a9.A9.Second": 3, "a9-hidden.A9Hidden.Secret": 4}\n',
@@ -63,7 +69,7 @@ endif()
 HIDDEN = {
     "CMakeLists.txt": """
 add_custom_target(assignment_a9_hidden ALL)
-add_test(NAME a9-hidden.A9Hidden.Secret COMMAND ${CMAKE_COMMAND} -DMODE=${mode} -DWHICH=Secret -P ${CMAKE_CURRENT_SOURCE_DIR}/run.cmake)
+add_test(NAME a9-hidden.A9Hidden.Secret COMMAND ${CMAKE_COMMAND} -DMODE=${mode} -DSUITE=A9Hidden -DWHICH=Secret -P ${CMAKE_CURRENT_SOURCE_DIR}/run.cmake)
 set_tests_properties(a9-hidden.A9Hidden.Secret PROPERTIES LABELS a9-hidden)
 """,
     "a9_hidden_test.cpp": "TEST(A9Hidden, Secret) {}\n",
@@ -129,6 +135,13 @@ class ResultsJson(unittest.TestCase):
         self.assertEqual(scores["a9.A9.Second"], 3)
         self.assertIn("DIAGNOSIS: is your pdf off by a factor of 2?", r["tests"][0]["output"])
         self.assertIn("3 / 5", r["output"])
+
+    def test_leaving_early(self):
+        # status 0 without gtest's report of the test (std::_Exit(0) in a submission): 0 points
+        run, r, scores = self.grade("early")
+        self.assertEqual(run.returncode, 1)
+        self.assertEqual(scores, {"a9.A9.First": 0, "a9.A9.Second": 3, "a9-hidden.A9Hidden.Secret": 4})
+        self.assertIn("ended before this test finished", r["tests"][0]["output"])
 
     def test_timed_out(self):
         run, r, scores = self.grade("hang")
