@@ -61,7 +61,7 @@ struct Options {
   int depth = -1;                          // bounces after the first hit; -1: roulette only
   int reference_spp = 1024;                // samples per pixel of every reference
   std::filesystem::path reference_dir;     // default: --out's parent / reference
-  std::vector<double> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
+  std::vector<int> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
 };
 
 ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
@@ -175,6 +175,6 @@ int main(int argc, char** argv) {
                  "Folder of the cached references (default: the reference folder beside --out)");
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
-                  "each scene (a list: 64,128,256,512)", 1.0, 1e6);
+                  "each scene (a list: 64,128,256,512)", 1, 1000000);
   return app.run(argc, argv, [&] { run(app, o); });
 }

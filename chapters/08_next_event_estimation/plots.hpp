@@ -47,7 +47,7 @@ inline void write_relmse_plot(const std::filesystem::path& dir, const ShootoutSc
 // white panels: its row is scaled so that the exact value is mid-grey, which shows its noise.
 inline void write_contact_sheet(const std::filesystem::path& dir,
                                 const std::vector<ShootoutScene>& scenes, const Shootout& result,
-                                double budget) {
+                                int budget) {
   std::vector<Image> images;
   std::vector<std::string> labels;
   for (std::size_t i = 0; i < scenes.size(); ++i) {

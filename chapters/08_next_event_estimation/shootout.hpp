@@ -49,7 +49,7 @@ inline std::vector<ShootoutScene> shootout_scenes() {
 
 // One photograph of a progressive render.
 struct Snapshot {
-  double budget = 0.0;  // rays per pixel
+  int budget = 0;  // rays per pixel
   int spp = 0;
   double seconds = 0.0;  // measured: timings.json only
   std::uint64_t rays = 0;
@@ -61,7 +61,7 @@ struct Snapshot {
 // at each budget are the same whatever the machine and the thread count.
 template <class Estimate>
 std::vector<Snapshot> render_to_budgets(const Camera& camera, std::uint64_t seed, int threads,
-                                        const std::vector<double>& budgets, Estimate&& estimate,
+                                        const std::vector<int>& budgets, Estimate&& estimate,
                                         RenderTotals& total) {
   std::vector<Snapshot> snapshots;
   Image sum(camera.width(), camera.height());
@@ -75,7 +75,7 @@ std::vector<Snapshot> render_to_budgets(const Camera& camera, std::uint64_t seed
     ++now.spp;
     now.seconds += pass.seconds;
     now.rays += pass.rays;
-    for (; b < budgets.size() && static_cast<double>(now.rays) >= budgets[b] * pixels; ++b) {
+    for (; b < budgets.size() && static_cast<double>(now.rays) >= static_cast<double>(budgets[b]) * pixels; ++b) {
       now.budget = budgets[b];
       now.image = sum;
       for (Color& c : now.image.pixels) c /= static_cast<double>(now.spp);
@@ -90,7 +90,7 @@ inline Table efficiency_table() {
   return Table({{"scene", Column::text},
                 {"light_scale", Column::real, 3},
                 {"estimator", Column::text},
-                {"budget_rays_per_pixel", Column::real, 6},
+                {"budget_rays_per_pixel", Column::integer},
                 {"spp", Column::integer},
                 {"rays_per_pixel", Column::real, 6},
                 {"rel_mse", Column::real, 6},
@@ -108,7 +108,7 @@ inline Table shootout_seconds_table() {
   return Table({{"scene", Column::text},
                 {"light_scale", Column::real, 3},
                 {"estimator", Column::text},
-                {"budget_rays_per_pixel", Column::real, 6},
+                {"budget_rays_per_pixel", Column::integer},
                 {"seconds", Column::real, 6},
                 {"rays_per_second", Column::real, 6},
                 {"efficiency_per_second", Column::real, 6}});

@@ -95,12 +95,14 @@ inline double phong_brdf(const Phong& material, const Vec3& wi, const Vec3& wo, 
 /// A direction round +z (the lobe's frame: z along r) with pdf (m + 1)/(2 pi) cos^m(alpha):
 /// cos alpha = u0^(1/(m + 1)), sin alpha from 1 - cos alpha without cancellation, phi = 2 pi u1.
 inline Vec3 sample_phong_lobe_local(Vec2 u, double m) {
+  // ASSIGNMENT a2.2 BEGIN needs=a2.1 withheld stub: (void)u; (void)m; NOT_IMPLEMENTED(sample_phong_lobe_local);
   const double log_cos_alpha = std::log(u.x) / (m + 1.0);  // u0 = 0: -inf, the lobe's horizon
   const double cos_alpha = std::exp(log_cos_alpha);
   const double one_minus_cos = -std::expm1(log_cos_alpha);
   const double sin_alpha = std::sqrt(one_minus_cos * (1.0 + cos_alpha));
   const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
   return {sin_alpha * circle.x, sin_alpha * circle.y, cos_alpha};
+  // ASSIGNMENT a2.2 END
 }
 
 /// A world direction from the lobe round the unit mirror direction `reflected`. It may be
