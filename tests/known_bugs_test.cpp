@@ -8,6 +8,9 @@
 // tests/recursive_estimator_test.cpp.)
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -22,8 +25,10 @@
 #include "sampling/sampling.hpp"
 #include "stats/check.hpp"
 #include "stats/convergence.hpp"
+#include "io/plot.hpp"
 #include "stats/report.hpp"
 #include "stats/sampler_tests.hpp"
+#include "support/image_decoding.hpp"
 #include "support/phong_lobe.hpp"
 #include "support/small_trials.hpp"
 #include "support/two_render_check.hpp"
@@ -107,6 +112,34 @@ TEST_F(KnownBugsTest, PhongMaterialPdfMixedHalfAndHalfIsRejected) {
             k_sampler_alpha);
 }
 
+// Reddish (too many) and bluish (too few) pixels of a heat map's plot area, in each half along x
+// (`across`) or along y (first half the bottom). The colour bar, right of the plot area, is
+// left out: the plot spans the left 80% of the image or less.
+struct HeatMapSides {
+  int red_first_half = 0, red_second_half = 0, blue_first_half = 0, blue_second_half = 0;
+};
+HeatMapSides heat_map_sides(const std::filesystem::path& png_path, bool across) {
+  std::ifstream in(png_path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  HeatMapSides sides;
+  if (bytes.empty()) {
+    ADD_FAILURE() << "no heat map at " << png_path;
+    return sides;
+  }
+  const DecodedPng png = decode_png(bytes);
+  const int plot_width = png.width * 4 / 5;
+  for (int y = 0; y < png.height; ++y)
+    for (int x = 0; x < plot_width; ++x) {
+      const int r = png.at(x, y, 0), b = png.at(x, y, 2);
+      // the palette runs blue - white - red; grey text and white background are neither
+      const bool red = r - b > 40, blue = b - r > 15;
+      const bool first = across ? x < plot_width / 2 : y >= png.height / 2;
+      (first ? sides.red_first_half : sides.red_second_half) += red;
+      (first ? sides.blue_first_half : sides.blue_second_half) += blue;
+    }
+  return sides;
+}
+
 // The failure report of the r = u disk shows where it is wrong: far too many samples in the
 // innermost ring (r^2 < 1/11 holds 30% of them, not 9%) and too few in the outermost.
 TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
@@ -125,6 +158,29 @@ TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
   const auto csv = write_chi_square_report(failure_report_root() / "known_bug_disk_r_equals_u",
                                            "known_bug_disk_r_equals_u", r, binning);
   EXPECT_TRUE(std::filesystem::exists(csv));
+  // What a student sees: the heat map (r^2 across, phi up) is red (too many) at the left, the
+  // inner rings, and blue (too few) at the right, the outer ones.
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed: no heat map to look at";
+  const HeatMapSides sides = heat_map_sides(csv.parent_path() / "known_bug_disk_r_equals_u.png", true);
+  EXPECT_GT(sides.red_first_half, 10 * sides.red_second_half);
+  EXPECT_GT(sides.blue_second_half, 10 * sides.blue_first_half);
+}
+
+// The same for the cosine hemisphere whose disk point sits at r = u0 (phi across, cos(theta)
+// up): too many samples near the pole (red at the top), too few at the horizon (blue at the
+// bottom). With the header skipped twice gnuplot drew no map at all for this grid.
+TEST_F(KnownBugsTest, FailureReportOfTheHemispherePointsAtThePole) {
+  const Binning<Vec3> binning = sampler_hemisphere_binning();
+  const ChiSquareResult r =
+      chi_square_sampler_test(cosine_hemisphere_with_radius_u, cosine_hemisphere_pdf_at, binning, k_seed,
+                              k_sampler_samples, k_cosine_hemisphere_stream);
+  EXPECT_LT(r.p_value, k_sampler_alpha);
+  const auto csv = write_chi_square_report(failure_report_root() / "known_bug_cosine_r_equals_u",
+                                           "known_bug_cosine_r_equals_u", r, binning);
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed: no heat map to look at";
+  const HeatMapSides sides = heat_map_sides(csv.parent_path() / "known_bug_cosine_r_equals_u.png", false);
+  EXPECT_GT(sides.red_second_half, 10 * sides.red_first_half);  // red at the top: the pole
+  EXPECT_GT(sides.blue_first_half, 10 * sides.red_first_half);  // the lower half blue, not red
 }
 
 // ---- Trials of a small estimate (tests/support/small_trials.hpp, alpha 1e-4) ----------------

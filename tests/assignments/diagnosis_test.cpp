@@ -81,6 +81,20 @@ TEST_F(Diagnoses, A2CosineHemisphereThatIsUniform) {
                    "observed/expected ~ 1 / (2 cos(theta))");
 }
 
+TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
+  expect_diagnosis(check_sampler(cosine_hemisphere_with_radius_u, cosine_density, sampler_hemisphere_binning(),
+                                 SamplerKind::cosine_hemisphere, "diagnosis_cosine_radius_u"),
+                   "half the expected samples near the horizon and too many near the pole: is the disk point "
+                   "at r = u0");
+}
+
+TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
+  // the sampler is right; its chi-square fails only through the pdf, and says so
+  expect_diagnosis(check_sampler(sample_cosine_hemisphere, cosine_pdf_times_two, sampler_hemisphere_binning(),
+                                 SamplerKind::cosine_hemisphere, "diagnosis_wrong_pdf"),
+                   "your pdf integrates to 2.000, not 1, and this test compares your samples with it: fix the pdf first");
+}
+
 TEST_F(Diagnoses, A2DiskWithRadiusU) {
   expect_diagnosis(check_sampler(disk_with_radius_u, disk_density, sampler_disk_binning(), SamplerKind::unit_disk,
                                  "diagnosis_disk_radius_u"),

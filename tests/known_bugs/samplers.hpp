@@ -18,6 +18,14 @@ inline Vec2 disk_with_radius_u(Vec2 u) {
   return {r * std::cos(phi), r * std::sin(phi)};
 }
 
+/// Wrong: the cosine-weighted hemisphere by Malley's method with the disk point at r = u0
+/// instead of sqrt(u0): cos(theta) = sqrt(1 - u0^2) has density z / sqrt(1 - z^2) instead of
+/// 2z, half the expected samples at the horizon and ever more towards the pole.
+inline Vec3 cosine_hemisphere_with_radius_u(Vec2 u) {
+  const Vec2 d = disk_with_radius_u(u);
+  return {d.x, d.y, std::sqrt(std::max(0.0, 1.0 - d.x * d.x - d.y * d.y))};
+}
+
 /// Wrong: the uniform hemisphere's pdf given as 1/pi instead of 1/(2 pi) per steradian.
 inline double hemisphere_pdf_one_over_pi(const Vec3&) { return k_inv_pi; }
 

@@ -116,8 +116,10 @@ fs::path write_chi_square_report(const fs::path& dir, const std::string& name,
            << "set cblabel '(observed - expected) / sqrt(expected): red too many, blue too few'\n"
            << "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
   plot.settings = settings.str();
-  // Cell centres as the image's pixel centres; skip the CSV header row.
-  plot.plot = "plot '" + name + ".csv' skip 1 using (($3+$4)/2):(($5+$6)/2):9 with image";
+  // Cell centres as the image's pixel centres. write_plot's `set datafile columnheaders`
+  // already takes the CSV's header row as names: a `skip 1` here would drop the first cell too,
+  // which breaks the image's grid (no map for the hemisphere, stripes for the disk).
+  plot.plot = "plot '" + name + ".csv' using (($3+$4)/2):(($5+$6)/2):9 with image";
   write_plot(dir, plot);
   return csv_path;
 }

@@ -61,6 +61,10 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
     case SamplerKind::cosine_hemisphere:
       if (bands_follow(ratio, 0.0, 1.0, [](double c) { return 0.5 / c; }))
         return diagnosis("observed/expected ~ 1 / (2 cos(theta)): your samples look uniform on the hemisphere, not cosine-weighted");
+      // r = u0: observed/expected = 1 / (2 sqrt(1 - cos^2)), 0.5 at the horizon, 2.3 in the top band
+      if (ratio.front() > 0.4 && ratio.front() < 0.65 && ratio.back() > 1.5)
+        return diagnosis("half the expected samples near the horizon and too many near the pole: is the disk point "
+                         "at r = u0 instead of r = sqrt(u0) before you lift it to the hemisphere?");
       break;
     case SamplerKind::uniform_sphere:
       if (ratio.front() < 0.05 && ratio.back() > 1.5)
@@ -92,9 +96,17 @@ TaskResult check_sampler(const Sampler& sample, const Pdf& pdf, const Binning<Po
     return r.p_value;
   });
   std::string message = fmt::format("{} chi-square: {}", name, v.describe());
-  if (!v.passed())
+  if (!v.passed()) {
+    // The test compares the samples with the pdf given: a pdf that is not a density fails a
+    // correct sampler too, and its own test says how it is wrong.
+    const double total = pdf_integral(pdf, binning);
+    if (std::abs(total - 1.0) >= 1e-6)
+      diagnosis_text = diagnosis(fmt::format(
+          "your pdf integrates to {:.3f}, not 1, and this test compares your samples with it: fix the pdf "
+          "first (its own test says how), then run this test again", total));
     message += fmt::format("\nthe heat map of (observed - expected) / sqrt(expected) is in {}/{}/\n{}",
                            failure_report_root().string(), name, diagnosis_text);
+  }
   return {v.passed(), message};
 }
 
