@@ -209,7 +209,7 @@ struct SceneOptions {
   SceneParams params;
 };
 
-Scene make_cornell_box(double light_scale = 1.0);
+Scene make_cornell_box(double light_scale = 1.0, int lamp_parts = 1);
 Scene make_cornell_spheres();
 Scene make_furnace(double albedo, double emission);
 

@@ -195,6 +195,15 @@ TEST_F(Diagnoses, A5NeeCapOnly) {
                    "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
 }
 
+TEST_F(Diagnoses, A5NeeWithoutOneOverNLights) {
+  // one light: nothing to see; two: the diagnosis names the 1/N
+  EXPECT_TRUE(check_nee_regions(with_path_end(nee_without_one_over_n_lights)).passed);
+  const TaskResult r = check_nee_two_lights(with_path_end(nee_without_one_over_n_lights));
+  EXPECT_FALSE(r.passed) << r.message;
+  EXPECT_NE(r.message.find("DIAGNOSIS: region"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("does the light sample's pdf include the 1/N_lights"), std::string::npos) << r.message;
+}
+
 TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
   expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_shadow_ray_hits_light)),
                    "direct light is 0.00x: almost no shadow ray reaches the light");

@@ -25,6 +25,7 @@ struct NeeMistake {
   bool light_from_behind = false;  ///< |cos(theta_y)| and Le of a one-sided light's back
   bool cap_only = false;  ///< a sphere light sampled on its cap from everywhere (the cap is
                           ///< all the room sees, but not all a point outside the room sees)
+  bool one_light_pdf = false;  ///< the pick of one of N lights left out of the pdf (no 1/N)
 };
 
 /// A light sample with the mistake's way of tracing the shadow ray and converting the pdf.
@@ -49,7 +50,7 @@ inline DirectSample wrong_direct_light(const Scene& scene, const Hit& hit, Rng& 
   d.le = m.light_from_behind ? scene.emitted(e, cos_y >= 0.0 ? y.normal : -y.normal, -d.wi)
                              : scene.emitted(e, y.normal, -d.wi);
   if (d.cos_x <= 0.0 || d.le == Color(0.0)) return d;
-  const double p_area = y.pdf_area / static_cast<double>(n);
+  const double p_area = m.one_light_pdf ? y.pdf_area : y.pdf_area / static_cast<double>(n);
   d.pdf_light = m.no_jacobian ? p_area : area_to_solid_angle_pdf(p_area, distance, cos_y);
   ++count.rays;
   const double end = m.shadow_hits_light ? distance * (1.0 + k_shadow_ray_shortening)
@@ -114,6 +115,13 @@ inline Color nee_light_from_behind(const Scene& scene, Ray ray, int depth, Rng& 
 /// cornell-spheres' ceiling see the light outside the cap and get no direct light from it.
 inline Color nee_cap_only(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
   return wrong_nee_radiance(scene, ray, depth, rng, c, {.cap_only = true});
+}
+
+/// Wrong: the pick of one of N lights left out of the pdf (p_A for p_A / N): with N lights the
+/// direct light is divided by N. Invisible with one light.
+inline Color nee_without_one_over_n_lights(const Scene& scene, Ray ray, int depth, Rng& rng,
+                                           RayCount& c) {
+  return wrong_nee_radiance(scene, ray, depth, rng, c, {.one_light_pdf = true});
 }
 
 /// Wrong: MIS whose weights do not sum to 1: balance for the light sample, power for the BSDF

@@ -296,9 +296,10 @@ TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
 /// One seed of check_nee_regions: the Sidak-combined p-value of the 16 regions (and the worst
 /// region: its index, z and ratio of means, when it is worse than `worst_z`).
 template <class Nee>
-double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio) {
+double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio,
+                           int lamp_parts = 1) {
   constexpr int size = 16, region = 4, regions = size / region, k = 3;
-  const Scene scene = make_cornell_box(3.0);
+  const Scene scene = make_cornell_box(3.0, lamp_parts);
   const Camera camera(scene.camera, size, size);
   using Stats = std::array<RunningStats, regions * regions>;
   const auto collect = [&](auto&& estimate, int spp, std::uint64_t at_seed) {
@@ -336,6 +337,32 @@ TaskResult check_nee_regions(Nee&& radiance) {
                                   v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from "
                                                                 "the path tracer ({:.2f}x its mean)",
                                                                 worst % regions, worst / regions, worst_z, worst_ratio))};
+}
+
+/// The same with the lamp cut into two strips side by side (make_cornell_box's lamp_parts): the
+/// same light and image, but the light sampler picks one of two emitters, so its pdf carries
+/// the 1/2 of that pick. Forgetting it (p_A for p_A / 2) halves the direct light: every region
+/// is darker than the path tracer's (and brighter if the 1/N is applied twice over).
+template <class Nee>
+TaskResult check_nee_two_lights(Nee&& radiance) {
+  constexpr int regions = 4;
+  int worst = 0;
+  double worst_z = 0.0, worst_ratio = 1.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
+    return nee_regions_p_value(radiance, seed, worst, worst_z, worst_ratio, 2);
+  });
+  if (v.passed())
+    return {true, fmt::format("Cornell box with its lamp in two parts, 16 x 16, k = 3: {}", v.describe())};
+  std::string d;
+  if (worst_ratio < 0.75 || worst_ratio > 1.3)
+    d = "\n" + diagnosis(fmt::format("region (column {}, row {}) is {:.2f}x the path tracer: with two lights, does "
+                                      "the light sample's pdf include the 1/N_lights of picking one, once "
+                                      "(p_w = (p_A / N) r^2 / cos(theta_y))?",
+                                      worst % regions, worst / regions, worst_ratio));
+  else
+    d = fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the path tracer ({:.2f}x its mean)",
+                    worst % regions, worst / regions, worst_z, worst_ratio);
+  return {false, fmt::format("Cornell box with its lamp in two parts, 16 x 16, k = 3: {}{}", v.describe(), d)};
 }
 
 /// a5.3 where a sphere light shows more than its cap: cornell-spheres' light is a ball sunk

@@ -50,6 +50,11 @@ TEST(A5, Task3RegionsAgreeWithThePathTracer) {
   EXPECT_TRUE(r.passed) << r.message;
 }
 
+TEST(A5, Task3TwoLightsAgreeWithThePathTracer) {
+  const TaskResult r = check_nee_two_lights(estimate_nee_radiance);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
 TEST(A5, Task3LightBeyondTheCapAgreesWithThePathTracer) {
   const TaskResult r = check_nee_light_beyond_cap(estimate_nee_radiance);
   EXPECT_TRUE(r.passed) << r.message;
