@@ -36,6 +36,7 @@
 #include "render/scene.hpp"
 
 #include "estimators.hpp"
+#include "plates.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 #include "shootout.hpp"
@@ -62,6 +63,7 @@ struct Options {
   int reference_spp = 1024;                // samples per pixel of every reference
   std::filesystem::path reference_dir;     // default: --out's parent / reference
   std::vector<double> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
+  int plates_spp = 16;                     // samples per pixel of Veach's plates (plates.hpp)
 };
 
 ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
@@ -88,9 +90,10 @@ RayWork predicted_work(const Options& o) {
                                                             k_rays_per_sample);
   const double images = 2.0 * o.spp * pixels * k_rays_per_sample;
   const double shootout = 30.0 * (o.budgets.back() + 65.0) * pixels;
-  return {references + images + shootout,
+  const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
+  return {references + images + shootout + plates,
           "(5 references x reference spp + 2 x spp) x pixels x 32 rays + 30 x (largest "
-          "--ray-budgets + 65) x pixels"};
+          "--ray-budgets + 65) x pixels + 36 x --plates-spp x pixels x 3 rays"};
 }
 
 // nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
@@ -150,7 +153,14 @@ void run(const CLI::App& app, const Options& o) {
   write_csv(o.common.dir / "efficiency.csv", shootout.table);
   for (const ShootoutScene& s : scenes) write_relmse_plot(o.common.dir, s);
   write_contact_sheet(o.common.dir, scenes, shootout, o.budgets.back());
-  write_summary(k_chapter, app, o, images, shootout, reference.info, total);
+
+  const PlatesStudy plates = run_plates_study(o.image.width, o.image.height, o.plates_spp,
+                                              o.common.seed, o.common.threads);
+  total.seconds += plates.total.seconds;
+  total.rays += plates.total.rays;
+  total.non_finite_samples += plates.total.non_finite_samples;
+  write_plates(o.common.dir, plates, o.plates_spp);
+  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
 }
 
@@ -176,5 +186,8 @@ int main(int argc, char** argv) {
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
                   "each scene (a list: 64,128,256,512)", 1.0, 1e6);
+  add_number_option(app, "--plates-spp", o.plates_spp,
+                    "Samples per pixel of each strategy on Veach's plates (plates.png, "
+                    "plates.csv; 3 rays a sample, the reference 32 times as many)", 1, 1 << 12);
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -16,7 +16,7 @@ namespace mcrt {
 // summary.json: the setup, the chosen scene's images against the reference, the shoot-out.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& images, const Shootout& shootout, const Json& reference,
-                          const RenderTotals& total) {
+                          const RenderTotals& total, const Table& plates) {
   Json summary = start_summary(chapter, o.common);
   add_render_setup(summary, o.scene, o.image);
   summary["light_scale"] = o.scene.params.light_scale;
@@ -26,6 +26,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["reference"].erase("seconds");  // the machine's: timings.json's
   summary["images"] = images.json();
   summary["shootout"] = shootout.table.json();
+  summary["plates"] = plates.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter, o.common);
