@@ -4,11 +4,14 @@
 /// and dim, all of the same power, and a camera that sees each light reflected in each plate.
 /// Direct light only: render/glossy_direct.hpp estimates what a plate reflects towards the eye.
 ///
-/// The layout. The lights sit on a row at height 2.2, z = -2, at x = -3, -1, 1, 3. Each plate
-/// is a 6 x 1.4 strip tilted about the x axis so that its normal is the half vector between the
+/// The layout. The eye is at (0, 5, 12), the lights on a row at height 5, z = -5, at x = -3,
+/// -1, 1, 3. The plates climb away from the eye (centres 0.3 up and 1.6 back each), each a
+/// 6 x 1.4 strip tilted about the x axis so that its normal is the half vector between the
 /// directions from its centre to the eye and to the middle of the light row: a mirror plate
 /// would show the row's centre at its own centre, and every light on the plate's midline
 /// (the reflection keeps x, so each light's highlight lies between the eye's x and its own).
+/// The steps are shallow and the lights high so that the ray from a highlight to its light
+/// passes over the plates behind, and the eye sees every plate whole (tests/glossy_direct_test).
 ///
 /// Equal power: a sphere of radius r and radiance Le emits Phi = 4 pi^2 r^2 Le, so
 /// Le = k_plates_light_power / (4 pi^2 r^2) gives each the same Phi.
@@ -31,8 +34,9 @@
 namespace mcrt {
 
 /// Phong exponents of the plates, rough to sharp: from a lobe ~0.3 rad wide (1/sqrt(m)), wider
-/// than the largest light seen from a plate (~0.15 rad), to ~0.01 rad, narrower than the
-/// smallest (~0.006 rad): the crossover Veach's figure shows sits inside the range.
+/// than the largest light seen from a plate (radius ~0.09 rad), to ~0.01 rad, wider than the
+/// smallest (~0.003 rad) but narrower than the rest: the crossover Veach's figure shows sits
+/// inside the range.
 inline constexpr std::array<double, 4> k_plate_exponents{10.0, 100.0, 1000.0, 10000.0};
 /// Radii of the lights, small to large.
 inline constexpr std::array<double, 4> k_plate_light_radii{0.03, 0.1, 0.3, 0.9};
@@ -74,17 +78,17 @@ inline Quad plate_facing(const Vec3& centre, const Vec3& n, double width, double
 /// The figure's scene (see the top of this file).
 inline VeachPlates make_veach_plates() {
   VeachPlates scene;
-  const Vec3 eye{0.0, 3.0, 12.0};
-  const Vec3 light_row{0.0, 2.2, -2.0};
+  const Vec3 eye{0.0, 5.0, 12.0};
+  const Vec3 light_row{0.0, 5.0, -5.0};
   scene.camera.eye = eye;
-  // Looking 13.5 degrees down: the plates (27 to 9 degrees below the eye's horizon) and the
-  // lights (3 degrees below, the largest 3.7 degrees across) fill the 29-degree field of view.
-  scene.camera.direction = Vec3{0.0, -std::tan(0.235), -1.0};
-  scene.camera.vertical_fov = 0.5;
+  // Looking 16 degrees down: the plates (36 to 19 degrees below the eye's horizon) and the
+  // lights (on it, the largest 3 degrees in radius) fill the 43-degree field of view.
+  scene.camera.direction = Vec3{0.0, -std::tan(0.28), -1.0};
+  scene.camera.vertical_fov = 0.75;
   const std::size_t n = k_plate_exponents.size();
   for (std::size_t k = 0; k < n; ++k) {
     const double step = static_cast<double>(k);
-    const Vec3 centre{0.0, -1.0 + 0.55 * step, 3.0 - 1.1 * step};
+    const Vec3 centre{0.0, -1.0 + 0.3 * step, 3.0 - 1.6 * step};
     const Vec3 normal =
         glm::normalize(glm::normalize(eye - centre) + glm::normalize(light_row - centre));
     scene.plates.push_back(plate_facing(centre, normal, 6.0, 1.4, static_cast<std::uint32_t>(k)));
