@@ -123,7 +123,8 @@ void run(const CLI::App& app, const Options& o) {
   if (o.scene.params.furnace_albedo >= 1.0)
     throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
                      "is infinite");
-  check_ray_limit(predicted_work(o), k_max_rays, "--spp, --reference-spp, --width, --height",
+  check_ray_limit(predicted_work(o), k_max_rays,
+                  "--spp, --reference-spp, --plates-spp, --width, --height",
                   o.common.threads, "lower one of them");
   // Every scene's estimators and references, their snapshots and the contact sheet (measured:
   // 3.4 KB per pixel at 512x256 whatever --ray-budgets; counted 170 images, 4 KB).
