@@ -163,6 +163,7 @@ void run(const CLI::App& app, const Options& o) {
   write_plates(o.common.dir, plates, o.plates_spp);
   write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
+  if (!o.common.quiet) fmt::print("{}", plates_console(plates));
 }
 
 }  // namespace

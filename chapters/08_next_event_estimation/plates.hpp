@@ -126,6 +126,23 @@ inline PlatesStudy run_plates_study(int width, int height, int spp, std::uint64_
   return study;
 }
 
+// The console's view of plates.csv: per plate (rows) and light (columns) the winner, and MIS
+// power's relMSE over the winner's.
+inline std::string plates_console(const PlatesStudy& study) {
+  std::string out = "  Veach's plates, winner per plate (rows, rough to sharp) and light (columns, "
+                    "small to large), [MIS power / best]:\n";
+  for (std::size_t i = 0; i < study.table.size(); ++i) {
+    if (study.table.at(i, "strategy").json() != "mis_power") continue;
+    const int light = static_cast<int>(study.table.at(i, "light").json().get<double>());
+    if (light == 0)
+      out += fmt::format("    m = {:<6}", study.table.at(i, "exponent").json().get<double>());
+    out += fmt::format("  {:>11} [{:4.2f}]", study.table.at(i, "winner").json().get<std::string>(),
+                       study.table.at(i, "rel_mse_vs_best").json().get<double>());
+    if (light + 1 == static_cast<int>(k_plate_light_radii.size())) out += "\n";
+  }
+  return out;
+}
+
 // plates.png (the four strategies and the reference side by side, each labelled, blown up 2x
 // so a highlight a few pixels wide stays visible) and plates.csv.
 inline void write_plates(const std::filesystem::path& dir, const PlatesStudy& study, int spp) {

@@ -56,7 +56,8 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& ima
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{nee,mis}}.{{png,pfm}}, images.csv, efficiency.csv, "
-             "relmse_vs_rays_SCENE.png, contact_sheet.png, summary.json, timings.json\n",
+             "relmse_vs_rays_SCENE.png, contact_sheet.png, plates.png, plates.csv, summary.json, "
+             "timings.json\n",
              o.common.out.string());
 }
 
