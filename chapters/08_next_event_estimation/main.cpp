@@ -36,6 +36,7 @@
 #include "render/scene.hpp"
 
 #include "estimators.hpp"
+#include "plates.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 #include "shootout.hpp"
@@ -62,6 +63,7 @@ struct Options {
   int reference_spp = 1024;                // samples per pixel of every reference
   std::filesystem::path reference_dir;     // default: --out's parent / reference
   std::vector<int> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
+  int plates_spp = 16;                     // samples per pixel of Veach's plates (plates.hpp)
 };
 
 ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
@@ -88,9 +90,10 @@ RayWork predicted_work(const Options& o) {
                                                             k_rays_per_sample);
   const double images = 2.0 * o.spp * pixels * k_rays_per_sample;
   const double shootout = 30.0 * (o.budgets.back() + 65.0) * pixels;
-  return {references + images + shootout,
+  const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
+  return {references + images + shootout + plates,
           "(5 references x reference spp + 2 x spp) x pixels x 32 rays + 30 x (largest "
-          "--ray-budgets + 65) x pixels"};
+          "--ray-budgets + 65) x pixels + 36 x --plates-spp x pixels x 3 rays"};
 }
 
 // nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
@@ -120,7 +123,8 @@ void run(const CLI::App& app, const Options& o) {
   if (o.scene.params.furnace_albedo >= 1.0)
     throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
                      "is infinite");
-  check_ray_limit(predicted_work(o), k_max_rays, "--spp, --reference-spp, --width, --height",
+  check_ray_limit(predicted_work(o), k_max_rays,
+                  "--spp, --reference-spp, --plates-spp, --width, --height",
                   o.common.threads, "lower one of them");
   // Every scene's estimators and references, their snapshots and the contact sheet (measured:
   // 3.4 KB per pixel at 512x256 whatever --ray-budgets; counted 170 images, 4 KB).
@@ -150,8 +154,16 @@ void run(const CLI::App& app, const Options& o) {
   write_csv(o.common.dir / "efficiency.csv", shootout.table);
   for (const ShootoutScene& s : scenes) write_relmse_plot(o.common.dir, s);
   write_contact_sheet(o.common.dir, scenes, shootout, o.budgets.back());
-  write_summary(k_chapter, app, o, images, shootout, reference.info, total);
+
+  const PlatesStudy plates = run_plates_study(o.image.width, o.image.height, o.plates_spp,
+                                              o.common.seed, o.common.threads);
+  total.seconds += plates.total.seconds;
+  total.rays += plates.total.rays;
+  total.non_finite_samples += plates.total.non_finite_samples;
+  write_plates(o.common.dir, plates, o.plates_spp);
+  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
+  if (!o.common.quiet) fmt::print("{}", plates_console(plates));
 }
 
 }  // namespace
@@ -176,5 +188,8 @@ int main(int argc, char** argv) {
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
                   "each scene (a list: 64,128,256,512)", 1, 1000000);
+  add_number_option(app, "--plates-spp", o.plates_spp,
+                    "Samples per pixel of each strategy on Veach's plates (plates.png, "
+                    "plates.csv; 3 rays a sample, the reference 32 times as many)", 1, 1 << 12);
   return app.run(argc, argv, [&] { run(app, o); });
 }
