@@ -590,6 +590,27 @@ def ch08_means_within_interval(runs):
 
 number("ch08.means_within_interval", "ch08", ch08_means_within_interval)
 
+# Chapter 08's Veach plates (plates.csv): relMSE per plate x light x strategy, and MIS power's
+# ratio to the best strategy, worst and geometric mean over the 16 cells.
+CH08_PLATE_STRATEGIES = ("light", "bsdf", "mis_balance", "mis_power")
+for plate in range(4):
+    for light in range(4):
+        for strategy in CH08_PLATE_STRATEGIES:
+            number(f"ch08.plates.p{plate}_l{light}.{strategy}", "ch08",
+                   cell("ch08", "plates.csv", "rel_mse", plate=plate, light=light,
+                        strategy=strategy))
+
+
+def ch08_mis_power_over_best(runs):
+    return [float(row["rel_mse_vs_best"]) for row in runs.rows("ch08", "plates.csv")
+            if row["strategy"] == "mis_power"]
+
+
+number("ch08.plates.mis_power_worst_ratio", "ch08",
+       lambda runs: max(ch08_mis_power_over_best(runs)))
+number("ch08.plates.mis_power_mean_ratio", "ch08", lambda runs: math.exp(
+    sum(math.log(r) for r in ch08_mis_power_over_best(runs)) / 16))
+
 # (end of sources)
 
 if __name__ == "__main__":
