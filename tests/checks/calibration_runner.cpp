@@ -9,6 +9,9 @@
 // A check is consistent with its design when all four tests accept at level
 // a = sidak_alpha(0.01, 4 x checks): the whole calibration run then fails by chance with
 // probability at most 1%. The run exits with code 3 if any check is inconsistent.
+// A check designed as "at most alpha" (MCRT_STATISTICAL_CHECK_AT_MOST: a Sidak combination of
+// correlated statistics) is held to the one-sided versions: no rate significantly above its
+// level, no p-values significantly smaller than uniform ones.
 //
 // Seeds: every check first runs on a pilot of 20 seeds, which also times it; then each check
 // gets as many seeds as the time budget (--budget seconds for the whole run) allows, at least
@@ -22,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -53,6 +57,16 @@ struct Options {
 
 // Seeds every check runs first, to time it.
 constexpr int k_pilot_seeds = 20;
+
+// --filter TEXT: the names that contain TEXT; TEXT$: those that end with it (one check whose
+// name is the start of another's: nee_..._cornell but not nee_..._cornell_spheres).
+bool filter_matches(const std::string& filter, const std::string& name) {
+  if (!filter.empty() && filter.back() == '$') {
+    const std::string end = filter.substr(0, filter.size() - 1);
+    return name.size() >= end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
+  }
+  return name.find(filter) != std::string::npos;
+}
 
 // The i-th calibration seed: mix64 of the i-th step of a Weyl sequence, so seeds are spread
 // over 64 bits and unrelated to the suite's seed.
@@ -132,6 +146,34 @@ std::vector<int> allocate_seeds(const std::vector<Calibration>& pilots, const Op
   return seeds;
 }
 
+// For an "at most alpha" design: P(X >= k) for X ~ Binomial(n, rate), the chance of k or more
+// rejections at the designed rate, is at least `level`.
+bool rejections_not_too_many(std::size_t k, std::size_t n, double rate, double level) {
+  double tail = 0.0;
+  const auto total = static_cast<double>(n);
+  for (std::size_t j = k; j <= n; ++j) {
+    const auto hits = static_cast<double>(j);
+    const double log_term = std::lgamma(total + 1.0) - std::lgamma(hits + 1.0) -
+                            std::lgamma(total - hits + 1.0) + hits * std::log(rate) +
+                            (total - hits) * std::log1p(-rate);
+    tail += std::exp(log_term);
+    if (hits > total * rate && std::exp(log_term) < 1e-18) break;
+  }
+  return k == 0 || tail >= level;
+}
+
+// The one-sided Kolmogorov-Smirnov test of the p-values against uniform: D+ = max (i/n - x_(i)),
+// the empirical CDF above the uniform's (p-values too small), with Smirnov's P(D+ >= d) about
+// exp(-2 n d^2).
+bool p_values_not_too_small(std::vector<double> p_values, double level) {
+  std::sort(p_values.begin(), p_values.end());
+  const double n = static_cast<double>(p_values.size());
+  double d = 0.0;
+  for (std::size_t i = 0; i < p_values.size(); ++i)
+    d = std::max(d, static_cast<double>(i + 1) / n - std::clamp(p_values[i], 0.0, 1.0));
+  return std::exp(-2.0 * n * d * d) >= level;
+}
+
 // The rest of the seeds, then the rates and the KS test.
 void finish(Calibration& c, int seeds, const Options& o, double level, ProgressBar& progress) {
   if (!c.error.empty()) return;
@@ -152,6 +194,13 @@ void finish(Calibration& c, int seeds, const Options& o, double level, ProgressB
   c.ks_p = ks_p_value(c.ks_statistic, c.p_values.size());
   c.consistent = c.at_alpha.p_value >= level && c.at_5_percent.p_value >= level &&
                  c.at_1_percent.p_value >= level && c.ks_p >= level;
+  if (c.check->at_most) {  // only too many rejections, and too small p-values, count
+    const std::size_t n = c.p_values.size();
+    c.consistent = rejections_not_too_many(c.at_alpha.rejections, n, c.check->alpha, level) &&
+                   rejections_not_too_many(c.at_5_percent.rejections, n, 0.05, level) &&
+                   rejections_not_too_many(c.at_1_percent.rejections, n, 0.01, level) &&
+                   p_values_not_too_small(c.p_values, level);
+  }
 }
 
 std::string rate_cell(const Rate& r, std::size_t seeds) {
@@ -249,7 +298,7 @@ int run(const CLI::App& app, Options o) {
   if (app.count("--min-seeds") == 0) o.min_seeds = std::min(o.min_seeds, o.seeds);
   std::vector<const StatisticalCheck*> checks;
   for (const StatisticalCheck& check : statistical_checks())
-    if (check.name.find(o.filter) != std::string::npos) checks.push_back(&check);
+    if (filter_matches(o.filter, check.name)) checks.push_back(&check);
   if (checks.empty()) throw UsageError("--filter: no check name contains '" + o.filter + "'");
   if (o.min_seeds > o.seeds)
     throw UsageError("--min-seeds: " + std::to_string(o.min_seeds) + " is above --seeds " +
@@ -294,6 +343,6 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(k_pilot_seeds, 100000));
   app.add_option("--budget", o.budget, "Seconds the whole run should take (a target)")
       ->check(CLI::Range(1.0, 86400.0));
-  app.add_option("--filter", o.filter, "Run only the checks whose name contains this text");
+  app.add_option("--filter", o.filter, "Run only the checks whose name contains this text (TEXT$: ends with it)");
   return run_chapter(app, argc, argv, [&] { return run(app, o); });
 }

@@ -196,21 +196,22 @@ MCRT_STATISTICAL_CHECK(nee_agrees_with_cosine_estimator_by_block_large_light, 1e
 }
 
 // NEE and MIS against the renderers written from scratch in the test tree (their own scene
-// statements and intersections, cosine sampling, Russian roulette, no light sampling), by
-// blocks, rows, columns and border. The quad box: the same procedure, image and samples as
-// the path tracer's check in quad_box_checks.cpp, with
-// paths ended by roulette and cut at its depth 50 (a bias below 6e-6 there, far below a
-// block's standard error of about 1e-2).
-MCRT_STATISTICAL_CHECK(nee_agrees_with_independent_renderer_cornell, 1e-4) {
+// statements and intersections, cosine sampling, Russian roulette), by blocks, rows, columns
+// and border. The quad box: the same image and samples as the path tracer's check in
+// quad_box_checks.cpp, against the test tree's own NEE (reference_radiance_nee: against the
+// path-traced reference, whose rare lamp hits skew its region means, the rows and border
+// rejected correct code at 12 % of seeds at 0.05), with paths ended by roulette and cut at
+// depth 50 (a bias below 6e-6 there, far below a block's standard error of about 1e-2).
+MCRT_STATISTICAL_CHECK_AT_MOST(nee_agrees_with_independent_renderer_cornell, 1e-4) {
   return mcrt::testing::quad_box_comparison_p_value(
-      make_cornell_box(), {}, seed,
+      make_cornell_box(), {.nee_reference = true}, seed,
       [](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
         return estimate_nee_radiance(s, ray, PathEnd{Roulette{}, depth}, rng, count);
       });
 }
-MCRT_STATISTICAL_CHECK(mis_agrees_with_independent_renderer_cornell, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(mis_agrees_with_independent_renderer_cornell, 1e-4) {
   return mcrt::testing::quad_box_comparison_p_value(
-      make_cornell_box(), {}, seed,
+      make_cornell_box(), {.nee_reference = true}, seed,
       [](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
         return estimate_mis_radiance(s, ray, PathEnd{Roulette{}, depth}, MisHeuristic::power,
                                      rng, count);
@@ -231,10 +232,10 @@ double sphere_box_check(std::uint64_t seed, bool mis) {
              })
       .p_value;
 }
-MCRT_STATISTICAL_CHECK(nee_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(nee_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
   return sphere_box_check(seed, false);
 }
-MCRT_STATISTICAL_CHECK(mis_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(mis_agrees_with_independent_renderer_cornell_spheres, 1e-4) {
   return sphere_box_check(seed, true);
 }
 

@@ -161,6 +161,17 @@ inline Vec3 reference_camera_direction(const ReferenceQuadBox& box, int width, i
   return glm::normalize(Vec3(-s, t, 1.0));
 }
 
+/// Cosine-weighted about the unit normal n: a uniform point of the unit disk (by its radius
+/// sqrt(u1) and angle), lifted to the hemisphere, in the basis of Duff et al. around n.
+inline Vec3 reference_cosine_direction(const Vec3& n, Rng& rng) {
+  const double r = std::sqrt(rng.uniform()), phi = k_two_pi * rng.uniform();
+  const double x = r * std::cos(phi), y = r * std::sin(phi), z = std::sqrt(std::max(0.0, 1.0 - r * r));
+  const double sign = std::copysign(1.0, n.z), a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+  const Vec3 t1(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  const Vec3 t2(b, sign + n.y * n.y * a, -n.y);
+  return glm::normalize(x * t1 + y * t2 + z * n);
+}
+
 /// L(o, d) = Le + integral of (rho / pi) L cos: per bounce, a cosine-weighted direction
 /// (pdf cos / pi: the weight f_r cos / pdf is rho) and Russian roulette with survival
 /// q = max(rho) (weight rho / q, at most 1 per channel). E[sum of weighted Le] is the radiance
@@ -178,14 +189,48 @@ inline Color reference_radiance(const ReferenceQuadBox& box, Vec3 o, Vec3 d, Rng
     o += hit->t * d;
     Vec3 n = glm::normalize(glm::cross(tri.e1, tri.e2));
     if (glm::dot(n, d) > 0.0) n = -n;
-    // Cosine-weighted: a uniform point of the unit disk (by its radius sqrt(u1) and angle),
-    // lifted to the hemisphere, in the basis of Duff et al. around n.
-    const double r = std::sqrt(rng.uniform()), phi = k_two_pi * rng.uniform();
-    const double x = r * std::cos(phi), y = r * std::sin(phi), z = std::sqrt(std::max(0.0, 1.0 - r * r));
-    const double sign = std::copysign(1.0, n.z), a = -1.0 / (sign + n.z), b = n.x * n.y * a;
-    const Vec3 t1(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    const Vec3 t2(b, sign + n.y * n.y * a, -n.y);
-    d = glm::normalize(x * t1 + y * t2 + z * n);
+    d = reference_cosine_direction(n, rng);
+  }
+  return sum;
+}
+
+/// The same radiance by next-event estimation, for comparing the project's NEE and MIS with a
+/// reference of about their noise (the path-traced one finds the lamp by luck: its region means
+/// are so skewed that z-tests against it reject too often, measured by the calibration): Le of
+/// the camera ray's hit, then at every vertex a uniform point y of the lamp (the parallelogram
+/// of its corners, pdf 1 / A) whose light, if the segment to it is clear, adds
+///   weight (rho / pi) Le cos(theta_x) cos(theta_y) A / r^2,
+/// and a cosine-weighted bounce whose hit on the lamp adds nothing (the light sample counted
+/// it). Roulette as reference_radiance; the lamp's albedo 0 ends a path that meets it.
+inline Color reference_radiance_nee(const ReferenceQuadBox& box, Vec3 o, Vec3 d, Rng& rng) {
+  const Vec3 lamp_u = box.lamp[1] - box.lamp[0], lamp_v = box.lamp[3] - box.lamp[0];
+  const Vec3 lamp_cross = glm::cross(lamp_u, lamp_v);
+  const double lamp_area = glm::length(lamp_cross);
+  const Vec3 lamp_normal = lamp_cross / lamp_area;  // (0, -1, 0): the side it emits to
+  Color sum(0.0), weight(1.0);
+  for (bool first = true;; first = false) {
+    const std::optional<ReferenceHit> hit = reference_closest_hit(box, o, d);
+    if (!hit) break;
+    const ReferenceTriangle& tri = box.triangles[hit->triangle];
+    if (first && glm::dot(glm::cross(tri.e1, tri.e2), d) < 0.0) sum += weight * tri.emission;
+    const double q = std::max({tri.albedo.x, tri.albedo.y, tri.albedo.z});
+    if (rng.uniform() >= q) break;
+    weight *= tri.albedo / q;
+    o += hit->t * d;
+    Vec3 n = glm::normalize(glm::cross(tri.e1, tri.e2));
+    if (glm::dot(n, d) > 0.0) n = -n;
+    // The light sample: y uniform on the lamp, the segment o -> y clear up to just before y.
+    const Vec3 y = box.lamp[0] + rng.uniform() * lamp_u + rng.uniform() * lamp_v;
+    const Vec3 to_light = y - o;
+    const double r2 = glm::dot(to_light, to_light), r = std::sqrt(r2);
+    const Vec3 w = to_light / r;
+    const double cos_x = glm::dot(n, w), cos_y = -glm::dot(lamp_normal, w);
+    if (cos_x > 0.0 && cos_y > 0.0) {
+      const std::optional<ReferenceHit> blocker = reference_closest_hit(box, o, w);
+      if (!blocker || blocker->t > r * (1.0 - 1e-6))
+        sum += weight * (k_inv_pi * cos_x * cos_y * lamp_area / r2) * box.lamp_radiance;
+    }
+    d = reference_cosine_direction(n, rng);  // the bounce
   }
   return sum;
 }
@@ -225,6 +270,7 @@ struct QuadBoxComparison {
   int block = 4;                ///< blocks of block x block pixels
   int samples = 2000;           ///< samples per pixel, each renderer
   int depth = 50;               ///< the project's path depth
+  bool nee_reference = false;   ///< the reference by reference_radiance_nee, not path tracing
 };
 
 /// The project's render of `scene` (render/render.hpp, `estimate(scene, ray, depth, rng,
@@ -248,7 +294,8 @@ double quad_box_comparison_p_value(const Scene& scene, const QuadBoxComparison& 
       [&](int x, int y, Rng& rng) {
         const Vec2 u = rng.uniform2();  // the box filter: a uniform point of the pixel
         const Vec3 d = reference_camera_direction(box, c.width, c.height, x + u.x, y + u.y);
-        return reference_radiance(box, box.eye, d, rng);
+        return c.nee_reference ? reference_radiance_nee(box, box.eye, d, rng)
+                               : reference_radiance(box, box.eye, d, rng);
       });
   return region_agreement(m.ours, m.reference, c.width, c.height, c.block).p_value;
 }
