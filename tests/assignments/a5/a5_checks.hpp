@@ -339,15 +339,16 @@ TaskResult nee_regions_verdict(Nee&& radiance, int lamp_parts, const std::string
   std::string message = fmt::format("{} 16 x 16, k = 3, regions of 4 x 4 pixels: {}", scene, v.describe());
   if (v.passed()) return {true, message};
   const int column = worst % regions, row = worst / regions;
-  if (lamp_parts > 1 && (worst_ratio < 0.75 || worst_ratio > 1.3))
+  if (lamp_parts > 1 && (worst_ratio < 0.75 || worst_ratio > 1.3)) {
     message += '\n';  // apart: "\n" + a temporary trips a false -Wrestrict in g++ 12
     message += diagnosis(fmt::format("region (column {}, row {}) is {:.2f}x the path tracer: with {} lights, does "
                                              "the light sample's pdf include the 1/N_lights of picking one, once "
                                              "(p_w = (p_A / N) r^2 / cos(theta_y))?",
                                              column, row, worst_ratio, lamp_parts));
-  else
+  } else {
     message += fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the path tracer ({:.2f}x its mean)",
                            column, row, worst_z, worst_ratio);
+  }
   return {false, message};
 }
 
