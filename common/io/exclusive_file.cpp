@@ -80,6 +80,17 @@ std::error_code write_all(int fd, std::string_view bytes) {
   return {};
 }
 
+std::size_t read_all(int fd, std::string& bytes) {
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  return got;
+}
+
 int remove_abandoned_temporaries(int dir_fd) {
   const int list_fd = ::openat(dir_fd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (list_fd < 0) return 0;

@@ -33,6 +33,10 @@ NewFile create_temporary(int dir_fd, std::string_view stem);
 /// failure; a write of nothing is reported as a full disk.
 std::error_code write_all(int fd, std::string_view bytes);
 
+/// Its reading counterpart: reads into `bytes` until it is full or the file ends (read() may
+/// return less than asked, or be interrupted); returns how many bytes it got.
+std::size_t read_all(int fd, std::string& bytes);
+
 /// Removes the temporary files (`.*.tmp-*`) in the folder open as `dir_fd` whose writer is
 /// gone: their lock can be taken. Links and other non-files under such names are removed too
 /// (unlinkat removes the link, never its target). Returns how many were removed.

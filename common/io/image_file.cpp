@@ -19,6 +19,7 @@
 
 #include <stb_image_write.h>
 
+#include "io/exclusive_file.hpp"
 #include "io/output.hpp"
 
 namespace mcrt {
@@ -125,14 +126,7 @@ Image read_pfm(const std::filesystem::path& path) {
   constexpr off_t k_largest_pfm = off_t{16384} * 16384 * 12 + 64;
   if (regular && status.st_size <= k_largest_pfm) {
     bytes.resize(static_cast<std::size_t>(status.st_size));
-    std::size_t got = 0;
-    while (got < bytes.size()) {
-      const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      got += static_cast<std::size_t>(n);
-    }
-    bytes.resize(got);
+    bytes.resize(read_all(fd, bytes));
   }
   ::close(fd);
   if (!regular) throw IoError("'" + name + "' is not a regular file");

@@ -174,13 +174,7 @@ FileBytes read_cache_file(int dir_fd, const std::string& name, off_t limit) {
     return {std::nullopt, name + " changed while it was opened"};
   }
   std::string bytes(static_cast<std::size_t>(opened.st_size), '\0');
-  std::size_t got = 0;
-  while (got < bytes.size()) {
-    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    got += static_cast<std::size_t>(n);
-  }
+  const std::size_t got = read_all(fd, bytes);
   ::close(fd);
   if (got != bytes.size()) return {std::nullopt, name + " is shorter than its size"};
   return {std::move(bytes), ""};

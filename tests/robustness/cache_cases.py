@@ -502,15 +502,21 @@ def group_gnuplot_env(chapters, tmp, checks):
         checks.case(f"{guarantee} {PLOTTER} with a gnuplot that {what}", problems)
 
 
-def run_env(command, cwd, env, timeout=20.0):
-    """robustness.run with an environment."""
+def run_with(command, cwd, timeout=20.0, **options):
+    """robustness.run with subprocess.run's other options (env, preexec_fn): (exit code or
+    None on time-out, stdout, stderr, seconds)."""
     start = time.monotonic()
     try:
         p = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           stdin=subprocess.DEVNULL, timeout=timeout, env=env)
+                           stdin=subprocess.DEVNULL, timeout=timeout, **options)
     except subprocess.TimeoutExpired as e:
         return None, e.stdout or b"", e.stderr or b"", time.monotonic() - start
     return p.returncode, p.stdout, p.stderr, time.monotonic() - start
+
+
+def run_env(command, cwd, env, timeout=20.0):
+    """robustness.run with an environment."""
+    return run_with(command, cwd, timeout, env=env)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -562,13 +568,8 @@ def limited(limits, uid=None):
 
 
 def run_limited(command, cwd, preexec, timeout=20.0):
-    start = time.monotonic()
-    try:
-        p = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           stdin=subprocess.DEVNULL, timeout=timeout, preexec_fn=preexec)
-    except subprocess.TimeoutExpired as e:
-        return None, e.stdout or b"", e.stderr or b"", time.monotonic() - start
-    return p.returncode, p.stdout, p.stderr, time.monotonic() - start
+    """robustness.run with `preexec` (limits, a user) applied in the child."""
+    return run_with(command, cwd, timeout, preexec_fn=preexec)
 
 
 # A uid no account uses: its process count is this suite's alone (other suites on the machine
