@@ -1,0 +1,154 @@
+#!/usr/bin/env python3
+"""The pages keep docs/notation.md's one-symbol-one-meaning: every page links the table at its
+top, and no maths span brings back a meaning the table moved to another letter.
+
+    notation_test.py REPO_ROOT
+
+Only maths ($...$ and $$...$$) outside code is checked: code keeps the names the program uses
+(`k_disk_hit_probability`, a CSV column `k`), and prose words are not symbols. Each rule below
+is a letter the lecture uses twice, with the pages where its other meaning must not appear.
+"""
+
+import os
+import re
+import sys
+import unittest
+
+REPO = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else os.getcwd()
+
+CODE = re.compile(r"```.*?```|`[^`\n]+`", re.S)
+MATHS = re.compile(r"\$\$.*?\$\$|\$[^$]+?\$", re.S)
+
+
+def letter(name):
+    """A maths token that is the letter alone: not part of a word or a command (\\frac, \\rho),
+    not the stem of a subscripted symbol (f_r, I_l, N_{\\mathrm{lights}})."""
+    return r"(?<![A-Za-z\\])" + name + r"(?![A-Za-z_])"
+
+
+CHAPTERS = [f"{name}" for name in ("01_ray_tracing.md", "02_disk_area.md",
+                                   "03_trapezoid_vs_mc.md", "04_recursive_nk.md",
+                                   "05_path_tracer.md", "06_russian_roulette.md",
+                                   "07_importance_sampling.md", "08_next_event_estimation.md")]
+ALL = CHAPTERS + ["answers.md", "probability-recap.md", "under-the-hood.md"]
+
+# (pattern, pages, what to write instead)
+RULES = [
+    (r"(?<![A-Za-z\\])V\s*(?:\\[Bb]ig)?\[", ALL, "variance is \\mathrm{Var}[...]; V is visibility"),
+    (r"(?<![A-Za-z\\])V_", ALL, "a ball's volume is \\lvert B_D\\rvert; V is visibility"),
+    (r"\\rho", ALL, "the albedo is a"),
+    (r"T_n", ALL, "the trapezoid rule is Q_n; T is the transport operator"),
+    (letter("k"), ["02_disk_area.md", "03_trapezoid_vs_mc.md", "probability-recap.md"],
+     "the dimension is D; k is the depth"),
+    (letter("p"), ["02_disk_area.md"], "the disk's hit probability is eta; p is a pdf"),
+    (letter("q"), ["02_disk_area.md"], "the ball's fraction of the cube is eta_D; q is roulette's"),
+    (letter("T"), ["02_disk_area.md", "03_trapezoid_vs_mc.md"],
+     "trials are K, the trapezoid rule Q_n; T is the transport operator"),
+    (letter("I"), ["01_ray_tracing.md", "04_recursive_nk.md"],
+     "the point light's intensity is I_l, the identity operator 1; I is an integral's value"),
+    (letter("A") + "|" + letter("B"), ["04_recursive_nk.md", "05_path_tracer.md",
+                                        "07_importance_sampling.md"],
+     "two renders are X and X'; A is a light's area"),
+    (letter("f"), ["06_russian_roulette.md"], "the throughput floor is q_min; f is an integrand"),
+    (letter("M"), ["06_russian_roulette.md"], "roulette's survivals are G; M is the disk's hit count"),
+    (r"\\mu", ["07_importance_sampling.md"], "cos(theta) as a variable is z; mu is a mean"),
+    (letter("N"), ["08_next_event_estimation.md"],
+     "the number of lights is N_lights; N is the samples of one estimate"),
+    (letter("R") + "|" + letter("h"), ["08_next_event_estimation.md"],
+     "a sphere light's radius is r_light, its cap's depth h_cap"),
+]
+
+# Every page of the lessons links the table near its top.
+LINKED = CHAPTERS + ["answers.md", "probability-recap.md", "under-the-hood.md", "index.md"]
+TOP_LINES = 5
+
+
+def maths_spans(text):
+    """(line number, span) of every maths span outside code."""
+    spans = []
+    for piece in re.split(r"(```.*?```|`[^`\n]+`)", text, flags=re.S):
+        if CODE.fullmatch(piece or "x"):
+            continue
+        for match in MATHS.finditer(piece):
+            spans.append(match.group())
+    return spans
+
+
+def line_of(text, span):
+    return text[:text.find(span)].count("\n") + 1
+
+
+def problems(pages):
+    """pages: {name: text}. One line per maths span that breaks a rule."""
+    found = []
+    for pattern, names, instead in RULES:
+        for name in names:
+            if name not in pages:
+                continue
+            for span in maths_spans(pages[name]):
+                if re.search(pattern, span):
+                    found.append(f"{name}:{line_of(pages[name], span)}: {span.strip()} ({instead})")
+    return found
+
+
+def unlinked(pages):
+    return [name for name in LINKED if name in pages and
+            "(notation.md)" not in "\n".join(pages[name].split("\n")[:TOP_LINES])]
+
+
+def read_pages():
+    pages = {}
+    for name in set(ALL + LINKED):
+        path = os.path.join(REPO, "docs", name)
+        with open(path, encoding="utf-8") as file:
+            pages[name] = file.read()
+    return pages
+
+
+class ThePagesTest(unittest.TestCase):
+    def test_no_page_brings_back_a_moved_meaning(self):
+        found = problems(read_pages())
+        self.assertEqual(found, [], "\n" + "\n".join(found))
+
+    def test_every_page_links_the_table_at_its_top(self):
+        self.assertEqual(unlinked(read_pages()), [])
+
+    def test_the_table_exists_and_names_every_replacement(self):
+        with open(os.path.join(REPO, "docs", "notation.md"), encoding="utf-8") as file:
+            table = file.read()
+        for symbol in ("\\mathrm{Var}", "\\lvert B_D\\rvert", "Q_n", "\\eta_D", "I_l",
+                       "X_{\\mathrm{ref}}", "q_{\\min}", "N_{\\mathrm{lights}}", "r_{\\mathrm{light}}",
+                       "h_{\\mathrm{cap}}", "$K$", "$G$", "$z$", "$D$"):
+            self.assertIn(symbol, table)
+
+
+class TheCheckTest(unittest.TestCase):
+    def test_a_moved_meaning_is_caught(self):
+        pages = {"02_disk_area.md": "the $k$-ball fills $q = V_k/2^k$ and $V[M] = Np(1-p)$"}
+        found = problems(pages)
+        self.assertTrue(any("D; k is the depth" in line for line in found), found)
+        self.assertTrue(any("eta_D" in line for line in found), found)
+        self.assertTrue(any("\\mathrm{Var}" in line for line in found), found)
+        self.assertTrue(any("B_D" in line for line in found), found)
+
+    def test_code_subscripts_and_commands_are_not_symbols(self):
+        pages = {
+            "02_disk_area.md": "`k_disk_hit_probability` and ```\nk = 1\n``` and $\\eta_D$",
+            "06_russian_roulette.md": "$f_r \\cos\\theta / p$ and $\\frac{a}{b}$ and $\\max \\beta_j$",
+            "01_ray_tracing.md": "$I_l(\\theta_l)$ and $\\int f$",
+            "08_next_event_estimation.md": "$1/N_{\\mathrm{lights}}$, $h_{\\mathrm{cap}}$, $r^2$",
+        }
+        self.assertEqual(problems(pages), [])
+
+    def test_the_line_of_a_problem_is_named(self):
+        found = problems({"04_recursive_nk.md": "one\ntwo $(I - T)^{-1}$"})
+        self.assertEqual(len(found), 1)
+        self.assertTrue(found[0].startswith("04_recursive_nk.md:2: "), found)
+
+    def test_a_page_without_the_link_is_named(self):
+        pages = {"index.md": "# Pages\n\ntext\n", "01_ray_tracing.md": "# 01\n\nSymbols: [notation](notation.md).\n"}
+        self.assertEqual(unlinked(pages), ["index.md"])
+
+
+if __name__ == "__main__":
+    unittest.main()
