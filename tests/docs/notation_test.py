@@ -7,6 +7,8 @@ top, and no maths span brings back a meaning the table moved to another letter.
 Only maths ($...$ and $$...$$) outside code is checked: code keeps the names the program uses
 (`k_disk_hit_probability`, a CSV column `k`), and prose words are not symbols. Each rule below
 is a letter the lecture uses twice, with the pages where its other meaning must not appear.
+And every letter the pages' maths uses is in the table (a subscripted symbol counts by its
+letters, so the check is that no letter goes undocumented, not that every subscript is listed).
 """
 
 import os
@@ -122,6 +124,31 @@ class ThePagesTest(unittest.TestCase):
             self.assertIn(symbol, table)
 
 
+GREEK = re.compile(r"\\(alpha|beta|gamma|delta|epsilon|varepsilon|zeta|eta|theta|vartheta|iota|"
+                   r"kappa|lambda|mu|nu|xi|pi|rho|sigma|tau|upsilon|phi|varphi|chi|psi|omega|"
+                   r"Gamma|Delta|Theta|Lambda|Xi|Pi|Sigma|Phi|Psi|Omega)(?![A-Za-z])")
+
+
+def letters(text):
+    """The letters (Latin, and Greek commands) that a text's maths uses as symbols."""
+    found = set()
+    for span in maths_spans(text):
+        span = re.sub(r"\\(?:mathrm|text|operatorname|mathbb)\{[^}]*\}", " ", span)
+        found |= {"\\" + name for name in GREEK.findall(span)}
+        span = re.sub(r"\\[A-Za-z]+", " ", span)
+        found |= set(re.findall(r"(?<![A-Za-z])[A-Za-z](?![A-Za-z])", span))
+    return found
+
+
+class TheTableTest(unittest.TestCase):
+    def test_every_letter_a_page_uses_is_in_the_table(self):
+        with open(os.path.join(REPO, "docs", "notation.md"), encoding="utf-8") as file:
+            table = letters(file.read())
+        pages = read_pages()
+        missing = {name: sorted(letters(pages[name]) - table) for name in ALL}
+        self.assertEqual({name: found for name, found in missing.items() if found}, {})
+
+
 class TheCheckTest(unittest.TestCase):
     def test_a_moved_meaning_is_caught(self):
         pages = {"02_disk_area.md": "the $k$-ball fills $q = V_k/2^k$ and $V[M] = Np(1-p)$"}
@@ -144,6 +171,10 @@ class TheCheckTest(unittest.TestCase):
         found = problems({"04_recursive_nk.md": "one\ntwo $(I - T)^{-1}$"})
         self.assertEqual(len(found), 1)
         self.assertTrue(found[0].startswith("04_recursive_nk.md:2: "), found)
+
+    def test_letters_are_symbols_not_words_or_commands(self):
+        self.assertEqual(letters("$\\frac{a}{\\rho} + \\mathrm{Var}[X]$ and `$k$`"),
+                         {"a", "\\rho", "X"})
 
     def test_a_page_without_the_link_is_named(self):
         pages = {"index.md": "# Pages\n\ntext\n", "01_ray_tracing.md": "# 01\n\nSymbols: [notation](notation.md).\n"}
