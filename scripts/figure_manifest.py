@@ -64,8 +64,12 @@ def figure_source(figure, sources):
 
 
 def read_docs(folder):
-    return {name: open(os.path.join(folder, name), encoding="utf-8").read()
-            for name in sorted(os.listdir(folder)) if name.endswith(".md")}
+    docs = {}
+    for name in sorted(os.listdir(folder)):
+        if name.endswith(".md"):
+            with open(os.path.join(folder, name), encoding="utf-8") as file:
+                docs[name] = file.read()
+    return docs
 
 
 def write(scratch, labels, repo=REPO):

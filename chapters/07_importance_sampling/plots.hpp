@@ -75,7 +75,8 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
       "set origin 0, 0\nset size 1, 1\n"
       "set title 'Variance of one sample against m, p_m ~ cos^m ({} spp x 2 renders)' "
       "noenhanced\n"
-      "set xlabel 'm' noenhanced\nset ylabel 'variance of one sample' noenhanced\n"
+      "set xlabel 'm' noenhanced offset 0, 0.3\nset ylabel 'variance of one sample' noenhanced\n"
+      "set bmargin 7\n"  // room for the key below the m label
       "set xrange [0:{:.9g}]\nset yrange [{:.9g}:{:.9g}]\nset xtics 1\nset ytics auto\n"
       "set logscale y\nset format y '10^{{%T}}'\nset grid\nset key outside below center horizontal maxrows 2 font ',10'\n"
       "set object 1 rect from first 3, graph 0 to graph 1, graph 1 fc rgb '#e8e8e8' "
@@ -114,9 +115,9 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
   // The inset: over theta in [0, pi/2], p_m for every m measured, and cos / pi dashed.
   const std::string inset = fmt::format(
       "unset object 1\nunset arrow\nunset label\nunset logscale y\nset format y '%g'\n"
-      "set origin 0.5, 0.17\nset size 0.47, 0.47\n"
+      "set origin 0.5, 0.27\nset size 0.47, 0.42\n"
       "set title 'the pdfs p_m(theta) against cos(theta) / pi' noenhanced\n"
-      "set xlabel 'theta (degrees)' noenhanced\nset ylabel ''\n"
+      "set xlabel 'theta (degrees)' noenhanced offset 0, 0\nset ylabel ''\nset bmargin -1\n"
       "set xrange [0:90]\nset yrange [0:*]\nset xtics 30\nset ytics 0.5\n"
       "set key inside top right vertical maxrows auto font ',9'\n"
       "ms = '{}'\n"

@@ -51,8 +51,10 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   EXPECT_EQ(summary["non_finite_samples"], 0);
   EXPECT_EQ(summary["scene"], "cornell-spheres");
   EXPECT_EQ(summary["depth"], 4);
+  // The rays of every render: the main pairs and the bias study's (depths 0, 1, 2).
   double rays = 0.0;
   for (double r : csv.numbers("rays")) rays += r;
+  for (double r : CsvFile(dir / "depth_bias.csv").numbers("rays")) rays += r;
   EXPECT_EQ(summary["rays"].get<double>(), rays);
   EXPECT_EQ(summary["rmse_vs_spp"].size(), 3u);
   EXPECT_GT(read_json(dir / "timings.json")["rays_per_second"].get<double>(), 0.0);
