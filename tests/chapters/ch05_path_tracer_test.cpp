@@ -132,6 +132,8 @@ TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   EXPECT_EQ(read_text(one / "spp_0002.png"), read_text(two / "spp_0002.png"));
   EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   EXPECT_EQ(read_text(one / "rmse_vs_spp.svg"), read_text(two / "rmse_vs_spp.svg"));
+  // The bias study's renders at depths 0, 1, 2 (the run has a reference): the same too.
+  EXPECT_EQ(read_text(one / "depth_bias.csv"), read_text(two / "depth_bias.csv"));
 }
 
 // The lecture's loop and the four-lane engine write the same images, byte for byte, and the

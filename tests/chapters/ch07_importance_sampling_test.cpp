@@ -118,7 +118,8 @@ TEST(Ch07Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
   // summary.json holds no timing, thread count or --out: the same file whatever --threads.
   EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   for (const char* file : {"uniform.pfm", "cosine.pfm", "cosine_equal_time.pfm", "reference.pfm",
-                           "uniform.png", "noise_strip.png"})
+                           "uniform.png", "noise_strip.png", "variance_curve.csv",
+                           "variance_vs_m.gp", "variance_vs_m.png", "variance_vs_m.svg"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   EXPECT_EQ(CsvFile(one / "variance_vs_m.csv").without({"scene_seconds"}),
             CsvFile(two / "variance_vs_m.csv").without({"scene_seconds"}));
