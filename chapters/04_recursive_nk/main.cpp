@@ -140,13 +140,14 @@ void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   const Plan plan = make_plan(o, k_limit_depth, k_light_spp);
   check_plan(o, plan);
-  // The grid keeps an image per depth and per N, twice over at most, beside 4 more (measured:
-  // 175 bytes per pixel at --branching 1 --max-depth 1 with the earlier grid of N x (depth + 1)
-  // images, counted 192).
+  // The grid keeps an image per depth and per N, three times over at most (the renders, their
+  // blown-up copies, the sheet: images wider than 256 are not blown up, and narrower ones are
+  // small), beside 4 more (measured: 175 bytes per pixel at --branching 1 --max-depth 1 with the
+  // earlier grid of N x (depth + 1) images, counted 192).
   check_memory_limit(
       images_in_memory(static_cast<double>(o.image.width) * o.image.height,
-                       4.0 + 2.0 * (static_cast<double>(o.branching.size()) + o.max_depth + 1),
-                       o.common.threads, "4 + 2 x (N values + depth + 1) images"),
+                       4.0 + 3.0 * (static_cast<double>(o.branching.size()) + o.max_depth + 1),
+                       o.common.threads, "4 + 3 x (N values + depth + 1) images"),
       "--width, --height, --branching, --max-depth", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);

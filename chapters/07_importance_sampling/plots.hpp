@@ -67,7 +67,8 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
   }
   if (std::isfinite(grazing) && grazing > 0.0)
     highest = std::max(highest, grazing), lowest = std::min(lowest, grazing);
-  if (!(highest > 0.0)) highest = 1.0, lowest = 1.0;  // no light: every variance 0
+  const bool lit = highest > 0.0;  // without light every variance is 0, none infinite
+  if (!lit) highest = 1.0, lowest = 1.0;
   const double y_low = lowest / 10.0, y_high = highest * 30.0;
   const double m_high = std::max(4.0, static_cast<double>(powers.back())) + 1.0;
 
@@ -79,11 +80,13 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
       "set bmargin 7\n"  // room for the key below the m label
       "set xrange [0:{:.9g}]\nset yrange [{:.9g}:{:.9g}]\nset xtics 1\nset ytics auto\n"
       "set logscale y\nset format y '10^{{%T}}'\nset grid\nset key outside below center horizontal maxrows 2 font ',10'\n"
-      "set object 1 rect from first 3, graph 0 to graph 1, graph 1 fc rgb '#e8e8e8' "
-      "fs solid noborder behind\n"
-      "set arrow 1 from first 3, graph 0 to first 3, graph 1 nohead dt 2 lw 2 lc 'black'\n"
-      "set label 1 'm >= 3: infinite variance' at first 3.15, graph 0.06 left noenhanced\n",
-      spp, m_high, y_low, y_high);
+      "{}",
+      spp, m_high, y_low, y_high,
+      lit ? "set object 1 rect from first 3, graph 0 to graph 1, graph 1 fc rgb '#e8e8e8' "
+            "fs solid noborder behind\n"
+            "set arrow 1 from first 3, graph 0 to first 3, graph 1 nohead dt 2 lw 2 lc 'black'\n"
+            "set label 1 'm >= 3: infinite variance' at first 3.15, graph 0.06 left noenhanced\n"
+          : "");
   int tag = 2;
   for (int m : powers) {
     if (m == 1)  // the cosine pdf: 0 in the furnace, below every log axis
@@ -91,7 +94,7 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
           "set arrow {0} from first 1, graph 0.16 to first 1, graph 0 head filled lw 2 "
           "lc rgb '#1f77b4'\nset label {0} 'furnace: 0 (exact)' at first 1.08, graph 0.12 left "
           "noenhanced tc rgb '#1f77b4'\n", tag++);
-    if (m >= 3)
+    if (m >= 3 && lit)
       main += fmt::format(
           "set arrow {0} from first {1}, graph 0.72 to first {1}, graph 0.97 head filled lw 2 "
           "lc 'black'\nset label {0} 'cos^{1}: infinite variance' at first {1}, graph 0.68 center "
