@@ -91,7 +91,7 @@ class TheCheckTest(unittest.TestCase):
         self.assertTrue(any(p.startswith(f"run {label}:") for p in problems), problems)
 
     def test_a_figure_taken_from_another_file_fails(self):
-        script = self.script.replace('[05_cornell]="ch05-converged:spp_1024.png"',
+        script = self.script.replace('[05_cornell]="ch05-converged:spp_4096.png"',
                                      '[05_cornell]="ch05:spp_0256.png"')
         self.assertNotEqual(script, self.script)
         self.assertTrue(any("05_cornell.png" in p for p in self.check(script=script)))
