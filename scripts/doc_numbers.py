@@ -408,6 +408,32 @@ for estimator in ("depth_cut", "roulette"):
            cell("ch06", "renders.csv", "mean_radiance", estimator=estimator))
     number(f"ch06.cornell_{estimator}_rays_per_sample", "ch06",
            cell("ch06", "renders.csv", "rays_per_sample", estimator=estimator))
+def read_pfm_values(path):
+    """Every channel of every pixel of a PFM (little- or big-endian colour), in file order."""
+    with open(path, "rb") as file:
+        header = [file.readline().strip() for _ in range(3)]
+        width, height = (int(text) for text in header[1].split())
+        order = "<" if float(header[2]) < 0 else ">"
+        return struct.unpack(f"{order}{3 * width * height}f", file.read(12 * width * height))
+
+
+def rms_error_against_reference(label, image, reference):
+    """The RMS difference over pixels and channels between run `label`'s PFM `image` and the
+    reference PFM that chapter 05's runs cached beside the run folders (reference/)."""
+    def read(runs):
+        a = read_pfm_values(os.path.join(runs.scratch, label, image))
+        r = read_pfm_values(os.path.join(runs.scratch, "reference", reference))
+        if len(a) != len(r):
+            raise ValueError(f"{image} and {reference} differ in size")
+        return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, r)) / len(a))
+    return read
+
+
+# Chapter 06's Cornell pair against chapter 05's reference of the same scene and size (256x192,
+# no depth cut, 1024 spp): the pair's errors, noise and bias together.
+for estimator in ("depth_cut", "roulette"):
+    number(f"ch06.cornell_{estimator}_rmse_vs_reference", "ch06",
+           rms_error_against_reference("ch06", f"{estimator}.pfm", "cornell_ls1_256x192.pfm"))
 number("ch06.furnace_roulette_standard_error", "ch06-furnace",
        pixel_mean_standard_error("ch06-furnace", "roulette.pfm"))
 number("ch06.cornell_roulette_fewer_rays_percent", "ch06", lambda runs: 100 * (1 - runs.cell(

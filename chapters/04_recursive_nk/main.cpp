@@ -10,8 +10,9 @@
 //     image = render with incidentRadiance (N branches per hit, cut at depth k)
 //     record its rays (closest-hit queries), its time and its mean radiance
 //   limit = the mean radiance with N = 1 cut far deeper: what every cut at k is missing
-//   the grid of images: every (N, k) at about one cost (--grid-budget rays per pixel)
 //   at one ray budget per pixel: N = 1 with many camera samples against N > 1 with few
+//   grid.png: N = 1 at --grid-spp for every k (the light each cut misses), above the
+//   equal-cost renders (spp and RMS error): the two lessons apart, each at a fair cost
 //
 // Its three problems become numbers: the rays grow as N^k, the cut at depth k drops the light
 // of longer paths, and branching is a poor way to spend rays against noise.
@@ -73,25 +74,20 @@ struct Options {
   double max_rays = 2e9;                   // refuse runs predicted to trace more rays
   int equal_cost_depth = 3;                // k of the equal-cost comparison
   int budget = 600;                        // rays per pixel of each equal-cost render
-  int grid_budget = 1024;                  // rays per pixel of each panel of grid.png
+  int grid_spp = 1024;                     // samples per pixel of grid.png's top row (N = 1)
 };
 
-// 1. The explosion, and 3. the images: every N, every k (rays.csv, grid.png). A panel of the
-// grid is the sweep's image, or where --grid-budget pays for more samples, a render of its own.
-Table sweep(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan,
-            std::vector<Image>& images) {
+// 1. The explosion: every N, every k (rays.csv).
+Table sweep(RecursiveRenderer& render_recursive, const Options& o) {
   Table rays({{"branching", Column::integer}, {"depth", Column::integer}, {"rays", Column::integer},
               {"predicted_max_rays", Column::integer}, {"seconds", Column::real, 6},
               {"rays_per_second", Column::real, 6}, {"mean_radiance", Column::real, 9}});
   const std::uint64_t pixels = static_cast<std::uint64_t>(o.image.width) * o.image.height;
   for (int n : o.branching)
     for (int k = 0; k <= o.max_depth; ++k) {
-      RenderResult r = render_recursive({n, k}, o.spp, 0);
+      const RenderResult r = render_recursive({n, k}, o.spp, 0);
       rays.add_row({n, k, r.rays, pixels * o.spp * max_rays_per_sample(n, k), r.seconds,
                     r.rays_per_second(), mean_radiance(r.image)});
-      const int panel_spp = plan.grid_spp[images.size()];
-      images.push_back(panel_spp > o.spp ? render_recursive({n, k}, panel_spp, 0).image
-                                         : std::move(r.image));
     }
   return rays;
 }
@@ -112,8 +108,10 @@ Table missing_light(RecursiveRenderer& render_recursive, const Options& o, const
 }
 
 // 4. Equal cost: the same rays per pixel spent on camera samples (N = 1) or on branches. The
-// error of each comes from two independent renders A and B, with no reference image.
-Table equal_cost(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan) {
+// error of each comes from two independent renders A and B, with no reference image. Each A
+// goes to `images` for grid.png's bottom row.
+Table equal_cost(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan,
+                 std::vector<Image>& images) {
   Table table({{"branching", Column::integer}, {"depth", Column::integer}, {"spp", Column::integer},
                {"predicted_rays_per_pixel", Column::integer}, {"rays_per_pixel", Column::real, 9},
                {"seconds", Column::real, 6}, {"mean_radiance", Column::real, 9},
@@ -123,7 +121,7 @@ Table equal_cost(RecursiveRenderer& render_recursive, const Options& o, const Pl
   for (std::size_t i = 0; i < o.branching.size(); ++i) {
     const int n = o.branching[i], spp = plan.equal_cost_spp[i];
     if (spp == 0) continue;  // one sample of this N costs more than the budget
-    const RenderResult a = render_recursive({n, k}, spp, 0);
+    RenderResult a = render_recursive({n, k}, spp, 0);
     const RenderResult b = render_recursive({n, k}, spp, static_cast<std::uint64_t>(spp));
     const double rays_per_pixel = static_cast<double>(a.rays) / static_cast<double>(plan.pixels);
     const double mean = 0.5 * (mean_radiance(a.image) + mean_radiance(b.image));
@@ -133,6 +131,7 @@ Table equal_cost(RecursiveRenderer& render_recursive, const Options& o, const Pl
     table.add_row({n, k, spp, spp * max_rays_per_sample(n, k), rays_per_pixel,
                    a.seconds + b.seconds, mean, rms_error, mean > 0.0 ? rms_error / mean : 0.0,
                    at_budget});
+    images.push_back(std::move(a.image));
   }
   return table;
 }
@@ -141,22 +140,26 @@ void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   const Plan plan = make_plan(o, k_limit_depth, k_light_spp);
   check_plan(o, plan);
-  // The grid keeps an image per N and depth, twice over at most, beside 4 more (measured: 175
-  // bytes per pixel at --branching 1 --max-depth 1, counted 192).
+  // The grid keeps an image per depth and per N, three times over at most (the renders, their
+  // blown-up copies, the sheet: images wider than 256 are not blown up, and narrower ones are
+  // small), beside 4 more (measured: 175 bytes per pixel at --branching 1 --max-depth 1 with the
+  // earlier grid of N x (depth + 1) images, counted 192).
   check_memory_limit(
       images_in_memory(static_cast<double>(o.image.width) * o.image.height,
-                       4.0 + 2.0 * static_cast<double>(o.branching.size()) * (o.max_depth + 1),
-                       o.common.threads, "4 + 2 x N values x (depth + 1) images"),
+                       4.0 + 3.0 * (static_cast<double>(o.branching.size()) + o.max_depth + 1),
+                       o.common.threads, "4 + 3 x (N values + depth + 1) images"),
       "--width, --height, --branching, --max-depth", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
 
   ProgressBar progress("ch04 sweep", static_cast<std::uint64_t>(plan.predicted_rays), o.common.quiet);
   RecursiveRenderer render_recursive{scene, camera, o.common.seed, o.common.threads, &progress, {}};
-  std::vector<Image> images;
-  const Table rays = sweep(render_recursive, o, plan, images);
+  const Table rays = sweep(render_recursive, o);
   const Table missing = missing_light(render_recursive, o, plan);
-  const Table equal = equal_cost(render_recursive, o, plan);
+  std::vector<Image> by_depth, at_equal_cost;  // grid.png's two rows
+  for (int k = 0; k <= o.max_depth; ++k)
+    by_depth.push_back(render_recursive({1, k}, o.grid_spp, 0).image);
+  const Table equal = equal_cost(render_recursive, o, plan, at_equal_cost);
   progress.finish();
   const std::vector<double> error = equal.numbers("rms_error_at_budget");
   const auto best = static_cast<std::size_t>(std::min_element(error.begin(), error.end()) - error.begin());
@@ -168,8 +171,8 @@ void run(const CLI::App& app, const Options& o) {
   write_plots(o.common.dir, o.branching, o.spp, k_light_spp,
               missing.at(0, "limit_mean_radiance").number(), plan.limit_depth, o.budget,
               o.equal_cost_depth, rays.numbers("mean_radiance"), error);
-  write_grid(o.common.dir, std::move(images), o.branching, o.max_depth, plan.grid_spp,
-             o.grid_budget, k_grid_exposure, o.image.width);
+  write_grid(o.common.dir, std::move(by_depth), std::move(at_equal_cost), missing, equal,
+             o.grid_spp, o.budget, k_grid_exposure, o.image.width);
   write_plot(o.common.dir,
              missing_light_plot(missing.numbers("missing_fraction"),
                                 o.scene.scene == "furnace" ? o.scene.params.furnace_albedo : 0.0,
@@ -197,8 +200,8 @@ int main(int argc, char** argv) {
                     "Depth k of the equal-cost comparison", 0, 64);
   add_number_option(app, "--budget", o.budget, "Rays per pixel of each equal-cost render", 1,
                     1 << 20);
-  add_number_option(app, "--grid-budget", o.grid_budget,
-                    "Rays per pixel of each panel of grid.png (at least --spp samples)", 1,
-                    1 << 20);
+  add_number_option(app, "--grid-spp", o.grid_spp,
+                    "Samples per pixel of each panel of grid.png's top row (N = 1, every k)", 1,
+                    1 << 16);
   return app.run(argc, argv, [&] { run(app, o); });
 }

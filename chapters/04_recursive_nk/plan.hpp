@@ -15,13 +15,10 @@
 namespace mcrt {
 
 // Every render of the run and its predicted ray count (no escapes), known before any work.
-// The grid's panels (grid_spp) are the sweep's images where --grid-budget buys no more samples
-// than --spp, and renders of their own where it buys more.
 struct Plan {
   std::uint64_t pixels = 0;
   int limit_depth = 0;
   std::vector<int> equal_cost_spp;  // per N: budget / rays per sample; 0 when one is over
-  std::vector<int> grid_spp;        // per (N, k) in the sweep's order: the grid panel's spp
   double predicted_rays = 0.0;      // a double: the request may exceed 2^64
 };
 
@@ -35,18 +32,10 @@ inline Plan make_plan(const auto& o, int limit_depth, int light_spp) {
     return static_cast<double>(plan.pixels) * spp * static_cast<double>(max_rays_per_sample(n, k));
   };
   for (int n : o.branching)
-    for (int k = 0; k <= o.max_depth; ++k) {
-      plan.predicted_rays += rays(n, k, o.spp);
-      // The grid's panels cost about --grid-budget rays per pixel each: as many samples as
-      // that pays for, and at least the sweep's (whose image the panel is then).
-      const std::uint64_t per_sample = max_rays_per_sample(n, k);
-      const auto spp = static_cast<int>(
-          std::max<std::uint64_t>(static_cast<std::uint64_t>(o.spp),
-                                  static_cast<std::uint64_t>(o.grid_budget) / per_sample));
-      plan.grid_spp.push_back(spp);
-      if (spp > o.spp) plan.predicted_rays += rays(n, k, spp);
-    }
-  for (int k = 0; k <= o.max_depth; ++k) plan.predicted_rays += rays(1, k, light_spp);
+    for (int k = 0; k <= o.max_depth; ++k) plan.predicted_rays += rays(n, k, o.spp);
+  // The missing-light renders and grid.png's top row, N = 1 at every k.
+  for (int k = 0; k <= o.max_depth; ++k)
+    plan.predicted_rays += rays(1, k, light_spp) + rays(1, k, o.grid_spp);
   plan.predicted_rays += rays(1, plan.limit_depth, light_spp);
   for (int n : o.branching) {
     const std::uint64_t per_sample = max_rays_per_sample(n, o.equal_cost_depth);
@@ -67,7 +56,7 @@ inline void check_plan(const auto& o, const Plan& plan) {
                                  o.budget, o.equal_cost_depth, cheapest, cheapest_sample));
   check_ray_limit({plan.predicted_rays, "sweep, missing-light and equal-cost renders"},
                   o.max_rays, "--max-rays", o.common.threads,
-                  "lower --max-depth, --branching, --spp, --budget or --grid-budget, or raise "
+                  "lower --max-depth, --branching, --spp, --budget or --grid-spp, or raise "
                   "--max-rays");
 }
 

@@ -14,6 +14,7 @@
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
 #include "io/plot.hpp"
+#include "io/table.hpp"
 #include "render/image.hpp"
 
 namespace mcrt {
@@ -102,28 +103,47 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
   write_plot(out, equal);
 }
 
-// grid.png: every image of the sweep, rows N and columns k, each panel at its own spp (about
-// one cost each: --grid-budget rays per pixel) and brightened by `exposure` (radiance times it
-// before the sRGB encoding) so the dim walls show. Small images are blown up (nearest
-// neighbour, so the noise stays visible) to about 256 wide.
-inline void write_grid(const std::filesystem::path& out, std::vector<Image> images,
-                       const std::vector<int>& branching, int max_depth,
-                       const std::vector<int>& spp, int grid_budget, double exposure, int width) {
-  std::vector<std::string> labels;  // in the sweep's order
-  for (int n : branching)
-    for (int k = 0; k <= max_depth; ++k)
-      labels.push_back(fmt::format("N={} k={} {}spp", n, k, spp[labels.size()]));
+// grid.png, two rows, each brightened by `exposure` (radiance times it before the sRGB
+// encoding) so the dim walls show. Top: N = 1 at --grid-spp for every k, each under the light
+// its cut misses (missing_light.csv): at one spp the columns differ only in the bounces they
+// keep. Bottom: the equal-cost renders at --equal-cost-depth, one per N, each under its spp
+// and RMS error (equal_cost.csv): the same rays per pixel, more branches buy fewer samples.
+// Small images are blown up (nearest neighbour, so the noise stays visible) to about 256 wide.
+inline void write_grid(const std::filesystem::path& out, std::vector<Image> by_depth,
+                       std::vector<Image> at_equal_cost, const Table& missing,
+                       const Table& equal, int grid_spp, int budget, double exposure,
+                       int width) {
+  const std::size_t columns = std::max(by_depth.size(), at_equal_cost.size());
+  std::vector<Image> images;
+  std::vector<std::string> labels;
+  for (std::size_t k = 0; k < columns; ++k) {
+    if (k < by_depth.size()) {
+      images.push_back(std::move(by_depth[k]));
+      labels.push_back(fmt::format("k={}: {:.1f}% missing", k,
+                                   100.0 * missing.at(k, "missing_fraction").number()));
+    } else {  // an empty cell: the bottom row is longer
+      images.emplace_back(0, 0);
+      labels.emplace_back();
+    }
+  }
+  for (std::size_t i = 0; i < columns; ++i) {
+    if (i < at_equal_cost.size()) {
+      images.push_back(std::move(at_equal_cost[i]));
+      labels.push_back(fmt::format("N={} {}spp rms {:.3f}", equal.at(i, "branching").number(),
+                                   equal.at(i, "spp").number(), equal.at(i, "rms_error").number()));
+    }
+  }
   for (Image& image : images)
     for (Color& c : image.pixels) c *= exposure;
   const int factor = std::clamp(256 / width, 1, 4);
   SheetLayout layout;
-  layout.columns = max_depth + 1;
+  layout.columns = static_cast<int>(columns);
   layout.label_scale = width * factor >= 120 ? 2 : 1;
   const double stops = std::log2(exposure);
-  layout.title = fmt::format("rows N = {}, columns k = 0..{}; each ~{} rays/pixel; exposure x{:g} "
-                             "({:+g} stop{})",
-                             fmt::join(branching, ","), max_depth, grid_budget, exposure, stops,
-                             std::abs(stops) == 1.0 ? "" : "s");
+  const int k = equal.size() > 0 ? static_cast<int>(equal.at(0, "depth").number()) : 0;
+  layout.title = fmt::format(
+      "top: N=1, {} spp, cut at depth k; bottom: k={}, at most {} rays/pixel each; exposure x{:g} "
+      "({:+g} stop{})", grid_spp, k, budget, exposure, stops, std::abs(stops) == 1.0 ? "" : "s");
   write_png(out / "grid.png", labelled_grid(images, labels, factor, layout));
 }
 

@@ -49,7 +49,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["limit"] = {{"branching", 1}, {"depth", plan.limit_depth}, {"spp", light_spp},
                       {"mean_radiance", missing.at(0, "limit_mean_radiance").number()}};
   summary["missing_light"] = missing.json();
-  summary["grid"] = {{"rays_per_pixel", o.grid_budget}, {"spp", plan.grid_spp}};
+  summary["grid"] = {{"top_row_spp", o.grid_spp}, {"bottom_row_rays_per_pixel", o.budget}};
   summary["equal_cost"] = {{"budget_rays_per_pixel", o.budget}, {"depth", o.equal_cost_depth},
                            {"best_branching", equal.at(best, "branching").json()},
                            {"rows", equal.json()}, {"conclusion", verdict}};

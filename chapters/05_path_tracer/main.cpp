@@ -16,7 +16,9 @@
 // cannot see bias: the light the depth cut drops is missing from A and B alike. So each image
 // is also compared with a converged reference without a depth cut (chapter 08's estimator,
 // cached under out/reference/): E[(A - R)^2] = Var[A] + bias^2 + Var[R], which stops falling
-// once the noise is below the bias.
+// once the noise is below the bias. To show it, the same pairs are rendered again at a few
+// shallow depths (--bias-depths, default 0, 1, 2), whose bias is large: rmse_vs_spp.png draws
+// their two-render error falling on while their error against the reference levels off.
 //
 // The loop above is estimate_path_radiance (render/path_tracer.hpp). By default the chapter
 // runs it four paths at a time (render/path_tracer_lanes.hpp, --engine lanes): the same image,
@@ -76,6 +78,7 @@ struct Options {
   std::vector<int> spp{1, 4, 16, 64, 256};  // samples per pixel of each image
   int depth = 10;                           // bounces after the camera ray's hit
   int reference_spp = 1024;                 // 0: no reference, no error against it
+  std::vector<int> bias_depths{0, 1, 2};    // shallow depths rendered again against the reference
   bool lanes = true;                        // --engine lanes (true) or loop
   std::filesystem::path reference_dir;      // default: --out's parent / reference
 };
@@ -99,11 +102,15 @@ ReferenceSpec reference_spec(const Options& o) {
 RayWork predicted_work(const Options& o) {
   double samples = 0.0;
   for (int spp : o.spp) samples += 2.0 * spp;
+  double study_depths = 0.0;  // the bias study's rays per sample, summed over its depths
+  if (o.reference_spp > 0)
+    for (int depth : o.bias_depths) study_depths += depth + 1.0;
   const double reference = o.reference_spp > 0 ? reference_predicted_rays(
                                                       reference_spec(o), k_reference_rays_per_sample)
                                                 : 0.0;
-  return {samples * o.image.width * o.image.height * (o.depth + 1.0) + reference,
-          "2 renders x sum of spp x pixels x (depth + 1) + reference spp x pixels x 32"};
+  return {samples * o.image.width * o.image.height * (o.depth + 1.0 + study_depths) + reference,
+          "2 renders x sum of spp x pixels x (depth + 1 + sum of (bias depth + 1)) + reference "
+          "spp x pixels x 32"};
 }
 
 // rmse_vs_spp.csv: one row per spp, its two-render RMS error, its RMS error against the
@@ -117,16 +124,27 @@ Table rmse_table() {
                 {"rays_per_second", Column::real, 6}});
 }
 
+// depth_bias.csv: per --bias-depths depth and spp, the two errors of a pair rendered at that
+// depth (the same samples as the main pairs, cut shallower).
+Table depth_bias_table() {
+  return Table({{"depth", Column::integer},
+                {"spp", Column::integer},
+                {"rmse", Column::real, 9},               // two-render: noise only
+                {"rmse_vs_reference", Column::real, 9},  // noise and the cut's bias
+                {"rays", Column::integer}});
+}
+
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
 // images of growing spp share their first samples, so they show one image converging.
 std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Camera& camera,
-                                                  int spp, const Options& o) {
-  ProgressBar progress(fmt::format("ch05 {:4} spp", spp), 2ull * o.image.height, o.common.quiet);
+                                                  int spp, int depth, const Options& o) {
+  ProgressBar progress(fmt::format("ch05 {:4} spp depth {}", spp, depth), 2ull * o.image.height,
+                       o.common.quiet);
   const auto render_paths = [&](std::uint64_t first_sample) {
     const RenderSettings settings{spp, first_sample, o.common.seed, o.common.threads, &progress};
-    if (o.lanes) return render_path_tracer_lanes(scene, camera, settings, o.depth);
+    if (o.lanes) return render_path_tracer_lanes(scene, camera, settings, depth);
     return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-      return estimate_path_radiance(scene, ray, o.depth, rng, count);
+      return estimate_path_radiance(scene, ray, depth, rng, count);
     });
   };
   RenderResult a = render_paths(0);
@@ -166,7 +184,7 @@ void run(const CLI::App& app, const Options& o) {
   std::vector<Image> images;
   std::vector<std::string> labels;
   for (int spp : o.spp) {
-    const auto [a, b] = render_pair(scene, camera, spp, o);
+    const auto [a, b] = render_pair(scene, camera, spp, o.depth, o);
     RenderTotals pair = totals_of(a);
     pair.add(b);
     const Cell against_reference =
@@ -183,13 +201,26 @@ void run(const CLI::App& app, const Options& o) {
   }
   const double slope = fitted_slope(errors);
 
+  // The bias study: only against a reference is there a bias to see.
+  Table bias = depth_bias_table();
+  if (reference)
+    for (int depth : o.bias_depths)
+      for (int spp : o.spp) {
+        const auto [a, b] = render_pair(scene, camera, spp, depth, o);
+        bias.add_row({depth, spp, two_render_rms_error(a.image, b.image),
+                      rms_error(a.image, reference->image), a.rays + b.rays});
+        total.add(a);
+        total.add(b);
+      }
+
   // Below the raw details, their 8x8 means: at low spp the light sits in a few bright pixels.
   write_png(o.common.dir / "noise_strip.png",
             centre_detail_strip(images, labels, "at growing spp", 8));
   write_csv(o.common.dir / "rmse_vs_spp.csv", errors);
+  if (reference) write_csv(o.common.dir / "depth_bias.csv", bias);
   const Reference* r = reference ? &*reference : nullptr;
-  write_rmse_plot(o, errors, slope, r != nullptr);
-  write_summary(k_chapter, app, o, errors, slope, total, images.back(), r);
+  write_rmse_plot(o, errors, slope, r != nullptr ? &bias : nullptr);
+  write_summary(k_chapter, app, o, errors, slope, total, images.back(), r, bias);
   if (!o.common.quiet) print_table(k_chapter, o, errors, slope, total, images.back(), r);
 }
 
@@ -212,6 +243,10 @@ int main(int argc, char** argv) {
          "lecture's loop as written); the images are the same bit for bit")
       ->check(CLI::IsMember({"lanes", "loop"}))
       ->default_str("lanes");
+  add_list_option(app, "--bias-depths", o.bias_depths,
+                  "Depths rendered again at every --spp against the reference, for "
+                  "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
+                  "off at their bias (a list: 0,1,2; only with a reference)", 0, 1000);
   app.add_option("--reference-dir", o.reference_dir,
                  "Folder of the cached references (default: the reference folder beside --out)");
   return app.run(argc, argv, [&] { run(app, o); });

@@ -42,37 +42,67 @@ inline double depth_cut_bias_rms(const Table& errors, const Reference* reference
                                      reference_noise * reference_noise));
 }
 
-inline void write_rmse_plot(const auto& o, const Table& errors, double slope,
-                            bool has_reference) {
+// rmse_vs_spp.png: the run's two errors at --depth in black and, with a reference, those of
+// each --bias-depths depth in a colour of its own (depth_bias.csv): the two-render error
+// (solid, open points) falls as spp^-1/2 at every depth; the error against the reference
+// (dashed, filled points) follows it until the noise is below the cut's bias, then levels off.
+inline void write_rmse_plot(const auto& o, const Table& errors, double slope, const Table* bias) {
   // The reference line of slope -1/2 passes through the first point.
   std::string settings =
-      fmt::format("rmse1 = {:.9g}\nspp1 = {}\nset key top right\n", errors.at(0, "rmse").number(),
-                  o.spp.front()) +
+      fmt::format("rmse1 = {:.9g}\nspp1 = {}\nset key bottom left font ',10' spacing 1.1\n",
+                  errors.at(0, "rmse").number(), o.spp.front()) +
       (std::isfinite(slope)
-           ? fmt::format("set label 1 'fitted slope {:.3f} (theory -0.5)' at graph 0.05, graph 0.1\n",
-                         slope)
+           ? fmt::format("set label 1 'depth {}: fitted slope {:.3f} (theory -0.5)' at graph "
+                         "0.98, graph 0.95 right\n", o.depth, slope)
            : std::string());
   if (o.spp.size() > 1)  // the x axis ends where the data end
     settings += fmt::format("set xrange [{}:{}]\n", o.spp.front(), o.spp.back());
-  Plot plot{"rmse_vs_spp", "RMS error against samples per pixel",
+  Plot plot{"rmse_vs_spp",
+            bias ? "RMS error against spp: two renders see only noise; the reference also sees "
+                   "the depth cut's bias"
+                 : "RMS error against samples per pixel",
             "samples per pixel", "RMS error", true, true, settings,
-            "plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 7 lw 2 title "
-            "'two-render estimate (noise only)', rmse1 * (x / spp1)**-0.5 with lines dt 2 "
-            "lc 'black' title 'slope -1/2'"};
+            fmt::format("plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 6 "
+                        "ps 1.3 lw 2 lc 'black' title 'depth {}: two renders (noise)', rmse1 * "
+                        "(x / spp1)**-0.5 with lines dt 3 lc 'gray40' title 'slope -1/2'",
+                        o.depth)};
+  plot.width = 1000;
+  plot.height = 650;
   plot.x_values = errors.numbers("spp");  // one spp, or zero error (no light): still a plot
   plot.y_values = errors.numbers("rmse");
-  if (has_reference) {
-    plot.plot += ", 'rmse_vs_spp.csv' using \"spp\":\"rmse_vs_reference\" with linespoints "
-                     "pt 5 lw 2 title 'against the reference (noise and bias)'";
+  if (bias) {
+    plot.plot += fmt::format(", 'rmse_vs_spp.csv' using \"spp\":\"rmse_vs_reference\" with "
+                             "linespoints pt 7 ps 1.1 lw 2 dt 2 lc 'black' title 'depth {}: "
+                             "against the reference (noise and bias)'", o.depth);
+    // One colour per study depth; its rows of depth_bias.csv picked by the depth column.
+    const auto of_depth = [](int depth, const char* column) {
+      return fmt::format("'depth_bias.csv' using \"spp\":(column(\"depth\") == {} ? "
+                         "column(\"{}\") : NaN)", depth, column);
+    };
+    static constexpr const char* k_colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd",
+                                                "#ff7f0e", "#8c564b"};
+    for (std::size_t i = 0; i < o.bias_depths.size(); ++i) {
+      const int depth = o.bias_depths[i];
+      const char* colour = k_colours[i % std::size(k_colours)];
+      plot.plot += fmt::format(
+          ", {} with linespoints pt 6 ps 1.3 lw 2 lc rgb '{}' title 'depth {}: two renders', "
+          "{} with linespoints pt 7 ps 1.1 lw 2 dt 2 lc rgb '{}' title 'depth {}: against the "
+          "reference'", of_depth(depth, "rmse"), colour, depth,
+          of_depth(depth, "rmse_vs_reference"), colour, depth);
+    }
     const std::vector<double> against = errors.numbers("rmse_vs_reference");
     plot.y_values.insert(plot.y_values.end(), against.begin(), against.end());
+    for (const char* column : {"rmse", "rmse_vs_reference"}) {
+      const std::vector<double> values = bias->numbers(column);
+      plot.y_values.insert(plot.y_values.end(), values.begin(), values.end());
+    }
   }
   write_plot(o.common.dir, plot);
 }
 
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& errors, double slope, const RenderTotals& total,
-                          const Image& last, const Reference* reference) {
+                          const Image& last, const Reference* reference, const Table& bias) {
   Json summary = start_summary(chapter, o.common);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
@@ -82,8 +112,10 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["rmse_slope_theory"] = -0.5;
   summary["mean_radiance"] = mean_radiance(last);
   summary["rmse_vs_spp"] = errors.json();
-  const double bias = depth_cut_bias_rms(errors, reference);
-  summary["depth_cut_bias_rms"] = std::isfinite(bias) ? Json(bias) : Json(nullptr);
+  const double bias_rms = depth_cut_bias_rms(errors, reference);
+  summary["depth_cut_bias_rms"] = std::isfinite(bias_rms) ? Json(bias_rms) : Json(nullptr);
+  summary["bias_depths"] = reference ? Json(o.bias_depths) : Json(nullptr);
+  summary["depth_bias"] = bias.json();  // empty without a reference
   summary["mean_radiance_reference"] =
       reference ? Json(mean_radiance(reference->image)) : Json(nullptr);
   summary["reference"] = reference ? Json(reference->info) : Json(nullptr);
@@ -111,6 +143,7 @@ inline void print_table(const Chapter& chapter, const auto& o, const Table& erro
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
+             "depth_bias.csv (with a reference), "
              "summary.json, timings.json}}\n", o.common.out.string());
 }
 

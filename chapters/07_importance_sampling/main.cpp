@@ -128,7 +128,8 @@ void run(const CLI::App& app, const Options& o) {
                equal.reference.image, o.spp);
   write_csv(o.common.dir / "variance_vs_m.csv", study.variances);
   write_csv(o.common.dir / "equal_time.csv", equal.table);
-  write_variance_plot(o.common.dir, o.scene.scene, o.spp, study.variances);
+  write_variance_plot(o.common.dir, o.scene.scene, o.spp, study.variances,
+                      o.scene.params.furnace_albedo, o.scene.params.furnace_emission, o.depth);
   write_summary(k_chapter, app, o, study.variances, equal.table, total);
   if (!o.common.quiet) print_report(k_chapter, o, study.variances, equal.table, total);
 }

@@ -3,49 +3,137 @@
 // scene, over variance_vs_m.csv (columns by name); the images and the noise strip.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
 #include "io/plot.hpp"
 #include "io/table.hpp"
+#include "render/path_tracer.hpp"
 #include "render/image.hpp"
 #include "render/render.hpp"
 #include "sampling/cosine_power.hpp"
 
 namespace mcrt {
 
-// variance_vs_m: one x position per pdf (the row number, labelled by the pdf column), the
-// measured variances as points and the furnace's closed form as open squares. A log axis has
-// no 0: the cosine pdf's furnace variance (0 to rounding) is drawn at the bottom edge, labelled.
+// variance_curve.csv: the furnace's closed-form variance of one sample for p_m ~ cos^m at real
+// m in [0, 3), denser towards 3 where it diverges: b = E[w^2] = 4a^2 / ((m + 1)(3 - m)) (the
+// cos^m row of common/render/importance_path_tracer.hpp, which holds for any real m > -1).
+inline Table variance_curve(double albedo, double emission, int depth) {
+  Table curve({{"m", Column::real, 9}, {"furnace_variance_theory", Column::real, 9}});
+  constexpr int k_points = 400;
+  for (int i = 0; i < k_points; ++i) {
+    // Half the points evenly over [0, 2.5], half over 3 - m from 0.5 down to 1e-3 geometrically.
+    const double t = static_cast<double>(i) / (k_points / 2);
+    const double m = i < k_points / 2 ? 2.5 * t : 3.0 - 0.5 * std::pow(1e-3 / 0.5, t - 1.0);
+    const double b = 4.0 * albedo * albedo / ((m + 1.0) * (3.0 - m));
+    curve.add_row({m, furnace_radiance_variance_from_moments(albedo, b, emission, depth)});
+  }
+  return curve;
+}
+
+// variance_vs_m: the variance of one sample against m on a continuous axis, p_m ~ cos^m. The
+// furnace's closed form is a curve with its asymptote at m = 3; the measured variances of both
+// scenes are points at their m. At m >= 3 the variance is infinite in both (the weight
+// cos / p_m ~ cos^(1 - m) at the horizon): no point is drawn there, only an arrow up. The
+// cosine pdf's furnace variance is 0 (exact), which a log axis cannot show: its point is left
+// out and an arrow down marks it. The grazing pdf is no cos^m: its closed form is a level
+// line. An inset draws each p_m(theta) against cos(theta)/pi, the shape of the integrand.
 inline void write_variance_plot(const std::filesystem::path& out, const std::string& scene,
-                                int spp, const Table& variances) {
-  const std::string settings =
-      "set key top left\nset offsets 0.3, 0.3, 0, 0\nset xtics rotate by -30\n"
-      "floor = 1e-6\nset yrange [floor:*]\n"
-      "set label 1 'furnace, cosine: 0 (exact)' at first 1.1, first floor * 2.5 left\n"
-      "set label 2 'no square: infinite variance (m >= 3)' at graph 0.98, graph 0.05 right\n";
-  const auto clamp = [](const char* column) {
-    return fmt::format("(column(\"{0}\") > floor ? column(\"{0}\") : floor)", column);
+                                int spp, const Table& variances, double albedo,
+                                double emission, int depth) {
+  write_csv(out / "variance_curve.csv", variance_curve(albedo, emission, depth));
+  std::vector<int> powers;  // of the cos^m rows
+  double highest = 0.0, lowest = HUGE_VAL, grazing = std::nan("");
+  for (std::size_t i = 0; i < variances.size(); ++i) {
+    if (variances.at(i, "pdf").string() == "grazing") {
+      grazing = variances.at(i, "furnace_variance_theory").number();
+      continue;
+    }
+    const int m = static_cast<int>(variances.at(i, "m").number());
+    powers.push_back(m);
+    if (m >= 3) continue;
+    for (const char* column : {"furnace_variance", "scene_variance", "furnace_variance_theory"}) {
+      const double v = variances.at(i, column).number();
+      if (std::isfinite(v) && v > 0.0) highest = std::max(highest, v), lowest = std::min(lowest, v);
+    }
+  }
+  if (std::isfinite(grazing) && grazing > 0.0)
+    highest = std::max(highest, grazing), lowest = std::min(lowest, grazing);
+  const bool lit = highest > 0.0;  // without light every variance is 0, none infinite
+  if (!lit) highest = 1.0, lowest = 1.0;
+  const double y_low = lowest / 10.0, y_high = highest * 30.0;
+  const double m_high = std::max(4.0, static_cast<double>(powers.back())) + 1.0;
+
+  std::string main = fmt::format(
+      "set origin 0, 0\nset size 1, 1\n"
+      "set title 'Variance of one sample against m, p_m ~ cos^m ({} spp x 2 renders)' "
+      "noenhanced\n"
+      "set xlabel 'm' noenhanced offset 0, 0.3\nset ylabel 'variance of one sample' noenhanced\n"
+      "set bmargin 7\n"  // room for the key below the m label
+      "set xrange [0:{:.9g}]\nset yrange [{:.9g}:{:.9g}]\nset xtics 1\nset ytics auto\n"
+      "set logscale y\nset format y '10^{{%T}}'\nset grid\nset key outside below center horizontal maxrows 2 font ',10'\n"
+      "{}",
+      spp, m_high, y_low, y_high,
+      lit ? "set object 1 rect from first 3, graph 0 to graph 1, graph 1 fc rgb '#e8e8e8' "
+            "fs solid noborder behind\n"
+            "set arrow 1 from first 3, graph 0 to first 3, graph 1 nohead dt 2 lw 2 lc 'black'\n"
+            "set label 1 'm >= 3: infinite variance' at first 3.15, graph 0.06 left noenhanced\n"
+          : "");
+  int tag = 2;
+  for (int m : powers) {
+    if (m == 1)  // the cosine pdf: 0 in the furnace, below every log axis
+      main += fmt::format(
+          "set arrow {0} from first 1, graph 0.16 to first 1, graph 0 head filled lw 2 "
+          "lc rgb '#1f77b4'\nset label {0} 'furnace: 0 (exact)' at first 1.08, graph 0.12 left "
+          "noenhanced tc rgb '#1f77b4'\n", tag++);
+    if (m >= 3 && lit)
+      main += fmt::format(
+          "set arrow {0} from first {1}, graph 0.72 to first {1}, graph 0.97 head filled lw 2 "
+          "lc 'black'\nset label {0} 'cos^{1}: infinite variance' at first {1}, graph 0.68 center "
+          "noenhanced\n", tag++, m);
+  }
+  // Measured points only where the variance is finite (m < 3), and not 0 on the log axis.
+  const auto measured = [](const char* column) {
+    return fmt::format("'variance_vs_m.csv' using (column(\"m\") < 3 ? column(\"m\") : NaN):"
+                       "(column(\"{0}\") > 0 ? column(\"{0}\") : NaN)", column);
   };
-  Plot plot{"variance_vs_m",
-            fmt::format("Variance of one sample, per pixel, for each pdf ({} spp x 2 renders)",
-                        spp),
-            "pdf of the bounce direction", "variance of one sample", false, true, settings,
-            fmt::format("plot 'variance_vs_m.csv' using 0:{}:xticlabels(stringcolumn(\"pdf\")) "
-                        "with linespoints pt 7 ps 1.5 lw 2 title 'furnace, measured', "
-                        "'' using 0:\"furnace_variance_theory\" with points pt 4 ps 2.5 lw 2 "
-                        "lc 'black' title 'furnace, closed form', "
-                        "'' using 0:{} with linespoints pt 5 ps 1.5 lw 2 title '{}, measured'",
-                        clamp("furnace_variance"), clamp("scene_variance"), scene)};
-  // Without light every variance is 0: all at the floor, an axis of one value.
-  for (const char* column : {"furnace_variance", "furnace_variance_theory", "scene_variance"})
-    for (double y : variances.numbers(column)) plot.y_values.push_back(std::max(y, 1e-6));
+  main += fmt::format(
+      "plot 'variance_curve.csv' using \"m\":\"furnace_variance_theory\" with lines lw 2 "
+      "lc rgb '#1f77b4' title 'furnace, closed form', {} with points pt 7 ps 1.8 "
+      "lc rgb '#1f77b4' title 'furnace, measured', {} with points pt 5 ps 1.8 lc rgb '#d62728' "
+      "title '{}, measured'{}\n",
+      measured("furnace_variance"), measured("scene_variance"), scene,
+      std::isfinite(grazing) && grazing > 0.0
+          ? fmt::format(", {:.9g} with lines dt 3 lw 2 lc rgb '#2ca02c' title 'grazing pdf (not "
+                        "a cos^m): furnace closed form'", grazing)
+          : std::string());
+  // The inset: over theta in [0, pi/2], p_m for every m measured, and cos / pi dashed.
+  const std::string inset = fmt::format(
+      "unset object 1\nunset arrow\nunset label\nunset logscale y\nset format y '%g'\n"
+      "set origin 0.5, 0.27\nset size 0.47, 0.42\n"
+      "set title 'the pdfs p_m(theta) against cos(theta) / pi' noenhanced\n"
+      "set xlabel 'theta (degrees)' noenhanced offset 0, 0\nset ylabel ''\nset bmargin -1\n"
+      "set xrange [0:90]\nset yrange [0:*]\nset xtics 30\nset ytics 0.5\n"
+      "set key inside top right vertical maxrows auto font ',9'\n"
+      "ms = '{}'\n"
+      "plot for [m in ms] (m + 1) / (2 * pi) * cos(x * pi / 180)**m with lines lw 2 "
+      "title 'p_{{'.m.'}}', cos(x * pi / 180) / pi with lines dt 2 lw 3 lc 'black' "
+      "title 'cos / pi'",
+      fmt::join(powers, " "));
+  Plot plot{"variance_vs_m", "Variance of one sample against m", "m", "variance of one sample",
+            false, true, "", main + inset};
+  plot.width = 1000;
+  plot.height = 650;
+  plot.multiplot = true;
+  plot.y_values = {y_low, y_high};
   write_plot(out, plot);
 }
 

@@ -199,7 +199,8 @@ nlohmann::ordered_json option_values(const CLI::App& app, bool run_flags) {
   nlohmann::ordered_json flags = nlohmann::ordered_json::object();
   for (const CLI::Option* option : app.get_options()) {
     const std::vector<std::string>& names = option->get_lnames();
-    if (names.empty() || names.front() == "help" || is_run_flag(names.front()) != run_flags)
+    if (names.empty() || names.front() == "help" || names.front() == "print-flags" ||
+        is_run_flag(names.front()) != run_flags)
       continue;
     std::string value;
     if (option->count() > 0) {
@@ -356,11 +357,18 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
 ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)
     : CLI::App(chapter.description, chapter.name), common_(common) {
   add_common_options(*this, common, chapter);
+  add_flag("--print-flags", print_flags_,
+           "Print every flag a run records in summary.json (defaults included) as JSON, and "
+           "exit without running");
 }
 
 int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
   watch_interrupts(get_name());
   return run_chapter(*this, argc, argv, [&] {
+    if (print_flags_) {
+      std::cout << flags_json(*this).dump() << '\n';
+      return 0;
+    }
     std::optional<RunFolder> folder;
     const auto forget = [&] {  // unregistered and removed with no interruption in between
       without_interruption([&] {

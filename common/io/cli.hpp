@@ -118,10 +118,14 @@ class ChapterApp : public CLI::App {
   /// flags are parsed, --out is checked and a staging folder made (io/run_folder.hpp):
   /// `body` writes into common.dir, and only when it returns is that folder swapped in as
   /// --out. Messages about files name them under --out, never under the staging folder.
+  /// With --print-flags, `body` is not run: the flags summary.json would record (flags_json)
+  /// are printed as one line of JSON instead, and nothing is written (scripts/make-figures
+  /// records them, and the figure-drift test compares them with what the chapter says now).
   int run(int argc, char** argv, const std::function<void()>& body);
 
  private:
   CommonOptions& common_;
+  bool print_flags_ = false;
 };
 
 /// --scene, --albedo, --emission, --width and --height: what every renderer takes.

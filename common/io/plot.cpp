@@ -124,13 +124,15 @@ std::string script_text(const Plot& p) {
   s << x.scale << y.scale;
   s << p.settings << (p.settings.empty() || p.settings.back() == '\n' ? "" : "\n");
   s << x.range << y.range;
+  const std::string draw =
+      p.multiplot ? "set multiplot\n" + p.plot + "\nunset multiplot\n" : "replot\n";
   s << "set terminal pngcairo size " << p.width << "," << p.height
     << " enhanced font 'DejaVu Sans,11'\n"
     << "set output " << quote(p.name + ".png") << "\n"
-    << p.plot << "\n"
+    << (p.multiplot ? draw : p.plot + "\n")
     << "set terminal svg size " << p.width << "," << p.height << " enhanced dynamic\n"
     << "set output " << quote(p.name + ".svg") << "\n"
-    << "replot\n"
+    << draw
     << "set output\n";
   return s.str();
 }

@@ -23,6 +23,10 @@ struct Plot {
   std::string plot;
   int width = 900;
   int height = 600;
+  /// The plot command is several plots on one page (a main plot and an inset): it runs inside
+  /// `set multiplot`, once per image instead of `replot` (which redraws only the last plot),
+  /// so everything after its first plot must set back what it changes.
+  bool multiplot = false;
   /// The values the plot draws on each axis, where a run can make them degenerate (all zero,
   /// one point): a log axis with no positive value is drawn linear, and an axis whose values
   /// are all equal gets a range around them, so gnuplot has nothing to warn about. Empty:

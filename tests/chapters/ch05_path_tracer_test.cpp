@@ -51,8 +51,10 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   EXPECT_EQ(summary["non_finite_samples"], 0);
   EXPECT_EQ(summary["scene"], "cornell-spheres");
   EXPECT_EQ(summary["depth"], 4);
+  // The rays of every render: the main pairs and the bias study's (depths 0, 1, 2).
   double rays = 0.0;
   for (double r : csv.numbers("rays")) rays += r;
+  for (double r : CsvFile(dir / "depth_bias.csv").numbers("rays")) rays += r;
   EXPECT_EQ(summary["rays"].get<double>(), rays);
   EXPECT_EQ(summary["rmse_vs_spp"].size(), 3u);
   EXPECT_GT(read_json(dir / "timings.json")["rays_per_second"].get<double>(), 0.0);
@@ -99,6 +101,19 @@ TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
             1.3 * summary["mean_radiance"].get<double>());
   EXPECT_GT(summary["depth_cut_bias_rms"].get<double>(), csv.number(1, "rmse"));
   EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(reference_dir) / "cornell_ls1_32x24.pfm"));
+  // The bias study (--bias-depths 0,1,2) renders the same spp at each depth: at depth 0 its
+  // error against the reference levels off at the bias while its two-render error falls
+  // (the main run's depth 0 above, so the same 2x margin), and each depth misses less light
+  // than the one before (its mean is higher, so its bias is lower; the margin of 1.3x at
+  // depth 0 above leaves the gap to depth 2 far above a tiny image's noise).
+  const CsvFile bias(dir / "depth_bias.csv");
+  ASSERT_EQ(bias.size(), 6u);  // 3 depths x 2 spp
+  EXPECT_EQ(bias.number(0, "depth"), 0);
+  EXPECT_EQ(bias.number(5, "depth"), 2);
+  EXPECT_EQ(bias.number(1, "rmse_vs_reference"), csv.number(1, "rmse_vs_reference"));
+  EXPECT_GT(bias.number(1, "rmse_vs_reference"), 2.0 * bias.number(1, "rmse"));
+  EXPECT_LT(bias.number(5, "rmse_vs_reference"), bias.number(1, "rmse_vs_reference"));
+  EXPECT_EQ(summary["bias_depths"], (std::vector<int>{0, 1, 2}));
 
   // Without a reference the column stays, empty, and so do the summary's fields, as null.
   const auto none = fresh_dir("ch05_no_reference");
@@ -117,6 +132,8 @@ TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   EXPECT_EQ(read_text(one / "spp_0002.png"), read_text(two / "spp_0002.png"));
   EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   EXPECT_EQ(read_text(one / "rmse_vs_spp.svg"), read_text(two / "rmse_vs_spp.svg"));
+  // The bias study's renders at depths 0, 1, 2 (the run has a reference): the same too.
+  EXPECT_EQ(read_text(one / "depth_bias.csv"), read_text(two / "depth_bias.csv"));
 }
 
 // The lecture's loop and the four-lane engine write the same images, byte for byte, and the
@@ -139,8 +156,22 @@ TEST(Ch05Test, HelpNamesEveryFlag) {
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--scene", "--width", "--height", "--spp", "--depth", "--seed",
                            "--threads", "--out", "--quiet", "--reference-spp", "--reference-dir",
-                           "--engine"})
+                           "--engine", "--bias-depths", "--print-flags"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+}
+
+// --print-flags (every chapter's, from io/cli): the flags a run with these flags records in
+// summary.json, printed without running; nothing is written. scripts/make-figures records them
+// and the figure-drift test compares them with the program's.
+TEST(Ch05Test, PrintFlagsPrintsWhatSummaryRecordsAndRunsNothing) {
+  const auto dir = fresh_dir("ch05_print_flags");
+  const std::string flags = "--width 8 --height 6 --spp 1,2 --depth 3 --reference-spp 0 --quiet";
+  const ProgramRun printed =
+      run_program(k_program, flags + " --print-flags --out " + (dir / "none").string());
+  ASSERT_EQ(printed.exit_code, 0) << printed.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "none"));
+  ASSERT_EQ(run_program(k_program, flags + " --out " + (dir / "run").string()).exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(printed.out), read_json(dir / "run" / "summary.json")["flags"]);
 }
 
 class Ch05BadInputTest : public ::testing::TestWithParam<BadInput> {};

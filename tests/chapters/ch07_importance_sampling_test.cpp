@@ -42,6 +42,25 @@ TEST(Ch07Test, TinyRunWritesImagesTablesAndSummary) {
   EXPECT_EQ(variances.number(1, "furnace_variance_theory"), 0.0);
   EXPECT_EQ(variances.text(3, "furnace_variance_theory"), "");  // m = 4: infinite
 
+  // variance_curve.csv, the closed form over a continuous m: at m = 0 the uniform row's
+  // closed form (both printed to 9 digits), 0 at m = 1 (the cosine pdf), and it grows
+  // without bound towards the asymptote at m = 3 (b ~ 1/(3 - m), raised to the depth 4).
+  const CsvFile curve(dir / "variance_curve.csv");
+  ASSERT_GT(curve.size(), 100u);
+  EXPECT_EQ(curve.number(0, "m"), 0.0);
+  EXPECT_EQ(curve.number(0, "furnace_variance_theory"),
+            variances.number(0, "furnace_variance_theory"));
+  double at_one = 1.0, last_m = 0.0;
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    EXPECT_GT(curve.number(i, "m"), i == 0 ? -1.0 : last_m);  // increasing
+    last_m = curve.number(i, "m");
+    if (std::abs(last_m - 1.0) < 1e-12) at_one = curve.number(i, "furnace_variance_theory");
+  }
+  EXPECT_LT(at_one, 1e-12);
+  EXPECT_LT(last_m, 3.0);
+  EXPECT_GT(curve.number(curve.size() - 1, "furnace_variance_theory"),
+            1e3 * variances.number(0, "furnace_variance_theory"));
+
   const CsvFile equal_time(dir / "equal_time.csv");
   ASSERT_EQ(equal_time.size(), 4u);
   EXPECT_EQ(equal_time.text(0, "image"), "uniform");
@@ -99,7 +118,8 @@ TEST(Ch07Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
   // summary.json holds no timing, thread count or --out: the same file whatever --threads.
   EXPECT_EQ(read_text(one / "summary.json"), read_text(two / "summary.json"));
   for (const char* file : {"uniform.pfm", "cosine.pfm", "cosine_equal_time.pfm", "reference.pfm",
-                           "uniform.png", "noise_strip.png"})
+                           "uniform.png", "noise_strip.png", "variance_curve.csv",
+                           "variance_vs_m.gp", "variance_vs_m.png", "variance_vs_m.svg"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   EXPECT_EQ(CsvFile(one / "variance_vs_m.csv").without({"scene_seconds"}),
             CsvFile(two / "variance_vs_m.csv").without({"scene_seconds"}));
