@@ -2,6 +2,7 @@
 
 #include "core/cpu_features.hpp"
 #include "geometry/hit.hpp"
+#include "render/material.hpp"
 #include "sampling/sampling.hpp"
 
 #if defined(__x86_64__)
@@ -14,6 +15,26 @@ namespace mcrt {
 namespace {
 
 Vec3 lane_of(const double (&v)[3][k_bounce_lanes], int l) { return {v[0][l], v[1][l], v[2][l]}; }
+
+// Lane l's material as shade_lanes left it: its albedo, and its lobe where the lane is lobed.
+Material material_of(const BounceLanes& lanes, int l) {
+  Material m;
+  m.albedo = lane_of(lanes.albedo, l);
+  if ((lanes.lobed >> l) & 1u) {
+    m.specular = lanes.specular[l];
+    m.exponent = lanes.exponent[l];
+  }
+  return m;
+}
+
+// beta f_r(wi, wo, n) cos(theta_i) / pdf for lane l, wo from the ray that reached its hit: the
+// one-path loop's line, in its order.
+Color bounced_weight(const BounceLanes& lanes, const RayLanes& rays, int l, const Vec3& wi,
+                     double cos_theta_i) {
+  const Vec3 wo = -rays.get(l).direction;
+  const Color brdf = material_of(lanes, l).f_r(wi, wo, lane_of(lanes.hit.normal, l));
+  return lane_of(lanes.beta, l) * (brdf * cos_theta_i / uniform_hemisphere_pdf());
+}
 
 }  // namespace
 
@@ -31,8 +52,7 @@ void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays) {
     const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
     const Vec3 wi = Frame(normal).to_world(local);
     const double cos_theta_i = local.z;
-    const Color brdf = lane_of(lanes.albedo, l) * k_inv_pi;  // Material::brdf()
-    const Color beta = lane_of(lanes.beta, l) * (brdf * cos_theta_i / uniform_hemisphere_pdf());
+    const Color beta = bounced_weight(lanes, rays, l, wi, cos_theta_i);
     for (int axis = 0; axis < 3; ++axis) lanes.beta[axis][l] = beta[axis];
     Hit hit;
     hit.point = lane_of(lanes.hit.point, l);
@@ -136,12 +156,34 @@ using D4 = __m256d;
   // The lanes that bounce: all bits set (blendv reads the sign bit).
   const D4 mask = _mm256_castsi256_pd(_mm256_load_si256(reinterpret_cast<const __m256i*>(lanes.bouncing)));
 
+  // Lobed lanes: their weights one lane at a time, from the same directions, before the new
+  // rays replace the ones that reached the hits (wo).
+  // (Only lanes that bounce: shade_lanes marks no others, but a lane left out stays as it is.)
+  const unsigned lobed =
+      lanes.lobed == 0 ? 0u : lanes.lobed & static_cast<unsigned>(_mm256_movemask_pd(mask));
+  alignas(32) double lobed_beta[3][k_bounce_lanes];
+  if (lobed != 0) {
+    alignas(32) double w[3][k_bounce_lanes], cos_i[k_bounce_lanes];
+    _mm256_store_pd(w[0], wx);
+    _mm256_store_pd(w[1], wy);
+    _mm256_store_pd(w[2], wz);
+    _mm256_store_pd(cos_i, cos_theta);
+    for (int l = 0; l < k_bounce_lanes; ++l) {
+      if (((lobed >> l) & 1u) == 0) continue;
+      const Color beta = bounced_weight(lanes, rays, l, lane_of(w, l), cos_i[l]);
+      for (int axis = 0; axis < 3; ++axis) lobed_beta[axis][l] = beta[axis];
+    }
+  }
+
   // beta *= (rho / pi) cos(theta_i) / (1 / 2 pi), in Material::brdf()'s and the loop's order.
   for (int axis = 0; axis < 3; ++axis) {
     const D4 factor = div(mul(mul(load(lanes.albedo[axis]), broadcast(k_inv_pi)), cos_theta),
                           broadcast(k_inv_two_pi));
     store_where(mask, lanes.beta[axis], mul(load(lanes.beta[axis]), factor));
   }
+  for (int l = 0; l < k_bounce_lanes && lobed != 0; ++l)
+    if ((lobed >> l) & 1u)
+      for (int axis = 0; axis < 3; ++axis) lanes.beta[axis][l] = lobed_beta[axis][l];
 
   // spawn_ray: the origin pushed 1e-7 (1 + max |p_i|) along the normal, to the side of wi.
   const D4 px = load(lanes.hit.point[0]), py = load(lanes.hit.point[1]), pz = load(lanes.hit.point[2]);

@@ -28,6 +28,7 @@ unsigned end_lanes(PathLanes& paths, BounceLanes& bounce) {
 // The lines of estimate_path_radiance from the hit to the bounce's sample, lane by lane.
 void shade_lanes_portable(std::span<const Material> materials, int max_depth, PathLanes& paths,
                           BounceLanes& bounce) {
+  bounce.lobed = 0;
   for (int l = 0; l < PathLanes::k_lanes; ++l) {
     const Vec2 u = paths.uniform2(l);
     bounce.bouncing[l] = 0;
@@ -40,6 +41,11 @@ void shade_lanes_portable(std::span<const Material> materials, int max_depth, Pa
     bounce.u0[l] = u.x;
     bounce.u1[l] = u.y;
     for (int axis = 0; axis < 3; ++axis) bounce.albedo[axis][l] = material.albedo[axis];
+    if (material.has_lobe()) {
+      bounce.lobed |= 1u << l;
+      bounce.specular[l] = material.specular;
+      bounce.exponent[l] = material.exponent;
+    }
   }
 }
 
@@ -117,6 +123,15 @@ namespace {
     _mm256_store_pd(bounce.albedo[axis], _mm256_setr_pd(of[0]->albedo[axis], of[1]->albedo[axis],
                                                         of[2]->albedo[axis], of[3]->albedo[axis]));
   }
+  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time.
+  unsigned lobed = 0;
+  for (int l = 0; l < PathLanes::k_lanes; ++l)
+    if (of[l]->has_lobe()) {
+      lobed |= 1u << l;
+      bounce.specular[l] = of[l]->specular;
+      bounce.exponent[l] = of[l]->exponent;
+    }
+  bounce.lobed = lobed == 0 ? 0u : lobed & static_cast<unsigned>(_mm256_movemask_pd(as_double(bouncing)));
   _mm256_store_pd(bounce.u0, avx2::pcg32_uniform(avx2::pcg32_output(s0)));
   _mm256_store_pd(bounce.u1, avx2::pcg32_uniform(avx2::pcg32_output(s1)));
 }
