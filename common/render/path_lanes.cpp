@@ -123,15 +123,20 @@ namespace {
     _mm256_store_pd(bounce.albedo[axis], _mm256_setr_pd(of[0]->albedo[axis], of[1]->albedo[axis],
                                                         of[2]->albedo[axis], of[3]->albedo[axis]));
   }
-  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time.
-  unsigned lobed = 0;
-  for (int l = 0; l < PathLanes::k_lanes; ++l)
-    if (of[l]->has_lobe()) {
-      lobed |= 1u << l;
+  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time. Without a
+  // lobe in sight (every lane of a diffuse scene) this is four compares and a store.
+  const unsigned lobed = static_cast<unsigned>(of[0]->has_lobe()) |
+                         static_cast<unsigned>(of[1]->has_lobe()) << 1 |
+                         static_cast<unsigned>(of[2]->has_lobe()) << 2 |
+                         static_cast<unsigned>(of[3]->has_lobe()) << 3;
+  bounce.lobed = 0;
+  if (lobed != 0) {
+    for (int l = 0; l < PathLanes::k_lanes; ++l) {
       bounce.specular[l] = of[l]->specular;
       bounce.exponent[l] = of[l]->exponent;
     }
-  bounce.lobed = lobed == 0 ? 0u : lobed & static_cast<unsigned>(_mm256_movemask_pd(as_double(bouncing)));
+    bounce.lobed = lobed & static_cast<unsigned>(_mm256_movemask_pd(as_double(bouncing)));
+  }
   _mm256_store_pd(bounce.u0, avx2::pcg32_uniform(avx2::pcg32_output(s0)));
   _mm256_store_pd(bounce.u1, avx2::pcg32_uniform(avx2::pcg32_output(s1)));
 }
