@@ -29,6 +29,9 @@ struct BounceLanes {
   alignas(32) double beta[3][k_bounce_lanes]{{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};  ///< the path weight (beta_0 = 1), updated in place
   alignas(32) std::int64_t bouncing[k_bounce_lanes]{};  ///< all bits set where the path goes on
   unsigned lobed = 0;  ///< bit l: lane l bounces off a material with a glossy lobe
+  /// False only where no material has a lobe (the engine knows it from the scene): then
+  /// shade_lanes_avx2 leaves `lobed` at 0 without looking at the lanes' materials.
+  bool lobes_possible = true;
   double specular[k_bounce_lanes]{}, exponent[k_bounce_lanes]{};  ///< its rho_s and m, where lobed
 };
 

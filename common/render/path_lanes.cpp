@@ -123,14 +123,13 @@ namespace {
     _mm256_store_pd(bounce.albedo[axis], _mm256_setr_pd(of[0]->albedo[axis], of[1]->albedo[axis],
                                                         of[2]->albedo[axis], of[3]->albedo[axis]));
   }
-  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time. Without a
-  // lobe in sight (every lane of a diffuse scene) this is four compares and a store.
-  const unsigned lobed = static_cast<unsigned>(of[0]->has_lobe()) |
-                         static_cast<unsigned>(of[1]->has_lobe()) << 1 |
-                         static_cast<unsigned>(of[2]->has_lobe()) << 2 |
-                         static_cast<unsigned>(of[3]->has_lobe()) << 3;
-  bounce.lobed = 0;
-  if (lobed != 0) {
+  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time. In a
+  // diffuse scene (lobes_possible false) `lobed` stays 0 and nothing is looked at.
+  if (bounce.lobes_possible) {
+    const unsigned lobed = static_cast<unsigned>(of[0]->has_lobe()) |
+                           static_cast<unsigned>(of[1]->has_lobe()) << 1 |
+                           static_cast<unsigned>(of[2]->has_lobe()) << 2 |
+                           static_cast<unsigned>(of[3]->has_lobe()) << 3;
     for (int l = 0; l < PathLanes::k_lanes; ++l) {
       bounce.specular[l] = of[l]->specular;
       bounce.exponent[l] = of[l]->exponent;
