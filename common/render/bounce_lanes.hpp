@@ -4,9 +4,9 @@
 /// f_r cos(theta_i) / pdf, and the ray that leaves the hit in that direction.
 ///
 /// A diffuse lane's f_r is rho / pi, computed on the four lanes together. A lane whose material
-/// has a glossy lobe (the bit `lobed`) needs f_r(wi, wo, n) of its own directions: its weight is
-/// computed by Material::f_r, one lane at a time, from the same wi, wo and n; so a scene without
-/// lobes pays one test of `lobed` per bounce.
+/// has a glossy lobe (the bit `lobed`) needs f_r(wi, wo, n) of its own directions: it is left
+/// out of the four-lane weight and ray, and bounced last by the one-lane code (Material::f_r),
+/// from the same wi, wo and n; so a scene without lobes pays two tests of `lobed` per bounce.
 ///
 /// bounce_lanes_avx2 computes the four lanes with one instruction per operation, in the order
 /// the one-path code does them (sample_uniform_hemisphere, cos_sin_two_pi, Frame, spawn_ray,
