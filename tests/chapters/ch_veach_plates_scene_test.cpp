@@ -34,7 +34,7 @@ const std::vector<GlossyRun> k_runs{
      {"uniform.pfm", "cosine.pfm", "reference.pfm"}},
 };
 
-TEST(VeachPlatesSceneTest, HelpOfChapters05To07ListsTheScene) {
+TEST(VeachPlatesChapterTest, HelpOfChapters05To07ListsTheScene) {
   for (const GlossyRun& r : k_runs) {
     const ProgramRun help = run_program(r.program, "--help");
     EXPECT_EQ(help.exit_code, 0) << r.program;
@@ -44,7 +44,7 @@ TEST(VeachPlatesSceneTest, HelpOfChapters05To07ListsTheScene) {
 
 // Each run takes well under a second at these sizes (a few thousand paths); the lit plates
 // show as pixels brighter than the background, which is exactly 0 where rays leave.
-TEST(VeachPlatesSceneTest, Chapters05To07RenderItInATinyRun) {
+TEST(VeachPlatesChapterTest, Chapters05To07RenderItInATinyRun) {
   for (const GlossyRun& r : k_runs) {
     SCOPED_TRACE(r.program);
     const auto dir = fresh_dir(r.program + "_veach_plates");
@@ -70,7 +70,7 @@ TEST(VeachPlatesSceneTest, Chapters05To07RenderItInATinyRun) {
 
 // The four-lane engine weighs glossy lanes one at a time: still the loop's image, byte for
 // byte. --albedo shapes the furnace only, so on veach-plates it changes nothing.
-TEST(VeachPlatesSceneTest, Chapter05EnginesAgreeAndAlbedoIsIgnored) {
+TEST(VeachPlatesChapterTest, Chapter05EnginesAgreeAndAlbedoIsIgnored) {
   const auto loop = fresh_dir("ch05_veach_loop"), lanes = fresh_dir("ch05_veach_lanes"),
              albedo = fresh_dir("ch05_veach_albedo");
   const std::string flags =
@@ -85,7 +85,7 @@ TEST(VeachPlatesSceneTest, Chapter05EnginesAgreeAndAlbedoIsIgnored) {
   }
 }
 
-TEST(VeachPlatesSceneTest, DiffuseOnlyChaptersRefuseIt) {
+TEST(VeachPlatesChapterTest, DiffuseOnlyChaptersRefuseIt) {
   for (const char* program : {"ch01_ray_tracing", "ch04_recursive_nk", "ch08_next_event_estimation"}) {
     SCOPED_TRACE(program);
     expect_refused(program, BadInput{"--scene veach-plates", "--scene"});
