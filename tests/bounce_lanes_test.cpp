@@ -16,6 +16,8 @@
 #include "core/cpu_features.hpp"
 #include "core/rng.hpp"
 #include "render/bounce_lanes.hpp"
+#include "render/material.hpp"
+#include "sampling/phong.hpp"
 #include "sampling/sampling.hpp"
 
 using namespace mcrt;
@@ -72,6 +74,69 @@ TEST(BounceLanesTest, AvxLanesGiveTheOnePathCodesBits) {
     ASSERT_TRUE(same_bits(fast_rays.direction_y, plain_rays.direction_y, k_bounce_lanes)) << trial;
     ASSERT_TRUE(same_bits(fast_rays.direction_z, plain_rays.direction_z, k_bounce_lanes)) << trial;
   }
+}
+
+// Lanes that bounce off a glossy lobe (the bit `lobed`): both engines give the one-path loop's
+// line, beta * (f_r(wi, wo, n) cos(theta_i) / pdf) with Material::f_r, bit for bit; wi is the
+// one-path sampler's direction and wo the reverse of the ray that reached the hit. The rays
+// arrive against the normal (as Hit::normal faces them) and the lobes are sharp and rough, so
+// many directions fall inside a lobe and its value, not only the diffuse part, is compared.
+TEST(BounceLanesTest, LobedLanesGiveTheOnePathLoopsWeight) {
+  Rng rng(22, 0);
+  int inside_a_lobe = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    BounceLanes lanes;
+    RayLanes rays;
+    Color expected[k_bounce_lanes];
+    for (int l = 0; l < k_bounce_lanes; ++l) {
+      const Vec3 n = normal_for(trial + l, rng);
+      Material m;
+      m.albedo = (trial + l) % 3 == 0 ? Color(0.0) : Color(0.2 * rng.uniform());
+      m.specular = 0.8 * rng.uniform();
+      m.exponent = (trial + l) % 2 == 0 ? 1.0 + 20.0 * rng.uniform() : 1e3;
+      Vec3 d = sample_uniform_sphere(rng.uniform2());
+      if (glm::dot(d, n) > 0.0) d = -d;  // arriving from the normal's side
+      lanes.u0[l] = (trial + l) % 11 == 0 ? 0.0 : rng.uniform();
+      lanes.u1[l] = u1_for(trial + l, rng);
+      const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
+      const Vec3 wi = Frame(n).to_world(local);
+      // A sharp lobe is met only near the mirror direction: half of the rays arrive so that wi
+      // is exactly their mirror direction, the lobe's peak.
+      if (trial % 2 == 0) d = -mirror_direction(wi, n);
+      for (int axis = 0; axis < 3; ++axis) {
+        lanes.hit.point[axis][l] = 10.0 * (2.0 * rng.uniform() - 1.0);
+        lanes.hit.normal[axis][l] = n[axis];
+        lanes.albedo[axis][l] = m.albedo[axis];
+        lanes.beta[axis][l] = 3.0 * rng.uniform();
+      }
+      lanes.bouncing[l] = -static_cast<std::int64_t>((trial >> l) & 1);
+      if ((trial >> (l + 4)) & 1) {  // every mask of lobed lanes among them
+        lanes.lobed |= 1u << l;
+        lanes.specular[l] = m.specular;
+        lanes.exponent[l] = m.exponent;
+      } else {
+        m.specular = 0.0;  // a diffuse lane
+      }
+      rays.set(l, Ray(Vec3(rng.uniform()), d));
+      const Color beta(lanes.beta[0][l], lanes.beta[1][l], lanes.beta[2][l]);
+      const Color f = m.f_r(wi, -d, n);
+      inside_a_lobe += m.has_lobe() && f != m.brdf();
+      // estimate_path_radiance's line: beta *= f_r * cos_theta_i / pdf, cos_theta_i = local.z.
+      expected[l] = lanes.bouncing[l] != 0 ? beta * (f * local.z / uniform_hemisphere_pdf()) : beta;
+    }
+    for (const bool avx2 : {false, true}) {
+      if (avx2 && !cpu_has_avx2()) continue;
+      BounceLanes out = lanes;
+      RayLanes out_rays = rays;
+      if (avx2) bounce_lanes_avx2(out, out_rays);
+      else bounce_lanes_portable(out, out_rays);
+      for (int l = 0; l < k_bounce_lanes; ++l)
+        for (int axis = 0; axis < 3; ++axis)
+          ASSERT_TRUE(same_bits(&out.beta[axis][l], &expected[l][axis], 1))
+              << "trial " << trial << " lane " << l << " axis " << axis << " avx2 " << avx2;
+    }
+  }
+  EXPECT_GT(inside_a_lobe, 1000);  // the lobes' values were compared, not only rho / pi
 }
 
 // The portable lanes do bounce: a lane that bounces gets a unit direction on the normal's side,

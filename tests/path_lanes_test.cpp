@@ -22,14 +22,17 @@ constexpr int k_lanes = PathLanes::k_lanes;
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
-// Five materials: black, a lamp, a white diffuser, a coloured one and a glowing coloured one.
+// Six materials: black, a lamp, a white diffuser, a coloured one, a glowing coloured one, and
+// a glossy one (a Phong lobe beside a diffuse part), whose lanes bounce_lanes weighs apart.
 std::vector<Material> test_materials() {
   return {{Color(0.0), Color(0.0)},
           {Color(0.0), Color(12.0, 10.0, 8.0)},
           {Color(1.0), Color(0.0)},
           {Color(0.75, 0.25, 0.5), Color(0.0)},
-          {Color(0.3, 0.6, 0.9), Color(0.5, 1.5, 2.5)}};
+          {Color(0.3, 0.6, 0.9), Color(0.5, 1.5, 2.5)},
+          {Color(0.1, 0.2, 0.1), Color(0.0), 0.7, 300.0}};
 }
+constexpr std::uint32_t k_material_count = 6;
 
 double weight_for(int i, Rng& rng) {
   switch (i % 9) {
@@ -46,7 +49,7 @@ void randomise(int trial, int max_depth, Rng& rng, PathLanes& paths, BounceLanes
     paths.start(l, rng.next_bits(), rng.next_bits());
     if (((trial >> l) & 1) == 0) paths.stop(l);  // every mask of live lanes
     paths.depth[l] = rng.uniform_below(static_cast<std::uint32_t>(max_depth) + 1);
-    bounce.hit.material[l] = static_cast<std::int64_t>(rng.uniform_below(6)) - 1;  // -1: a miss
+    bounce.hit.material[l] = static_cast<std::int64_t>(rng.uniform_below(k_material_count + 1)) - 1;  // -1: a miss
     for (int axis = 0; axis < 3; ++axis) {
       paths.radiance[axis][l] = rng.uniform();
       bounce.beta[axis][l] = (trial + l) % 4 == 0 ? weight_for(trial + axis, rng) : rng.uniform();
@@ -109,6 +112,13 @@ TEST(PathLanesTest, ShadeAndEndFollowTheLoopsRules) {
             EXPECT_EQ(bounce.albedo[axis][l], materials[bounce.hit.material[l]].albedo[axis]);
           }
         }
+        // The lobe goes with the lane exactly where it bounces off a glossy material.
+        const bool lobed = bounces && materials[bounce.hit.material[l]].has_lobe();
+        EXPECT_EQ((bounce.lobed >> l) & 1u, lobed ? 1u : 0u) << trial << " lane " << l;
+        if (lobed) {
+          EXPECT_EQ(bounce.specular[l], materials[bounce.hit.material[l]].specular);
+          EXPECT_EQ(bounce.exponent[l], materials[bounce.hit.material[l]].exponent);
+        }
       }
       const PathLanes shaded = paths;
       const BounceLanes bounced = bounce;
@@ -148,6 +158,7 @@ TEST(PathLanesTest, AvxLanesGiveThePortableLanesBits) {
     shade_lanes_portable(materials, max_depth, plain_paths, plain_bounce);
     for (int l = 0; l < k_lanes; ++l) {
       ASSERT_EQ(fast_bounce.bouncing[l], plain_bounce.bouncing[l]) << trial << " lane " << l;
+      ASSERT_EQ((fast_bounce.lobed >> l) & 1u, (plain_bounce.lobed >> l) & 1u) << trial << " lane " << l;
       ASSERT_EQ(fast_paths.rng.state[l], plain_paths.rng.state[l]) << trial << " lane " << l;
       for (int axis = 0; axis < 3; ++axis)
         ASSERT_TRUE(same_bits(fast_paths.radiance[axis][l], plain_paths.radiance[axis][l]))
@@ -157,6 +168,10 @@ TEST(PathLanesTest, AvxLanesGiveThePortableLanesBits) {
       ASSERT_TRUE(same_bits(fast_bounce.u1[l], plain_bounce.u1[l])) << trial << " lane " << l;
       for (int axis = 0; axis < 3; ++axis)
         ASSERT_TRUE(same_bits(fast_bounce.albedo[axis][l], plain_bounce.albedo[axis][l]));
+      if ((plain_bounce.lobed >> l) & 1u) {
+        ASSERT_TRUE(same_bits(fast_bounce.specular[l], plain_bounce.specular[l]));
+        ASSERT_TRUE(same_bits(fast_bounce.exponent[l], plain_bounce.exponent[l]));
+      }
     }
     const unsigned ended = end_lanes_portable(plain_paths, plain_bounce);
     ASSERT_EQ(end_lanes_avx2(fast_paths, fast_bounce), ended) << trial;

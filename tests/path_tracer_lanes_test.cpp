@@ -90,6 +90,18 @@ TEST(PathTracerLanesTest, GivesTheLectureLoopsImageAtEverySizeAndDepth) {
   }
 }
 
+// Veach's plates: glossy lobes, whose lanes bounce_lanes weighs one at a time beside diffuse
+// ones, and an open scene, where most paths leave after a bounce or two and lanes end at every
+// step. Widths 1 to 9 with 1 to 3 spp at a height whose rows cross the plates and the lights;
+// one row of 1031 paths; depths 0 to 4 and 10.
+TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnVeachPlatesAtEverySizeAndDepth) {
+  for (int width = 1; width <= 9; ++width)
+    for (int spp = 1; spp <= 3; ++spp) expect_lecture_image({"veach-plates", width, 7, spp, 10, 0, 1});
+  expect_lecture_image({"veach-plates", 1031, 2, 1, 10, 0, 1});
+  for (int depth = 0; depth <= 4; ++depth) expect_lecture_image({"veach-plates", 24, 18, 4, depth, 0, 1});
+  for (int threads : {1, 2}) expect_lecture_image({"veach-plates", 33, 17, 5, 10, 5, threads});
+}
+
 TEST(PathTracerLanesTest, GivesTheLectureLoopsImageForLaterSamplesAndAnyThreadCount) {
   for (int threads : {1, 2, 3}) expect_lecture_image({"cornell", 33, 17, 5, 10, 5, threads});
 }

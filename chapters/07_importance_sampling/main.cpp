@@ -139,7 +139,7 @@ void run(const CLI::App& app, const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  add_render_options(app, o.scene, o.image);
+  add_render_options(app, o.scene, o.image, scene_names());  // veach-plates too: glossy lobes
   add_number_option(app, "--spp", o.spp, "Samples per pixel of every image of the study", 1,
                     1 << 16);
   add_number_option(app, "--depth", o.depth, "Bounces after the first hit (0: emitted light only)",

@@ -33,9 +33,9 @@ void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& ch
   app.add_flag("--quiet", options.quiet, "No progress bar and no table on stdout");
 }
 
-void add_scene_options(CLI::App& app, SceneOptions& options) {
-  app.add_option("--scene", options.scene, "Scene to render")
-      ->check(CLI::IsMember(scene_names()));
+void add_scene_options(CLI::App& app, SceneOptions& options,
+                       const std::vector<std::string>& names) {
+  app.add_option("--scene", options.scene, "Scene to render")->check(CLI::IsMember(names));
   add_number_option(app, "--albedo", options.params.furnace_albedo,
                     "Furnace scene: albedo everywhere", 0.0, 1.0);
   add_number_option(app, "--emission", options.params.furnace_emission,
@@ -406,8 +406,9 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
   });
 }
 
-void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image) {
-  add_scene_options(app, scene);
+void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image,
+                        const std::vector<std::string>& scenes) {
+  add_scene_options(app, scene, scenes);
   add_image_options(app, image);
 }
 

@@ -53,7 +53,9 @@ inline constexpr int k_max_image_side = 16384;
 inline constexpr int k_max_threads = 256;
 
 void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& chapter);
-void add_scene_options(CLI::App& app, SceneOptions& options);
+/// --scene (one of `names`), --albedo and --emission.
+void add_scene_options(CLI::App& app, SceneOptions& options,
+                       const std::vector<std::string>& names = diffuse_scene_names());
 void add_image_options(CLI::App& app, ImageOptions& options);
 
 /// A numeric flag read as written (io/numbers.hpp): a whole number in decimal digits from
@@ -128,7 +130,10 @@ class ChapterApp : public CLI::App {
   bool print_flags_ = false;
 };
 
-/// --scene, --albedo, --emission, --width and --height: what every renderer takes.
-void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image);
+/// --scene, --albedo, --emission, --width and --height: what every renderer takes. --scene
+/// offers `scenes`: the diffuse ones unless the chapter's estimators see a glossy lobe
+/// (chapters 05-07 pass scene_names()).
+void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image,
+                        const std::vector<std::string>& scenes = diffuse_scene_names());
 
 }  // namespace mcrt

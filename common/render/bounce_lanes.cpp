@@ -2,6 +2,7 @@
 
 #include "core/cpu_features.hpp"
 #include "geometry/hit.hpp"
+#include "render/material.hpp"
 #include "sampling/sampling.hpp"
 
 #if defined(__x86_64__)
@@ -15,6 +16,49 @@ namespace {
 
 Vec3 lane_of(const double (&v)[3][k_bounce_lanes], int l) { return {v[0][l], v[1][l], v[2][l]}; }
 
+// Lane l's material as shade_lanes left it: its albedo, and its lobe where the lane is lobed.
+Material material_of(const BounceLanes& lanes, int l) {
+  Material m;
+  m.albedo = lane_of(lanes.albedo, l);
+  if ((lanes.lobed >> l) & 1u) {
+    m.specular = lanes.specular[l];
+    m.exponent = lanes.exponent[l];
+  }
+  return m;
+}
+
+// beta f_r(wi, wo, n) cos(theta_i) / pdf for lane l, wo from the ray that reached its hit: the
+// one-path loop's line, in its order.
+Color bounced_weight(const BounceLanes& lanes, const RayLanes& rays, int l, const Vec3& wi,
+                     double cos_theta_i) {
+  const Vec3 wo = -rays.get(l).direction;
+  const Color brdf = material_of(lanes, l).f_r(wi, wo, lane_of(lanes.hit.normal, l));
+  return lane_of(lanes.beta, l) * (brdf * cos_theta_i / uniform_hemisphere_pdf());
+}
+
+// The lines of estimate_path_radiance after the emission, for lane l: its direction, its weight
+// beta f_r cos / pdf and its new ray.
+void bounce_one_lane(BounceLanes& lanes, RayLanes& rays, int l) {
+  const Vec3 normal = lane_of(lanes.hit.normal, l);
+  const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
+  const Vec3 wi = Frame(normal).to_world(local);
+  const double cos_theta_i = local.z;
+  const Color beta = bounced_weight(lanes, rays, l, wi, cos_theta_i);
+  for (int axis = 0; axis < 3; ++axis) lanes.beta[axis][l] = beta[axis];
+  Hit hit;
+  hit.point = lane_of(lanes.hit.point, l);
+  hit.normal = normal;
+  rays.set(l, spawn_ray(hit, wi));
+}
+
+// The bouncing lanes whose material has a lobe, one at a time by the one-path code (its
+// direction is the four-lane sampler's, bit for bit). Out of line and called last, so that
+// the four-lane bounce of a diffuse scene keeps its own code and registers.
+[[gnu::noinline]] void bounce_lobed_lanes(BounceLanes& lanes, RayLanes& rays) {
+  for (int l = 0; l < k_bounce_lanes; ++l)
+    if (((lanes.lobed >> l) & 1u) != 0 && lanes.bouncing[l] != 0) bounce_one_lane(lanes, rays, l);
+}
+
 }  // namespace
 
 void bounce_lanes(BounceLanes& lanes, RayLanes& rays) {
@@ -25,20 +69,8 @@ void bounce_lanes(BounceLanes& lanes, RayLanes& rays) {
 
 // The lines of estimate_path_radiance after the emission, lane by lane.
 void bounce_lanes_portable(BounceLanes& lanes, RayLanes& rays) {
-  for (int l = 0; l < k_bounce_lanes; ++l) {
-    if (lanes.bouncing[l] == 0) continue;
-    const Vec3 normal = lane_of(lanes.hit.normal, l);
-    const Vec3 local = sample_uniform_hemisphere({lanes.u0[l], lanes.u1[l]});
-    const Vec3 wi = Frame(normal).to_world(local);
-    const double cos_theta_i = local.z;
-    const Color brdf = lane_of(lanes.albedo, l) * k_inv_pi;  // Material::brdf()
-    const Color beta = lane_of(lanes.beta, l) * (brdf * cos_theta_i / uniform_hemisphere_pdf());
-    for (int axis = 0; axis < 3; ++axis) lanes.beta[axis][l] = beta[axis];
-    Hit hit;
-    hit.point = lane_of(lanes.hit.point, l);
-    hit.normal = normal;
-    rays.set(l, spawn_ray(hit, wi));
-  }
+  for (int l = 0; l < k_bounce_lanes; ++l)
+    if (lanes.bouncing[l] != 0) bounce_one_lane(lanes, rays, l);
 }
 
 #if defined(__x86_64__)
@@ -136,11 +168,20 @@ using D4 = __m256d;
   // The lanes that bounce: all bits set (blendv reads the sign bit).
   const D4 mask = _mm256_castsi256_pd(_mm256_load_si256(reinterpret_cast<const __m256i*>(lanes.bouncing)));
 
+  // Lanes with a glossy lobe are left alone here: bounce_lobed_lanes does them at the end.
+  D4 diffuse = mask;
+  if (lanes.lobed != 0) {
+    const __m256i bits = _mm256_and_si256(_mm256_set1_epi64x(lanes.lobed),
+                                          _mm256_setr_epi64x(1, 2, 4, 8));
+    diffuse = _mm256_andnot_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(bits, _mm256_setzero_si256())),
+                               mask);
+  }
+
   // beta *= (rho / pi) cos(theta_i) / (1 / 2 pi), in Material::brdf()'s and the loop's order.
   for (int axis = 0; axis < 3; ++axis) {
     const D4 factor = div(mul(mul(load(lanes.albedo[axis]), broadcast(k_inv_pi)), cos_theta),
                           broadcast(k_inv_two_pi));
-    store_where(mask, lanes.beta[axis], mul(load(lanes.beta[axis]), factor));
+    store_where(diffuse, lanes.beta[axis], mul(load(lanes.beta[axis]), factor));
   }
 
   // spawn_ray: the origin pushed 1e-7 (1 + max |p_i|) along the normal, to the side of wi.
@@ -151,12 +192,13 @@ using D4 = __m256d;
                          broadcast(-1.0));
   const D4 push = mul(side, offset);
   const D4 ox = add(px, mul(push, nx)), oy = add(py, mul(push, ny)), oz = add(pz, mul(push, nz));
-  store_where(mask, rays.origin_x, ox);
-  store_where(mask, rays.origin_y, oy);
-  store_where(mask, rays.origin_z, oz);
-  store_where(mask, rays.direction_x, wx);
-  store_where(mask, rays.direction_y, wy);
-  store_where(mask, rays.direction_z, wz);
+  store_where(diffuse, rays.origin_x, ox);
+  store_where(diffuse, rays.origin_y, oy);
+  store_where(diffuse, rays.origin_z, oz);
+  store_where(diffuse, rays.direction_x, wx);
+  store_where(diffuse, rays.direction_y, wy);
+  store_where(diffuse, rays.direction_z, wz);
+  if (lanes.lobed != 0) bounce_lobed_lanes(lanes, rays);
 }
 
 #else

@@ -59,9 +59,11 @@ inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int 
     // A direction of density 0 comes only from u on the edge of [0,1)^2 (u0 = 0 for cos^m and
     // grazing): probability 2^-32 per bounce. It ends the path instead of dividing by 0.
     if (!(p_wi > 0.0)) break;
-    beta *= material.brdf() * cos_theta_i / p_wi;
+    const Vec3 wi = Frame(hit->normal).to_world(local);
+    const Vec3 wo = -ray.direction;
+    beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / p_wi;
     if (beta == Color(0.0)) break;
-    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+    ray = spawn_ray(*hit, wi);
   }
   return radiance;
   // ASSIGNMENT a5.2 END

@@ -1,19 +1,47 @@
 #pragma once
-/// Diffuse materials: the lecture's only kind. f_r = albedo / pi, and an emitted radiance Le
-/// that is the same in every direction. A material is one side of a surface: a quad may have
-/// another on its back (Scene::add_quad), which is how the Cornell lamp emits downwards only.
+/// Materials: a diffuse part, the lecture's first kind, f_r = albedo / pi, and optionally a
+/// glossy lobe, the normalised modified Phong lobe of sampling/phong.hpp round the mirror
+/// direction; and an emitted radiance Le that is the same in every direction. A material is
+/// one side of a surface: a quad may have another on its back (Scene::add_quad), which is how
+/// the Cornell lamp emits downwards only.
+///
+/// The lobe is plain data beside the albedo (no virtual call, no allocation): `specular` = 0
+/// means none, and then f_r is albedo / pi exactly, whatever the directions, so a diffuse scene
+/// renders the same bits as before the lobe existed.
 
 #include "core/math.hpp"
+#include "sampling/phong.hpp"
 
 namespace mcrt {
 
 struct Material {
-  Color albedo{0.0};    ///< reflectance rho in [0,1]^3
+  Color albedo{0.0};    ///< diffuse reflectance rho in [0,1]^3
   Color emission{0.0};  ///< emitted radiance Le
+  double specular = 0.0;  ///< rho_s of the Phong lobe (grey); 0: no lobe. albedo + rho_s <= 1
+  double exponent = 1.0;  ///< the lobe's Phong exponent m in [1, 1e4]: 1 rough, 1e4 nearly a mirror
 
-  /// Lambertian BRDF f_r(wi, wo) = rho / pi, independent of the directions.
+  /// Lambertian BRDF f_r = rho / pi, independent of the directions: the diffuse part alone.
   Color brdf() const { return albedo * k_inv_pi; }
   bool is_emitter() const { return emission != Color(0.0); }
+  bool has_lobe() const { return specular > 0.0; }
+  /// The lobe alone, as sampling/phong.hpp's parameters (its rho_d is in albedo).
+  Phong lobe() const { return Phong{0.0, specular, exponent}; }
+
+  /// f_r(wi, wo) at a point of unit normal n facing wo (Hit::normal), wi and wo unit and
+  /// pointing away from the surface: rho / pi plus the Phong lobe
+  /// rho_s (m + 2) / (2 pi) max(0, wi . r(wo))^m, which is 0 for wi below the surface.
+  /// Without a lobe it returns brdf() itself.
+  Color f_r(const Vec3& wi, const Vec3& wo, const Vec3& n) const {
+    if (!has_lobe()) return brdf();
+    return brdf() + Color(phong_brdf(lobe(), wi, wo, n));
+  }
 };
+
+/// f_r cos(theta_i) / p for a cosine-weighted direction wi (p = cos(theta_i) / pi): pi f_r,
+/// which for a diffuse material is its albedo, exactly (the cosines cancel).
+inline Color cosine_bounce_weight(const Material& material, const Vec3& wi, const Vec3& wo,
+                                  const Vec3& n) {
+  return material.has_lobe() ? material.f_r(wi, wo, n) * k_pi : material.albedo;
+}
 
 }  // namespace mcrt

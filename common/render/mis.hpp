@@ -77,20 +77,23 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
     }
 
     // Light sampling: f_r Le cos / p_l, weight w_l(p_l, p_b).
+    const Vec3 wo = -ray.direction;
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes()) {
       const double w_l =
           mis_weight(heuristic, light.pdf_light, cosine_hemisphere_pdf(light.cos_x));
-      radiance += beta * w_l * material.brdf() * light.le * light.cos_x / light.pdf_light;
+      radiance += beta * w_l * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x /
+                  light.pdf_light;
     }
 
     // BSDF sampling: the cosine direction, also the path's next direction.
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     pdf_bsdf = cosine_hemisphere_pdf(local.z);
     if (!(pdf_bsdf > 0.0)) break;  // u on the edge of [0,1)^2: probability 2^-32
-    beta *= material.albedo;       // f_r cos / p_b = rho
+    const Vec3 wi = Frame(hit->normal).to_world(local);
+    beta *= cosine_bounce_weight(material, wi, wo, hit->normal);  // f_r cos / p_b (diffuse: rho)
     if (beta == Color(0.0)) break;
-    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+    ray = spawn_ray(*hit, wi);
   }
   return radiance;
   // ASSIGNMENT a5.3 END

@@ -70,16 +70,19 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
     }
 
     // Direct light: f_r Le cos(theta_x) / p_w(wi), if the shadow ray reaches the light.
+    const Vec3 wo = -ray.direction;
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes())
-      radiance += beta * material.brdf() * light.le * light.cos_x / light.pdf_light;
+      radiance += beta * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x /
+                  light.pdf_light;
 
-    // Indirect light: one cosine-weighted direction, f_r cos / p = rho.
+    // Indirect light: one cosine-weighted direction, f_r cos / p (= rho on a diffuse surface).
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     if (!(local.z > 0.0)) break;  // u on the edge of [0,1)^2: density 0, probability 2^-32
-    beta *= material.albedo;
+    const Vec3 wi = Frame(hit->normal).to_world(local);
+    beta *= cosine_bounce_weight(material, wi, wo, hit->normal);
     if (beta == Color(0.0)) break;
-    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+    ray = spawn_ray(*hit, wi);
   }
   return radiance;
   // ASSIGNMENT a5.3 END
@@ -107,9 +110,10 @@ inline Color estimate_cosine_roulette_radiance(const Scene& scene, Ray ray, cons
     }
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     if (!(local.z > 0.0)) break;
-    beta *= material.albedo;
+    const Vec3 wi = Frame(hit->normal).to_world(local);
+    beta *= cosine_bounce_weight(material, wi, -ray.direction, hit->normal);
     if (beta == Color(0.0)) break;
-    ray = spawn_ray(*hit, Frame(hit->normal).to_world(local));
+    ray = spawn_ray(*hit, wi);
   }
   return radiance;
   // ASSIGNMENT a5.1 END

@@ -28,6 +28,7 @@ unsigned end_lanes(PathLanes& paths, BounceLanes& bounce) {
 // The lines of estimate_path_radiance from the hit to the bounce's sample, lane by lane.
 void shade_lanes_portable(std::span<const Material> materials, int max_depth, PathLanes& paths,
                           BounceLanes& bounce) {
+  bounce.lobed = 0;
   for (int l = 0; l < PathLanes::k_lanes; ++l) {
     const Vec2 u = paths.uniform2(l);
     bounce.bouncing[l] = 0;
@@ -40,6 +41,11 @@ void shade_lanes_portable(std::span<const Material> materials, int max_depth, Pa
     bounce.u0[l] = u.x;
     bounce.u1[l] = u.y;
     for (int axis = 0; axis < 3; ++axis) bounce.albedo[axis][l] = material.albedo[axis];
+    if (material.has_lobe()) {
+      bounce.lobed |= 1u << l;
+      bounce.specular[l] = material.specular;
+      bounce.exponent[l] = material.exponent;
+    }
   }
 }
 
@@ -116,6 +122,19 @@ namespace {
     _mm256_store_pd(paths.radiance[axis], _mm256_blendv_pd(radiance, added, shaded_mask));
     _mm256_store_pd(bounce.albedo[axis], _mm256_setr_pd(of[0]->albedo[axis], of[1]->albedo[axis],
                                                         of[2]->albedo[axis], of[3]->albedo[axis]));
+  }
+  // Lanes that bounce off a glossy lobe: bounce_lanes weighs them one at a time. In a
+  // diffuse scene (lobes_possible false) `lobed` stays 0 and nothing is looked at.
+  if (bounce.lobes_possible) {
+    const unsigned lobed = static_cast<unsigned>(of[0]->has_lobe()) |
+                           static_cast<unsigned>(of[1]->has_lobe()) << 1 |
+                           static_cast<unsigned>(of[2]->has_lobe()) << 2 |
+                           static_cast<unsigned>(of[3]->has_lobe()) << 3;
+    for (int l = 0; l < PathLanes::k_lanes; ++l) {
+      bounce.specular[l] = of[l]->specular;
+      bounce.exponent[l] = of[l]->exponent;
+    }
+    bounce.lobed = lobed & static_cast<unsigned>(_mm256_movemask_pd(as_double(bouncing)));
   }
   _mm256_store_pd(bounce.u0, avx2::pcg32_uniform(avx2::pcg32_output(s0)));
   _mm256_store_pd(bounce.u1, avx2::pcg32_uniform(avx2::pcg32_output(s1)));

@@ -61,7 +61,8 @@ struct PathLanes {
 };
 
 /// For every live lane whose ray hit: radiance += beta Le(hit). The lane bounces (bounce.bouncing)
-/// unless its depth is max_depth; a bouncing lane gets its material's albedo and two uniforms,
+/// unless its depth is max_depth; a bouncing lane gets its material's albedo (and its lobe, with
+/// its bit in bounce.lobed, if it has one) and two uniforms,
 /// drawn as Rng::uniform2 draws them. (Every lane's generator draws its two numbers: a lane
 /// that does not bounce ends its path, and its next path reseeds it.) AVX2 where the
 /// processor has it.

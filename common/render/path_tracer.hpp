@@ -9,8 +9,8 @@
 ///   L ~ sum over bounces j = 0..k of beta_j Le(x_j),   beta_0 = 1,
 ///
 /// an unbiased estimate of the radiance of paths with at most k bounces (k = max_depth).
-/// Here p = 1/(2 pi) (uniform on the hemisphere) and f_r = rho/pi, so beta_{j+1} =
-/// beta_j 2 rho cos(theta_i).
+/// Here p = 1/(2 pi) (uniform on the hemisphere); on a diffuse surface f_r = rho/pi, so
+/// beta_{j+1} = beta_j 2 rho cos(theta_i) (Material::f_r adds a glossy lobe where there is one).
 ///
 /// Expectation and variance in the furnace (albedo a, emission Le everywhere): with c_j the
 /// cosines, uniform on [0,1], beta_j = prod (2 a c_i) has E[beta_j] = a^j and
@@ -47,7 +47,8 @@ inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, 
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Vec3 wi = Frame(hit->normal).to_world(local);
     const double cos_theta_i = local.z;  // the normal is the frame's z axis
-    beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();
+    const Vec3 wo = -ray.direction;      // towards where the path came from
+    beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / uniform_hemisphere_pdf();
     // A black surface ends the path exactly: every later term would be multiplied by 0.
     if (beta == Color(0.0)) break;
     ray = spawn_ray(*hit, wi);

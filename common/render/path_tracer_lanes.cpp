@@ -31,7 +31,11 @@ class RowOfPaths {
   RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
              int max_depth, int y)
       : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y),
-        tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {}
+        tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {
+    // A diffuse scene spares shade_lanes the look at each lane's lobe.
+    const bool lobes = std::ranges::any_of(scene.materials, &Material::has_lobe);
+    for (PathGroup& g : groups_) g.bounce.lobes_possible = lobes;
+  }
 
   // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
   void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {

@@ -105,7 +105,8 @@ inline Color estimate_path_radiance_roulette(const Scene& scene, Ray ray, const 
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Vec3 wi = Frame(hit->normal).to_world(local);
     const double cos_theta_i = local.z;
-    beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();
+    const Vec3 wo = -ray.direction;
+    beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / uniform_hemisphere_pdf();
     if (beta == Color(0.0)) break;  // a black surface: every later term is 0
     ray = spawn_ray(*hit, wi);
   }

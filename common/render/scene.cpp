@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/cpu_features.hpp"
+#include "render/veach_plates.hpp"
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -187,6 +188,12 @@ void Scene::hits_in_lanes_avx2(const ClosestLanes& nearest, const RayLanes& rays
 #endif
 
 const std::vector<std::string>& scene_names() {
+  static const std::vector<std::string> names{"cornell", "cornell-spheres", "furnace",
+                                              "veach-plates"};
+  return names;
+}
+
+const std::vector<std::string>& diffuse_scene_names() {
   static const std::vector<std::string> names{"cornell", "cornell-spheres", "furnace"};
   return names;
 }
@@ -195,6 +202,7 @@ Scene make_scene(std::string_view name, const SceneParams& params) {
   if (name == "cornell") return make_cornell_box(params.light_scale);
   if (name == "cornell-spheres") return make_cornell_spheres();
   if (name == "furnace") return make_furnace(params.furnace_albedo, params.furnace_emission);
+  if (name == "veach-plates") return make_veach_plates_scene();
   throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
 }
 
@@ -318,6 +326,24 @@ Scene make_furnace(double albedo, double emission) {
   scene.add_sphere({Vec3(0.0), 1.0, m});
   scene.camera = {Vec3(0.0), {0, 0, -1}, {0, 1, 0}, 60.0 * k_pi / 180.0, 0.0};
   scene.point_light = {Vec3(0.0), Color(0.0)};  // the walls are the light; no point light
+  return scene;
+}
+
+// Veach's plates, from make_veach_plates(): its material numbering (plate k has material k,
+// light j material plates + j) is kept by adding the plates' materials first, then the
+// lights', so its quads and spheres go in unchanged. Plates are two-sided, as its closest_hit
+// sees them; the lights are whole spheres (no enclosure), and there is no point light.
+Scene make_veach_plates_scene() {
+  const VeachPlates plates = make_veach_plates();
+  Scene scene;
+  scene.name = "veach-plates";
+  for (const Phong& p : plates.materials)
+    scene.add_material({Color(p.rho_d), Color(0.0), p.rho_s, p.m});
+  for (double le : plates.radiance) scene.add_material({Color(0.0), Color(le)});
+  for (const Quad& q : plates.plates) scene.add_quad(q);
+  for (const Sphere& s : plates.lights) scene.add_sphere(s);
+  scene.camera = plates.camera;
+  scene.point_light = {Vec3(0.0), Color(0.0)};  // the lights are spheres; no point light
   return scene;
 }
 

@@ -196,8 +196,13 @@ struct SceneParams {
 /// ceiling.
 inline constexpr double k_max_light_scale = 4.0;
 
-/// The built-in scenes: "cornell", "cornell-spheres", "furnace".
+/// The built-in scenes: "cornell", "cornell-spheres", "furnace", "veach-plates".
 const std::vector<std::string>& scene_names();
+
+/// The built-in scenes whose materials are all diffuse: every scene but "veach-plates". The
+/// chapters whose estimators see only the diffuse part of a material (f_r = rho / pi: 01, 04,
+/// 08's path estimators) offer only these.
+const std::vector<std::string>& diffuse_scene_names();
 
 /// Builds the named scene; the name must be one of scene_names().
 Scene make_scene(std::string_view name, const SceneParams& params = {});
@@ -212,5 +217,9 @@ struct SceneOptions {
 Scene make_cornell_box(double light_scale = 1.0, int lamp_parts = 1);
 Scene make_cornell_spheres();
 Scene make_furnace(double albedo, double emission);
+/// Veach's plates (render/veach_plates.hpp) as a Scene: the same plates, lights and camera as
+/// make_veach_plates(), from which it is built, with each plate's Phong lobe as a Material and
+/// each light an emitting sphere. Open: a ray that misses the plates and lights leaves.
+Scene make_veach_plates_scene();
 
 }  // namespace mcrt
