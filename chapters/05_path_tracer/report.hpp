@@ -119,10 +119,12 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["mean_radiance_reference"] =
       reference ? Json(mean_radiance(reference->image)) : Json(nullptr);
   summary["reference"] = reference ? Json(reference->info) : Json(nullptr);
+  if (reference) summary["reference"].erase("seconds");  // the machine's: timings.json's
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter, o.common);
   add_render_timings(timings, total);
+  if (reference && reference->info.contains("seconds")) timings["reference_seconds"] = reference->info["seconds"];
   write_timings(o.common.dir, timings, app);
 }
 

@@ -171,7 +171,7 @@ void run(const CLI::App& app, const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  add_render_options(app, o.scene, o.image);
+  add_render_options(app, o.scene, o.image, scene_names());  // veach-plates too: glossy lobes
   add_number_option(app, "--light-scale", o.scene.params.light_scale,
                     "cornell: the lamp's sides times this, its radiance over its square (the "
                     "same power): 0.1 tiny and bright, 3 large and dim", 0.01, k_max_light_scale);
