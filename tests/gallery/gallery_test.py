@@ -354,6 +354,28 @@ def check_gallery(seen, chapters):
           "the gallery has placeholder captions")
 
 
+def check_odd_shapes(make_gallery, tmp):
+    """A summary.json of a shape the lessons do not expect (a number where a list was, texts
+    where numbers were) still gives a page: the section says it could check nothing."""
+    out = tmp / "shapes"
+    odd = {"ch04_recursive_nk": {"sweep": 5, "missing_light": [1, 2], "equal_cost": "x"},
+           "ch05_path_tracer": {"rmse_vs_spp": [{"spp": None, "rmse": "0.1"}], "rmse_slope": "x"},
+           "ch08_next_event_estimation": {"shootout": [{"scene": "cornell", "light_scale": 0.1,
+                                                        "estimator": "uniform",
+                                                        "rays_per_pixel": 0, "rel_mse": 0}]}}
+    for name, summary in odd.items():
+        (out / name).mkdir(parents=True)
+        (out / name / "summary.json").write_text(json.dumps(summary), encoding="utf-8")
+    result = subprocess.run([sys.executable, make_gallery, "--out", str(out)],
+                            capture_output=True, text=True, timeout=60)
+    if check(result.returncode == 0, f"make-gallery on odd summaries: exit {result.returncode}: "
+             f"{result.stderr[-600:]}"):
+        page = (out / "index.html").read_text(encoding="utf-8")
+        notes = page.count("No number of this run could be checked against theory")
+        check(notes == len(odd), f"make-gallery on odd summaries: {notes} sections say they "
+              f"could check nothing, not {len(odd)}")
+
+
 def check_foreign_docs(render_docs, tmp):
     """render-docs leaves an OUT/docs/ it did not write alone: exit 2, one line naming it."""
     out = tmp / "foreign"
@@ -410,6 +432,7 @@ def main():
     repo = Path(args.make_gallery).resolve().parent.parent
     check_page_source(page, source, list(chapters) + [ODD_FOLDER], repo)
     check_foreign_docs(render_docs, args.tmp)
+    check_odd_shapes(args.make_gallery, args.tmp)
     pages = sorted((out / "docs").rglob("*.html"))
     check(len(pages) >= len(list((repo / "docs").glob("*.md"))),
           f"{len(pages)} rendered pages for {len(list((repo / 'docs').glob('*.md')))} in docs/")
