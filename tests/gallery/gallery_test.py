@@ -382,6 +382,7 @@ def check_foreign_docs(render_docs, tmp):
     (out / "docs").mkdir(parents=True)
     mine = out / "docs" / "notes.html"
     mine.write_text("my notes", encoding="utf-8")
+    # The refusal comes before any pandoc: 120 s only stops a hung script.
     result = subprocess.run([sys.executable, render_docs, "--out", str(out)],
                             capture_output=True, text=True, timeout=120)
     check(result.returncode == 2, f"render-docs over a foreign docs/: exit {result.returncode}")
@@ -419,6 +420,7 @@ def main():
               "scripts/ installs it)")
         return 1
     for command in ([render_docs, "--out", str(out)], [args.make_gallery, "--out", str(out)]):
+        # render-docs runs pandoc on some 20 pages (seconds); 300 s only stops a hung one.
         result = subprocess.run([sys.executable, *command], capture_output=True, text=True,
                                 timeout=300)
         if not check(result.returncode == 0 and not result.stderr,
