@@ -19,8 +19,9 @@ DIR/out/, then checks:
     any \command outside code), every <math> laid out (MathML, no script), every relative
     link reaching a file and every #anchor an id of its page; in the gallery every chapter
     section has its conclusion, a chapter that ran has its key figure and three numbers
-    checked against theory, no "None" and no placeholder caption; a screenshot of the gallery
-    (a PNG of the window's size).
+    checked against theory, every figure named by what it shows (not its file name), and no
+    "None" nor a placeholder caption even in the folded parts; a screenshot of the gallery (a
+    PNG of the window's width).
 Exit status: 0 passed, 1 failed (each failure printed), 77 skipped (CTest SKIP_RETURN_CODE):
 Chromium is not installed.
 """
@@ -293,6 +294,11 @@ INSPECT = r"""(() => {
     links: Array.from(document.querySelectorAll('a[href]')).map(a => a.getAttribute('href')),
     ids: Array.from(document.querySelectorAll('[id]')).map(e => e.id),
     sections: sections,
+    figures: Array.from(document.querySelectorAll('section.chapter figure')).map(f => ({
+      section: f.closest('section').id,
+      src: (f.querySelector('img') || {getAttribute: () => ''}).getAttribute('src'),
+      name: (f.querySelector('figcaption b') || {textContent: ''}).textContent.trim(),
+    })),
   };
 })()"""
 
@@ -349,8 +355,15 @@ def check_gallery(seen, chapters):
     for section in seen["sections"]:
         if section["notRun"]:
             check(section["conclusion"], f"{section['id']} (not run): no conclusion")
-    check(not re.search(r"\bNone\b", seen["visible"]), "the gallery shows 'None'")
-    check(not re.search(r"The plot \S+ draws|An image the chapter wrote", seen["visible"]),
+    for shown in seen["figures"]:
+        if shown["section"] not in chapters:
+            continue  # a folder no chapter wrote: its images have only their names
+        stem = Path(unquote(shown["src"])).stem
+        check(shown["name"] and shown["name"].lower() != stem.replace("_", " ").lower(),
+              f"{shown['section']}: the figure {stem} is named by its file, not what it shows")
+    # The text of the whole page, the folded <details> too (innerText leaves those out).
+    check(not re.search(r"\bNone\b", seen["text"]), "the gallery shows 'None'")
+    check(not re.search(r"The plot \S+ draws|An image the chapter wrote", seen["text"]),
           "the gallery has placeholder captions")
 
 
