@@ -12,6 +12,8 @@ DIR/out/, then checks:
     the text taken from files escaped, every chapter's section linking to its rendered page
     (docs/NN_name.html, not the raw .md);
   - render-docs refuses an OUT/docs/ it did not write (exit 2, one line, the folder untouched);
+    render-docs and make-gallery refuse a bad flag and an empty --out (exit 2, one line naming
+    it, nothing written);
   - in Chromium, driven over its DevTools pipe (--remote-debugging-pipe, one browser for every
     page), the gallery and every rendered page after its load event: every <img> loaded
     (naturalWidth > 0), no console message, no exception and no failed load at all (the pages
@@ -389,6 +391,23 @@ def check_odd_shapes(make_gallery, tmp):
               f"could check nothing, not {len(odd)}")
 
 
+def check_bad_flags(scripts, tmp):
+    """A bad flag: exit 2, one line naming it, nothing written. An empty --out is one (it would
+    be the current folder: the repository's own docs/, say)."""
+    where = tmp / "flags"
+    where.mkdir()
+    for script in scripts:
+        for flags, named in ((["--out="], "--out"), (["--out", ""], "--out"),
+                             (["--bogus"], "--bogus")):
+            result = subprocess.run([sys.executable, script, *flags], cwd=where,
+                                    capture_output=True, text=True, timeout=60)
+            lines = result.stderr.strip().splitlines()
+            check(result.returncode == 2 and len(lines) == 1 and named in lines[0],
+                  f"{Path(script).name} {' '.join(flags)}: exit {result.returncode}, "
+                  f"stderr {result.stderr!r}")
+    check(not any(where.iterdir()), f"a bad flag wrote {sorted(p.name for p in where.iterdir())}")
+
+
 def check_foreign_docs(render_docs, tmp):
     """render-docs leaves an OUT/docs/ it did not write alone: exit 2, one line naming it."""
     out = tmp / "foreign"
@@ -448,6 +467,7 @@ def main():
     check_page_source(page, source, list(chapters) + [ODD_FOLDER], repo)
     check_foreign_docs(render_docs, args.tmp)
     check_odd_shapes(args.make_gallery, args.tmp)
+    check_bad_flags([render_docs, args.make_gallery], args.tmp)
     pages = sorted((out / "docs").rglob("*.html"))
     check(len(pages) >= len(list((repo / "docs").glob("*.md"))),
           f"{len(pages)} rendered pages for {len(list((repo / 'docs').glob('*.md')))} in docs/")
