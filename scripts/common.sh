@@ -7,13 +7,14 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
 
 # Everything the project needs from Debian: build tools, libraries, gnuplot for the plots,
-# python3 for the robustness suite (tests/robustness/robustness.py).
+# python3 for the robustness suite (tests/robustness/robustness.py), pandoc for the docs pages
+# in HTML (scripts/render-docs).
 debian_packages=(
   cmake g++ make pkg-config
   libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev libboost-math-dev
   gnuplot-nox fonts-dejavu-core
-  python3
+  python3 pandoc
 )
 
 # The compilers of the portability builds (scripts/test --compiler NAME): the Debian package
@@ -69,6 +70,18 @@ describe_processor() {
   number="$(grep -m1 '^model[[:space:]]*:' /proc/cpuinfo 2>/dev/null | cut -d: -f2 | tr -d ' ')"
   echo "== Processor: ${model:-unknown} (family ${family:-?}, model ${number:-?}), $(nproc) cores;" \
     "${extensions[*]:-no AVX2}"
+}
+
+# The chapter programs (chapters/NN_name/ -> chNN_name): all scripts/run-chapters needs, so a
+# first run does not wait for the test suite to build.
+chapter_targets() {
+  local folder
+  for folder in chapters/[0-9][0-9]_*/; do
+    folder="${folder%/}"
+    # chapters/CMakeLists.txt adds only the folders with a CMakeLists.txt
+    [ -f "$folder/CMakeLists.txt" ] && echo "ch$(basename "$folder")"
+  done
+  return 0
 }
 
 # The unit-test executables (tests/*_test.cpp): all a portability build needs to compile.
