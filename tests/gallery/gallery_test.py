@@ -52,7 +52,7 @@ TINY = {
                        "--points", "50"],
     "ch03_trapezoid_vs_mc": ["--trials", "4", "--max-evaluations", "4096", "--dims", "1,2,3"],
     "ch04_recursive_nk": ["--width", "16", "--height", "12", "--branching", "1,2",
-                          "--max-depth", "2", "--budget", "16", "--grid-budget", "16"],
+                          "--max-depth", "2", "--budget", "16", "--grid-spp", "16"],
     "ch05_path_tracer": ["--width", "16", "--height", "12", "--spp", "1,4", "--depth", "3"],
     "ch06_russian_roulette": ["--width", "16", "--height", "12", "--spp", "4", "--paths", "2000"],
     "ch07_importance_sampling": ["--width", "16", "--height", "12", "--spp", "2",
