@@ -9,6 +9,7 @@
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/subject/subject.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
 #include "known_bugs/estimators.hpp"
@@ -70,19 +71,19 @@ double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 double disk_density(const Vec2&) { return uniform_disk_pdf(); }
 
 TEST_F(Diagnoses, A2UniformHemisphereThatIsCosine) {
-  expect_diagnosis(check_sampler(sample_cosine_hemisphere, uniform_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(uniform_density), sampler_hemisphere_binning(),
                                  SamplerKind::uniform_hemisphere, "diagnosis_cosine_as_uniform"),
                    "observed/expected ~ 2 cos(theta): your samples look cosine-distributed");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereThatIsUniform) {
-  expect_diagnosis(check_sampler(sample_uniform_hemisphere, cosine_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_uniform_hemisphere), each(cosine_density), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_uniform_as_cosine"),
                    "observed/expected ~ 1 / (2 cos(theta))");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
-  expect_diagnosis(check_sampler(cosine_hemisphere_with_radius_u, cosine_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(cosine_hemisphere_with_radius_u), each(cosine_density), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_cosine_radius_u"),
                    "half the expected samples near the horizon and too many near the pole: is the disk point "
                    "at r = u0");
@@ -90,21 +91,21 @@ TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
 
 TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
   // the sampler is right; its chi-square fails only through the pdf, and says so
-  expect_diagnosis(check_sampler(sample_cosine_hemisphere, cosine_pdf_times_two, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(cosine_pdf_times_two), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_wrong_pdf"),
                    "your pdf integrates to 2.000, not 1, and this test compares your samples with it: fix the pdf first");
 }
 
 TEST_F(Diagnoses, A2DiskWithRadiusU) {
-  expect_diagnosis(check_sampler(disk_with_radius_u, disk_density, sampler_disk_binning(), SamplerKind::unit_disk,
+  expect_diagnosis(check_sampler(each(disk_with_radius_u), each(disk_density), sampler_disk_binning(), SamplerKind::unit_disk,
                                  "diagnosis_disk_radius_u"),
                    "points crowd the centre");
 }
 
 TEST_F(Diagnoses, A2PdfsOffByTwo) {
-  expect_diagnosis(check_pdf_integral(hemisphere_pdf_one_over_pi, sampler_hemisphere_binning(), "1/pi"),
+  expect_diagnosis(check_pdf_integral(each(hemisphere_pdf_one_over_pi), sampler_hemisphere_binning(), "1/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large (is it off by a factor of 2");
-  expect_diagnosis(check_pdf_integral(cosine_pdf_times_two, sampler_hemisphere_binning(), "2 cos/pi"),
+  expect_diagnosis(check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(), "2 cos/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large");
 }
 

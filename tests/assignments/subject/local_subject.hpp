@@ -1,0 +1,51 @@
+#pragma once
+// LocalSubject: every request answered by calling the student's functions in this process.
+// The ordinary test suite and a kit's self-grading use it (fast, nothing to start); the
+// subject program answers a checker's requests with it (subject_main.cpp). It is the only
+// place of the assignment tests that calls a student's function.
+
+#include <stdexcept>
+#include <vector>
+
+#include "assignments/subject/requests.hpp"
+#include "sampling/hemisphere.hpp"
+#include "sampling/plane.hpp"
+#include "sampling/sphere.hpp"
+
+namespace mcrt::testing::assignment {
+
+struct LocalSubject {
+  /// a2: the sampler `kind` at each u (a disk point with z = 0).
+  std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u) const {
+    std::vector<Vec3> out;
+    out.reserve(u.size());
+    for (const Vec2& x : u) {
+      switch (kind) {
+        case SamplerKind::uniform_hemisphere: out.push_back(sample_uniform_hemisphere(x)); break;
+        case SamplerKind::cosine_hemisphere: out.push_back(sample_cosine_hemisphere(x)); break;
+        case SamplerKind::uniform_sphere: out.push_back(sample_uniform_sphere(x)); break;
+        case SamplerKind::unit_disk: { const Vec2 d = sample_uniform_disk(x); out.emplace_back(d.x, d.y, 0.0); break; }
+      }
+    }
+    return out;
+  }
+
+  /// a2: the pdf of sampler `kind` at each point (per steradian; per unit area for the disk).
+  std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points) const {
+    std::vector<double> out;
+    out.reserve(points.size());
+    for (const Vec3& w : points) {
+      switch (kind) {
+        case SamplerKind::uniform_hemisphere: out.push_back(uniform_hemisphere_pdf()); break;
+        case SamplerKind::cosine_hemisphere: out.push_back(cosine_hemisphere_pdf(w.z)); break;
+        case SamplerKind::uniform_sphere: out.push_back(uniform_sphere_pdf()); break;
+        case SamplerKind::unit_disk: out.push_back(uniform_disk_pdf()); break;
+      }
+    }
+    return out;
+  }
+
+  void stop() {}  // nothing runs apart from this process
+};
+
+}  // namespace mcrt::testing::assignment

@@ -1,0 +1,125 @@
+#include "assignments/subject/remote_subject.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace mcrt::testing::assignment {
+namespace {
+
+std::string environment_or(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value != nullptr && *value != '\0' ? value : fallback;
+}
+
+/// k_answer_seconds, or less when $MCRT_SUBJECT_ANSWER_SECONDS says so (tests of a hang).
+double answer_seconds() {
+  const char* text = std::getenv("MCRT_SUBJECT_ANSWER_SECONDS");
+  const double lowered = text != nullptr ? std::atof(text) : 0.0;
+  return lowered > 0.0 && lowered < k_answer_seconds ? lowered : k_answer_seconds;
+}
+
+}  // namespace
+
+void RemoteSubject::start() {
+#ifdef MCRT_SUBJECT_DEFAULT
+  const std::string program = environment_or("MCRT_SUBJECT", MCRT_SUBJECT_DEFAULT);
+#else
+  const std::string program = environment_or("MCRT_SUBJECT", "");
+#endif
+  const std::string launcher = environment_or("MCRT_SUBJECT_LAUNCHER", "");
+  if (program.empty()) throw std::runtime_error("no subject program: set MCRT_SUBJECT");
+  ::signal(SIGPIPE, SIG_IGN);  // a subject gone while we write: write() fails, we say so
+  int requests[2], answers[2];
+  if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0)
+    throw std::runtime_error(fmt::format("cannot make the subject's pipes: {}", std::strerror(errno)));
+  std::vector<std::string> words;
+  if (!launcher.empty()) words.push_back(launcher);
+  words.push_back(program);
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  const bool launcher_makes_group = !launcher.empty() && ::geteuid() == 0;
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(fmt::format("cannot start the subject: {}", std::strerror(errno)));
+  if (pid == 0) {
+    // sandbox-run, as root, starts a session of its own (setsid would fork were this process
+    // a group leader already); otherwise the child makes its own process group, to be killed whole
+    if (!launcher_makes_group) ::setpgid(0, 0);
+    ::dup2(requests[0], STDIN_FILENO);
+    ::dup2(answers[1], STDOUT_FILENO);
+    ::execv(argv[0], argv.data());
+    const std::string message = fmt::format("checker: cannot run {}: {}\n", argv[0], std::strerror(errno));
+    (void)!::write(STDERR_FILENO, message.data(), message.size());
+    ::_exit(127);
+  }
+  ::close(requests[0]);
+  ::close(answers[1]);
+  pid_ = pid;
+  to_subject_ = requests[1];
+  from_subject_ = answers[0];
+  reader_.emplace(from_subject_);
+  token_ = random_token();
+  const std::string first = token_ + "\n";
+  if (!write_all_bytes(to_subject_, first.data(), first.size())) broken("start", "it did not take its token");
+}
+
+void RemoteSubject::stop() {
+  if (pid_ > 0) {
+    ::kill(-pid_, SIGKILL);  // the whole group: whatever the student code started in it
+    ::kill(pid_, SIGKILL);
+    while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (to_subject_ >= 0) ::close(to_subject_);
+  if (from_subject_ >= 0) ::close(from_subject_);
+  pid_ = to_subject_ = from_subject_ = -1;
+  reader_.reset();
+}
+
+void RemoteSubject::broken(const std::string& name, const std::string& problem) {
+  stop();
+  throw std::runtime_error(fmt::format("the subject program (your code) gave no valid answer to request {}: {}",
+                                       name, problem));
+}
+
+std::vector<double> RemoteSubject::call(const std::string& name, const std::vector<double>& params) {
+  if (pid_ < 0) start();
+  if (!write_frame(to_subject_, token_, name, params)) broken(name, "it stopped reading its requests (it ended or crashed)");
+  Frame frame;
+  std::string problem;
+  if (!reader_->read_frame(token_, frame, answer_seconds(), problem)) broken(name, problem);
+  if (frame.name == "error") throw std::runtime_error(frame.text);
+  if (frame.name != "ok") broken(name, fmt::format("an answer named {:?} instead of ok or error", frame.name));
+  return std::move(frame.values);
+}
+
+std::vector<Vec3> RemoteSubject::samples(SamplerKind kind, const std::vector<Vec2>& u) {
+  std::vector<double> params{static_cast<double>(kind)};
+  params.reserve(1 + 2 * u.size());
+  for (const Vec2& x : u) params.insert(params.end(), {x.x, x.y});
+  const std::vector<double> answer = call(k_request_a2_samples, params);
+  if (answer.size() != 3 * u.size())
+    broken(k_request_a2_samples, fmt::format("{} numbers for {} points", answer.size(), u.size()));
+  return unflatten3(answer.data(), answer.size());
+}
+
+std::vector<double> RemoteSubject::pdf_values(SamplerKind kind, const std::vector<Vec3>& points) {
+  std::vector<double> params{static_cast<double>(kind)};
+  const std::vector<double> flat = flatten(points);
+  params.insert(params.end(), flat.begin(), flat.end());
+  std::vector<double> answer = call(k_request_a2_pdf, params);
+  if (answer.size() != points.size())
+    broken(k_request_a2_pdf, fmt::format("{} numbers for {} points", answer.size(), points.size()));
+  return answer;
+}
+
+}  // namespace mcrt::testing::assignment

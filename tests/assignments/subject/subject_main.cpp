@@ -1,0 +1,70 @@
+// The subject program: the student's functions (through LocalSubject) answering a checker's
+// requests (protocol.hpp) on stdin/stdout. It holds no test and no hidden data: every
+// parameter comes with its request. What the student's code prints goes to stderr, so only
+// this dispatcher writes frames, each with the run's token.
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "assignments/subject/local_subject.hpp"
+#include "assignments/subject/protocol.hpp"
+
+namespace mcrt::testing::assignment {
+namespace {
+
+/// The kind of a request: its first parameter, checked against the enum's range.
+SamplerKind sampler_kind(const std::vector<double>& params) {
+  if (params.empty() || !(params[0] >= 0.0 && params[0] <= 3.0) || params[0] != static_cast<int>(params[0]))
+    throw std::invalid_argument("request without a valid sampler kind");
+  return static_cast<SamplerKind>(static_cast<int>(params[0]));
+}
+
+std::vector<double> answer(const LocalSubject& s, const std::string& name, const std::vector<double>& params) {
+  if (name == k_request_a2_samples) {
+    const SamplerKind kind = sampler_kind(params);
+    std::vector<Vec2> u;
+    for (std::size_t i = 1; i + 1 < params.size(); i += 2) u.emplace_back(params[i], params[i + 1]);
+    return flatten(s.samples(kind, u));
+  }
+  if (name == k_request_a2_pdf) {
+    const SamplerKind kind = sampler_kind(params);
+    return s.pdf_values(kind, unflatten3(params.data() + 1, params.size() - 1));
+  }
+  throw std::invalid_argument(fmt::format("unknown request {}", name));
+}
+
+int serve() {
+  // frames go to the original stdout; the student's prints (stdout included) to stderr
+  const int answers = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+  if (answers < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0) return 1;
+  FrameReader requests(STDIN_FILENO);
+  std::string token, problem;
+  if (!requests.read_line(token, k_max_header_bytes, -1.0, problem)) return 1;
+  const LocalSubject subject;
+  for (;;) {
+    Frame request;
+    if (!requests.read_frame(token, request, -1.0, problem)) return 0;  // the checker is done
+    bool written = false;
+    try {
+      const std::vector<double> values = answer(subject, request.name, request.values);
+      std::fflush(nullptr);  // the student's buffered prints leave before the answer
+      written = write_frame(answers, token, "ok", values);
+    } catch (const std::exception& e) {
+      std::fflush(nullptr);
+      written = write_error_frame(answers, token, e.what());
+    }
+    if (!written) return 1;
+  }
+}
+
+}  // namespace
+}  // namespace mcrt::testing::assignment
+
+int main() { return mcrt::testing::assignment::serve(); }
