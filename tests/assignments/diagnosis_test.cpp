@@ -129,16 +129,16 @@ TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
 }
 
 TEST_F(Diagnoses, A4MissingCosine) {
-  expect_diagnosis(check_path_furnace(path_radiance_without_cosine), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_without_cosine)), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
 }
 
 TEST_F(Diagnoses, A4SpherePdf) {
-  expect_diagnosis(check_path_furnace(path_radiance_with_sphere_pdf), "the per-bounce weight averages 2a instead of a: is your pdf off");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_with_sphere_pdf)), "the per-bounce weight averages 2a instead of a: is your pdf off");
 }
 
 TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_path_furnace(path_radiance_cosine_directions_uniform_pdf), "the per-bounce weight averages 4a/3");
-  EXPECT_FALSE(check_reference_regions(path_radiance_cosine_directions_uniform_pdf).passed);
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_cosine_directions_uniform_pdf)), "the per-bounce weight averages 4a/3");
+  EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {

@@ -7,7 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "assignments/a4/a4_produce.hpp"
 #include "assignments/subject/requests.hpp"
+#include "render/path_tracer.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/plane.hpp"
 #include "sampling/sphere.hpp"
@@ -43,6 +45,22 @@ struct LocalSubject {
       }
     }
     return out;
+  }
+
+  /// a4: n furnace paths of estimate_path_radiance (furnace_values).
+  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) const {
+    return furnace_values(estimate_path_radiance, albedo, depth, n, seed, block);
+  }
+
+  /// a4: every sample of the sky scene's size x size render (sky_values).
+  std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed) const {
+    return sky_values(estimate_path_radiance, size, depth, spp, seed);
+  }
+
+  /// a4: one furnace path from the centre along `direction` (furnace_path).
+  PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
+                         std::uint64_t stream) const {
+    return furnace_path(estimate_path_radiance, albedo, emission, direction, depth, seed, stream);
   }
 
   void stop() {}  // nothing runs apart from this process

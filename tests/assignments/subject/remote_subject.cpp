@@ -122,4 +122,31 @@ std::vector<double> RemoteSubject::pdf_values(SamplerKind kind, const std::vecto
   return answer;
 }
 
+std::vector<double> RemoteSubject::path_furnace(double albedo, int depth, int n, std::uint64_t seed,
+                                                std::uint64_t block) {
+  std::vector<double> answer = call(k_request_a4_furnace, {albedo, static_cast<double>(depth), static_cast<double>(n),
+                                                           as_number(seed), as_number(block)});
+  if (answer.size() != static_cast<std::size_t>(n))
+    broken(k_request_a4_furnace, fmt::format("{} numbers for {} paths", answer.size(), n));
+  return answer;
+}
+
+std::vector<double> RemoteSubject::path_sky(int size, int depth, int spp, std::uint64_t seed) {
+  std::vector<double> answer = call(k_request_a4_sky, {static_cast<double>(size), static_cast<double>(depth),
+                                                       static_cast<double>(spp), as_number(seed)});
+  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * static_cast<std::size_t>(spp);
+  if (answer.size() != expected)
+    broken(k_request_a4_sky, fmt::format("{} numbers for {} samples", answer.size(), expected));
+  return answer;
+}
+
+PathSample RemoteSubject::path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
+                                      std::uint64_t stream) {
+  const std::vector<double> answer =
+      call(k_request_a4_single, {albedo, emission, direction.x, direction.y, direction.z, static_cast<double>(depth),
+                                 as_number(seed), as_number(stream)});
+  if (answer.size() != 2 || !(answer[1] >= 0.0)) broken(k_request_a4_single, "not one radiance and one ray count");
+  return {answer[0], static_cast<std::uint64_t>(answer[1])};
+}
+
 }  // namespace mcrt::testing::assignment

@@ -12,6 +12,7 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ class RemoteSubject {
 
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u);
   std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points);
+  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block);
+  std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
+  PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
+                         std::uint64_t stream);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

@@ -26,6 +26,22 @@ SamplerKind sampler_kind(const std::vector<double>& params) {
   return static_cast<SamplerKind>(static_cast<int>(params[0]));
 }
 
+void need(const std::vector<double>& params, std::size_t count, const std::string& name) {
+  if (params.size() != count) throw std::invalid_argument(fmt::format("request {} takes {} numbers", name, count));
+}
+
+/// A whole number in [0, limit] (a depth, a size, a count).
+int whole(double x, int limit) {
+  if (!(x >= 0.0 && x <= limit) || x != static_cast<int>(x)) throw std::invalid_argument("a count out of range");
+  return static_cast<int>(x);
+}
+
+std::uint64_t seed(double x) {
+  if (!(x >= 0.0 && x < 0x1p53) || x != static_cast<double>(static_cast<std::uint64_t>(x)))
+    throw std::invalid_argument("a seed that is not a whole number below 2^53");
+  return static_cast<std::uint64_t>(x);
+}
+
 std::vector<double> answer(const LocalSubject& s, const std::string& name, const std::vector<double>& params) {
   if (name == k_request_a2_samples) {
     const SamplerKind kind = sampler_kind(params);
@@ -36,6 +52,20 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
   if (name == k_request_a2_pdf) {
     const SamplerKind kind = sampler_kind(params);
     return s.pdf_values(kind, unflatten3(params.data() + 1, params.size() - 1));
+  }
+  if (name == k_request_a4_furnace) {
+    need(params, 5, name);
+    return s.path_furnace(params[0], whole(params[1], 64), whole(params[2], 1 << 24), seed(params[3]), seed(params[4]));
+  }
+  if (name == k_request_a4_sky) {
+    need(params, 4, name);
+    return s.path_sky(whole(params[0], 1024), whole(params[1], 64), whole(params[2], 1 << 16), seed(params[3]));
+  }
+  if (name == k_request_a4_single) {
+    need(params, 8, name);
+    const PathSample p = s.path_single(params[0], params[1], {params[2], params[3], params[4]}, whole(params[5], 64),
+                                       seed(params[6]), seed(params[7]));
+    return {p.radiance, static_cast<double>(p.rays)};
   }
   throw std::invalid_argument(fmt::format("unknown request {}", name));
 }
