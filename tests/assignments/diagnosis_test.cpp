@@ -141,16 +141,32 @@ TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
   EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
+/// The student-side producer of a5 with one estimator replaced by a known-wrong one.
+template <class R>
+auto with_roulette(R roulette) {
+  return a5_producer(roulette, estimate_importance_path_radiance, estimate_nee_radiance);
+}
+
+template <class I>
+auto with_importance(I importance) {
+  return a5_producer(estimate_path_radiance_roulette, importance, estimate_nee_radiance);
+}
+
+template <class N>
+auto with_nee(N nee) {
+  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, nee);
+}
+
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
-  expect_diagnosis(check_roulette_furnace(roulette_without_division), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_without_division)), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
 }
 
 TEST_F(Diagnoses, A5RouletteBeforeTheEmission) {
-  expect_diagnosis(check_roulette_furnace(roulette_before_emission), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_before_emission)), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
 }
 
 TEST_F(Diagnoses, A5RouletteFromVertexZero) {
-  expect_diagnosis(check_roulette_furnace(roulette_from_depth_zero), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_from_depth_zero)), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
 }
 
 /// A known-wrong path tracer as a5.2's estimator: it ignores the pdf it is handed.
@@ -162,12 +178,12 @@ auto ignoring_the_pdf(Tracer tracer) {
 }
 
 TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
-  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi)),
+  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi))),
                    "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
 }
 
 TEST_F(Diagnoses, A5CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)),
+  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf))),
                    "the per-bounce weight averages 4a/3 and varies");
 }
 
@@ -180,33 +196,33 @@ auto with_path_end(Nee nee) {
 }
 
 TEST_F(Diagnoses, A5NeeEmissionTwice) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_emission_twice)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
                    "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
-  EXPECT_FALSE(check_nee_regions(with_path_end(nee_emission_twice)).passed);
+  EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_emission_twice))).passed);
 }
 
 TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_without_jacobian)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_jacobian))),
                    "direct light is 2.70x and varies from path to path; every light sample here should give exactly a Le: is p_A converted to solid angle");
-  EXPECT_FALSE(check_nee_regions(with_path_end(nee_without_jacobian)).passed);
+  EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_without_jacobian))).passed);
 }
 
 TEST_F(Diagnoses, A5NeeCapOnly) {
-  expect_diagnosis(check_nee_light_beyond_cap(with_path_end(nee_cap_only)),
+  expect_diagnosis(check_nee_light_beyond_cap(with_nee(with_path_end(nee_cap_only))),
                    "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutOneOverNLights) {
   // one light: nothing to see; two: the diagnosis names the 1/N
-  EXPECT_TRUE(check_nee_regions(with_path_end(nee_without_one_over_n_lights)).passed);
-  const TaskResult r = check_nee_two_lights(with_path_end(nee_without_one_over_n_lights));
+  EXPECT_TRUE(check_nee_regions(with_nee(with_path_end(nee_without_one_over_n_lights))).passed);
+  const TaskResult r = check_nee_two_lights(with_nee(with_path_end(nee_without_one_over_n_lights)));
   EXPECT_FALSE(r.passed) << r.message;
   EXPECT_NE(r.message.find("DIAGNOSIS: region"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("does the light sample's pdf include the 1/N_lights"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_shadow_ray_hits_light)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_shadow_ray_hits_light))),
                    "direct light is 0.00x: almost no shadow ray reaches the light");
 }
 

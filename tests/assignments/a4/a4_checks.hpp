@@ -91,24 +91,12 @@ TaskResult check_reference_regions(Sky&& sky) {
   const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
     return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);
   };
-  // the student's samples, added per region in region_stats's order
-  const auto student_stats = [&](std::uint64_t seed) {
-    const std::vector<double> values = sky(k, spp, seed);
-    Stats stats;
-    std::size_t i = 0;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x)
-        for (int s = 0; s < spp; ++s, ++i)
-          stats[static_cast<std::size_t>((y / region) * regions + x / region)].add(
-              i < values.size() ? values[i] : std::nan(""));
-    return stats;
-  };
   int worst = 0;
   double worst_z = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
     // A reference of its own per seed: the three verdicts stay independent.
     const Stats reference = collect(reference_tracer, 1024, seed ^ 0x5eedULL);
-    const Stats student = student_stats(seed);
+    const Stats student = stats_by_region<size, region>(sky(k, spp, seed), spp);
     double p_min = 1.0;
     for (int r = 0; r < regions * regions; ++r) {
       const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];

@@ -5,6 +5,7 @@
 // on known-wrong tracers. No test and no verdict here: the subject program includes it.
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +66,21 @@ std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
         stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(
             average(estimate(ray, rng, count)));
       }
+  return stats;
+}
+
+/// Region statistics of per-sample values listed in region_stats's order (rows, pixels,
+/// samples), added in that order so that they equal region_stats's; a missing value is NaN.
+template <int Size, int Region>
+std::array<RunningStats, (Size / Region) * (Size / Region)> stats_by_region(const std::vector<double>& values, int spp) {
+  constexpr int regions = Size / Region;
+  std::array<RunningStats, regions * regions> stats;
+  std::size_t i = 0;
+  for (int y = 0; y < Size; ++y)
+    for (int x = 0; x < Size; ++x)
+      for (int s = 0; s < spp; ++s, ++i)
+        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(i < values.size() ? values[i]
+                                                                                                   : std::nan(""));
   return stats;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "assignments/a4/a4_produce.hpp"
+#include "assignments/a5/a5_produce.hpp"
 #include "assignments/subject/requests.hpp"
 #include "render/path_tracer.hpp"
 #include "sampling/hemisphere.hpp"
@@ -15,6 +16,11 @@
 #include "sampling/sphere.hpp"
 
 namespace mcrt::testing::assignment {
+
+/// a5's producer with the student's three estimators.
+inline auto student_a5() {
+  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, estimate_nee_radiance);
+}
 
 struct LocalSubject {
   /// a2: the sampler `kind` at each u (a disk point with z = 0).
@@ -62,6 +68,20 @@ struct LocalSubject {
                          std::uint64_t stream) const {
     return furnace_path(estimate_path_radiance, albedo, emission, direction, depth, seed, stream);
   }
+
+  /// a5: the estimator `e` names, run by A5Producer with the student's three estimators.
+  std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
+                                    std::uint64_t block) const {
+    return student_a5().a5_paths(e, albedo, n, seed, block);
+  }
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
+                       std::uint64_t stream) const {
+    return student_a5().a5_single(e, albedo, emission, direction, seed, stream);
+  }
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed) const {
+    return student_a5().a5_regions(e, lamp_parts, size, spp, seed);
+  }
+  std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed) const { return student_a5().a5_wall(e, n, seed); }
 
   void stop() {}  // nothing runs apart from this process
 };

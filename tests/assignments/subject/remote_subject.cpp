@@ -149,4 +149,54 @@ PathSample RemoteSubject::path_single(double albedo, double emission, Vec3 direc
   return {answer[0], static_cast<std::uint64_t>(answer[1])};
 }
 
+std::vector<FurnacePath> RemoteSubject::a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
+                                                 std::uint64_t block) {
+  std::vector<double> params;
+  append(params, e);
+  params.insert(params.end(), {albedo, static_cast<double>(n), as_number(seed), as_number(block)});
+  const std::vector<double> answer = call(k_request_a5_paths, params);
+  if (answer.size() != 2 * static_cast<std::size_t>(n))
+    broken(k_request_a5_paths, fmt::format("{} numbers for {} paths", answer.size(), n));
+  std::vector<FurnacePath> paths(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (!(answer[2 * i + 1] >= 0.0 && answer[2 * i + 1] < 0x1p53)) broken(k_request_a5_paths, "a ray count out of range");
+    paths[i] = {answer[2 * i], static_cast<std::uint64_t>(answer[2 * i + 1])};
+  }
+  return paths;
+}
+
+PathSample RemoteSubject::a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction,
+                                    std::uint64_t seed, std::uint64_t stream) {
+  std::vector<double> params;
+  append(params, e);
+  params.insert(params.end(), {albedo, emission, direction.x, direction.y, direction.z, as_number(seed), as_number(stream)});
+  const std::vector<double> answer = call(k_request_a5_single, params);
+  if (answer.size() != 2 || !(answer[1] >= 0.0 && answer[1] < 0x1p53))
+    broken(k_request_a5_single, "not one radiance and one ray count");
+  return {answer[0], static_cast<std::uint64_t>(answer[1])};
+}
+
+std::vector<double> RemoteSubject::a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp,
+                                              std::uint64_t seed) {
+  std::vector<double> params;
+  append(params, e);
+  params.insert(params.end(), {static_cast<double>(lamp_parts), static_cast<double>(size), static_cast<double>(spp),
+                               as_number(seed)});
+  std::vector<double> answer = call(k_request_a5_regions, params);
+  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * static_cast<std::size_t>(spp);
+  if (answer.size() != expected)
+    broken(k_request_a5_regions, fmt::format("{} numbers for {} samples", answer.size(), expected));
+  return answer;
+}
+
+std::vector<double> RemoteSubject::a5_wall(const A5Estimator& e, int n, std::uint64_t seed) {
+  std::vector<double> params;
+  append(params, e);
+  params.insert(params.end(), {static_cast<double>(n), as_number(seed)});
+  std::vector<double> answer = call(k_request_a5_wall, params);
+  if (answer.size() != static_cast<std::size_t>(n))
+    broken(k_request_a5_wall, fmt::format("{} numbers for {} rays", answer.size(), n));
+  return answer;
+}
+
 }  // namespace mcrt::testing::assignment

@@ -19,6 +19,7 @@
 
 #include "assignments/subject/protocol.hpp"
 #include "assignments/subject/requests.hpp"
+#include "render/russian_roulette.hpp"  // FurnacePath (the checker's tree: the instructor's file)
 
 namespace mcrt::testing::assignment {
 
@@ -39,6 +40,11 @@ class RemoteSubject {
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
                          std::uint64_t stream);
+  std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed, std::uint64_t block);
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
+                       std::uint64_t stream);
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed);
+  std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

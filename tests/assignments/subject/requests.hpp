@@ -26,6 +26,32 @@ struct PathSample {
   std::uint64_t rays = 0;
 };
 
+/// One of a5's estimators and its parameters, as numbers (a5_produce.hpp converts them).
+struct A5Estimator {
+  enum Kind { roulette, importance, nee };
+  Kind kind = roulette;
+  int min_depth = 0;   ///< roulette, nee: the Roulette
+  int policy = 0;
+  double q = 0.0;
+  double floor = 0.0;
+  int max_depth = -1;  ///< importance, nee
+  int pdf_kind = 0;    ///< importance: the HemispherePdf
+  int pdf_m = 0;
+};
+
+inline constexpr std::size_t k_a5_estimator_numbers = 8;
+
+inline void append(std::vector<double>& out, const A5Estimator& e) {
+  out.insert(out.end(), {static_cast<double>(e.kind), static_cast<double>(e.min_depth), static_cast<double>(e.policy),
+                         e.q, e.floor, static_cast<double>(e.max_depth), static_cast<double>(e.pdf_kind),
+                         static_cast<double>(e.pdf_m)});
+}
+
+inline constexpr const char* k_request_a5_paths = "a5_paths";
+inline constexpr const char* k_request_a5_single = "a5_single";
+inline constexpr const char* k_request_a5_regions = "a5_regions";
+inline constexpr const char* k_request_a5_wall = "a5_wall";
+
 /// A seed, block or count sent as a double: exact below 2^53, which every request stays under.
 inline double as_number(std::uint64_t x) { return static_cast<double>(x); }
 

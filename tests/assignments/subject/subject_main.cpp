@@ -36,6 +36,25 @@ int whole(double x, int limit) {
   return static_cast<int>(x);
 }
 
+void need_rest(std::size_t count, std::size_t wanted, const std::string& name) {
+  if (count != wanted) throw std::invalid_argument(fmt::format("request {} takes {} numbers after its estimator", name, wanted));
+}
+
+/// The A5Estimator that heads an a5 request (its kind, policy and pdf kind in range).
+A5Estimator a5_estimator(const std::vector<double>& params) {
+  if (params.size() < k_a5_estimator_numbers) throw std::invalid_argument("an a5 request without its estimator");
+  A5Estimator e;
+  e.kind = static_cast<A5Estimator::Kind>(whole(params[0], 2));
+  e.min_depth = whole(params[1], 1 << 20);
+  e.policy = whole(params[2], 1);
+  e.q = params[3];
+  e.floor = params[4];
+  e.max_depth = params[5] == -1.0 ? -1 : whole(params[5], 1 << 20);
+  e.pdf_kind = whole(params[6], 3);
+  e.pdf_m = whole(params[7], 1 << 10);
+  return e;
+}
+
 std::uint64_t seed(double x) {
   if (!(x >= 0.0 && x < 0x1p53) || x != static_cast<double>(static_cast<std::uint64_t>(x)))
     throw std::invalid_argument("a seed that is not a whole number below 2^53");
@@ -66,6 +85,30 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     const PathSample p = s.path_single(params[0], params[1], {params[2], params[3], params[4]}, whole(params[5], 64),
                                        seed(params[6]), seed(params[7]));
     return {p.radiance, static_cast<double>(p.rays)};
+  }
+  if (name == k_request_a5_paths || name == k_request_a5_single || name == k_request_a5_regions ||
+      name == k_request_a5_wall) {
+    const A5Estimator e = a5_estimator(params);
+    const double* rest = params.data() + k_a5_estimator_numbers;
+    const std::size_t count = params.size() - k_a5_estimator_numbers;
+    if (name == k_request_a5_paths) {
+      need_rest(count, 4, name);
+      std::vector<double> out;
+      for (const FurnacePath& p : s.a5_paths(e, rest[0], whole(rest[1], 1 << 24), seed(rest[2]), seed(rest[3])))
+        out.insert(out.end(), {p.radiance, static_cast<double>(p.rays)});
+      return out;
+    }
+    if (name == k_request_a5_single) {
+      need_rest(count, 7, name);
+      const PathSample p = s.a5_single(e, rest[0], rest[1], {rest[2], rest[3], rest[4]}, seed(rest[5]), seed(rest[6]));
+      return {p.radiance, static_cast<double>(p.rays)};
+    }
+    if (name == k_request_a5_regions) {
+      need_rest(count, 4, name);
+      return s.a5_regions(e, whole(rest[0], 16), whole(rest[1], 1024), whole(rest[2], 1 << 16), seed(rest[3]));
+    }
+    need_rest(count, 2, name);
+    return s.a5_wall(e, whole(rest[0], 1 << 24), seed(rest[1]));
   }
   throw std::invalid_argument(fmt::format("unknown request {}", name));
 }
