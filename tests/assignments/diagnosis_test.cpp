@@ -110,21 +110,21 @@ TEST_F(Diagnoses, A2PdfsOffByTwo) {
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceLate) {
-  expect_diagnosis(check_ray_counts(incident_radiance_one_bounce_late), "ray count is N^(k+1)");
-  expect_diagnosis(check_recursive_furnace(incident_radiance_one_bounce_late), "your mean is that of depth k + 1");
+  expect_diagnosis(check_ray_counts(a3_producer(incident_radiance_one_bounce_late)), "ray count is N^(k+1)");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_bounce_late)), "your mean is that of depth k + 1");
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
-  const TaskResult r = check_ray_counts(incident_radiance_one_bounce_early);
+  const TaskResult r = check_ray_counts(a3_producer(incident_radiance_one_bounce_early));
   EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A3WithoutOneOverN) {
-  expect_diagnosis(check_recursive_furnace(incident_radiance_without_one_over_n), "each level weighs N a instead of a");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_without_one_over_n)), "each level weighs N a instead of a");
 }
 
 TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
-  expect_diagnosis(check_recursive_furnace(incident_radiance_one_shared_direction),
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_shared_direction)),
                    "the mean is right but the variance is");
 }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "assignments/a3/a3_produce.hpp"
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/a5/a5_produce.hpp"
 #include "assignments/subject/requests.hpp"
@@ -51,6 +52,18 @@ struct LocalSubject {
       }
     }
     return out;
+  }
+
+  /// a3: one call of incident_radiance (A3Producer::recursive_single).
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
+                              std::uint64_t seed, std::uint64_t stream) const {
+    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  }
+
+  /// a3: furnace samples of incident_radiance (A3Producer::recursive_furnace).
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
+                                        std::uint64_t block) const {
+    return a3_producer(incident_radiance).recursive_furnace(albedo, n, k, samples, seed, block);
   }
 
   /// a4: n furnace paths of estimate_path_radiance (furnace_values).

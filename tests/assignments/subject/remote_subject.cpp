@@ -122,6 +122,25 @@ std::vector<double> RemoteSubject::pdf_values(SamplerKind kind, const std::vecto
   return answer;
 }
 
+PathSample RemoteSubject::recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
+                                           std::uint64_t seed, std::uint64_t stream) {
+  const std::vector<double> answer =
+      call(k_request_a3_single, {albedo, emission, origin.x, origin.y, origin.z, direction.x, direction.y, direction.z,
+                                 static_cast<double>(n), static_cast<double>(k), as_number(seed), as_number(stream)});
+  if (answer.size() != 2 || !(answer[1] >= 0.0 && answer[1] < 0x1p53))
+    broken(k_request_a3_single, "not one radiance and one ray count");
+  return {answer[0], static_cast<std::uint64_t>(answer[1])};
+}
+
+std::vector<double> RemoteSubject::recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
+                                                     std::uint64_t block) {
+  std::vector<double> answer = call(k_request_a3_furnace, {albedo, static_cast<double>(n), static_cast<double>(k),
+                                                           static_cast<double>(samples), as_number(seed), as_number(block)});
+  if (answer.size() != static_cast<std::size_t>(samples))
+    broken(k_request_a3_furnace, fmt::format("{} numbers for {} samples", answer.size(), samples));
+  return answer;
+}
+
 std::vector<double> RemoteSubject::path_furnace(double albedo, int depth, int n, std::uint64_t seed,
                                                 std::uint64_t block) {
   std::vector<double> answer = call(k_request_a4_furnace, {albedo, static_cast<double>(depth), static_cast<double>(n),

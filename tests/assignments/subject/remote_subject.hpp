@@ -36,6 +36,10 @@ class RemoteSubject {
 
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u);
   std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points);
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
+                              std::uint64_t seed, std::uint64_t stream);
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
+                                        std::uint64_t block);
   std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block);
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,

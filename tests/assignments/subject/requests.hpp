@@ -16,6 +16,8 @@ enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, 
 /// Request names, as they travel in frames.
 inline constexpr const char* k_request_a2_samples = "a2_samples";
 inline constexpr const char* k_request_a2_pdf = "a2_pdf";
+inline constexpr const char* k_request_a3_single = "a3_single";
+inline constexpr const char* k_request_a3_furnace = "a3_furnace";
 inline constexpr const char* k_request_a4_furnace = "a4_furnace";
 inline constexpr const char* k_request_a4_sky = "a4_sky";
 inline constexpr const char* k_request_a4_single = "a4_single";

@@ -72,6 +72,18 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     const SamplerKind kind = sampler_kind(params);
     return s.pdf_values(kind, unflatten3(params.data() + 1, params.size() - 1));
   }
+  if (name == k_request_a3_single) {
+    need(params, 12, name);
+    const PathSample p = s.recursive_single(params[0], params[1], {params[2], params[3], params[4]},
+                                            {params[5], params[6], params[7]}, whole(params[8], 64),
+                                            whole(params[9], 16), seed(params[10]), seed(params[11]));
+    return {p.radiance, static_cast<double>(p.rays)};
+  }
+  if (name == k_request_a3_furnace) {
+    need(params, 6, name);
+    return s.recursive_furnace(params[0], whole(params[1], 64), whole(params[2], 16), whole(params[3], 1 << 24),
+                               seed(params[4]), seed(params[5]));
+  }
   if (name == k_request_a4_furnace) {
     need(params, 5, name);
     return s.path_furnace(params[0], whole(params[1], 64), whole(params[2], 1 << 24), seed(params[3]), seed(params[4]));
