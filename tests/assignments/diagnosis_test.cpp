@@ -38,31 +38,51 @@ TEST_F(Diagnoses, FalseFailureRateIsBelowOneInAMillion) {
   EXPECT_LT(majority_false_failure_rate(), 1e-6);
 }
 
+/// a1's producer with the student's functions (LocalSubject's) but one replaced.
+auto student_disk() { return [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); }; }
+auto student_ball() { return [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); }; }
+auto student_count() { return [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); }; }
+auto student_basic() {
+  return [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); };
+}
+auto student_rule() { return [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); }; }
+
+template <class D>
+auto with_disk(D d) { return a1_producer(d, student_ball(), student_count(), student_basic(), student_rule()); }
+template <class B>
+auto with_ball(B b) { return a1_producer(student_disk(), b, student_count(), student_basic(), student_rule()); }
+template <class B>
+auto with_basic(B b) { return a1_producer(student_disk(), student_ball(), student_count(), b, student_rule()); }
+template <class R>
+auto with_rule(R r) { return a1_producer(student_disk(), student_ball(), student_count(), student_basic(), r); }
+
 TEST_F(Diagnoses, A1DiskWithoutTheFactorFour) {
-  expect_diagnosis(check_disk_estimator([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; }),
+  expect_diagnosis(check_disk_estimator(with_disk([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; })),
                    "your estimate is about pi/4: you forgot the factor 4");
 }
 
 TEST_F(Diagnoses, A1DiskWithYEqualToX) {
-  expect_diagnosis(check_disk_estimator(disk_area_same_coordinate_twice), "your estimate is 4/sqrt(2)");
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_same_coordinate_twice)), "your estimate is 4/sqrt(2)");
 }
 
 TEST_F(Diagnoses, A1BallHalfScale) {
-  expect_diagnosis(check_ball_estimator([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }, {3}),
+  expect_diagnosis(check_ball_estimator(with_ball([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }), {3}),
                    "your volume is half of V_k");
 }
 
 TEST_F(Diagnoses, A1MonteCarloWithoutTheLength) {
-  expect_diagnosis(check_basic_estimator([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
                      MonteCarloEstimate e = monte_carlo(f, s, n, rng);
                      e.estimate = monte_carlo_without_volume(f, s, n, rng);
                      return e;
-                   }),
+                   })),
                    "your mean is 0.33x the expected value: is the length (b - a)");
 }
 
 TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
-  expect_diagnosis(check_trapezoid([](std::uint64_t n) { return trapezoid_with_full_end_weights(Gaussian1D{}, n); }),
+  expect_diagnosis(check_trapezoid(with_rule([](const auto&, const Segment&, std::uint64_t n) {
+                     return trapezoid_with_full_end_weights(Gaussian1D{}, n);
+                   })),
                    "your error falls as h, not h^2");
 }
 

@@ -7,10 +7,14 @@
 #include <stdexcept>
 #include <vector>
 
+#include "assignments/a1/a1_produce.hpp"
 #include "assignments/a3/a3_produce.hpp"
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/a5/a5_produce.hpp"
 #include "assignments/subject/requests.hpp"
+#include "integration/disk_area.hpp"
+#include "integration/monte_carlo.hpp"
+#include "integration/quadrature.hpp"
 #include "render/path_tracer.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/plane.hpp"
@@ -18,12 +22,41 @@
 
 namespace mcrt::testing::assignment {
 
+/// a1's producer with the student's functions.
+inline auto student_a1() {
+  return a1_producer([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); },
+                     [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); },
+                     [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); },
+                     [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); },
+                     [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); });
+}
+
 /// a5's producer with the student's three estimators.
 inline auto student_a5() {
   return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, estimate_nee_radiance);
 }
 
 struct LocalSubject {
+  /// a1: the student's estimators, each from Rng(seed, stream) (A1Producer), and the answers file.
+  double a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream) const {
+    return student_a1().a1_disk(n, seed, stream);
+  }
+  double a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream) const {
+    return student_a1().a1_ball(k, n, seed, stream);
+  }
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
+                                            std::uint64_t stream) const {
+    return student_a1().a1_ball_counts(calls, seed, stream);
+  }
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
+                                  std::uint64_t stream) const {
+    return student_a1().a1_monte_carlo(f, param, s, n, seed, stream);
+  }
+  double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) const {
+    return student_a1().a1_trapezoid(f, param, s, n);
+  }
+  A1AnswerFile a1_answers() const { return read_a1_answers(MCRT_A1_ANSWERS); }
+
   /// a2: the sampler `kind` at each u (a disk point with z = 0).
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u) const {
     std::vector<Vec3> out;

@@ -102,6 +102,59 @@ std::vector<double> RemoteSubject::call(const std::string& name, const std::vect
   return std::move(frame.values);
 }
 
+double RemoteSubject::a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream) {
+  const std::vector<double> answer = call(k_request_a1_disk, {as_number(n), as_number(seed), as_number(stream)});
+  if (answer.size() != 1) broken(k_request_a1_disk, "not one estimate");
+  return answer[0];
+}
+
+double RemoteSubject::a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream) {
+  const std::vector<double> answer =
+      call(k_request_a1_ball, {static_cast<double>(k), as_number(n), as_number(seed), as_number(stream)});
+  if (answer.size() != 1) broken(k_request_a1_ball, "not one estimate");
+  return answer[0];
+}
+
+std::vector<std::uint64_t> RemoteSubject::a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls,
+                                                         std::uint64_t seed, std::uint64_t stream) {
+  std::vector<double> params{as_number(seed), as_number(stream)};
+  for (const auto& [k, n] : calls) params.insert(params.end(), {as_number(k), as_number(n)});
+  const std::vector<double> answer = call(k_request_a1_ball_counts, params);
+  if (answer.size() != calls.size()) broken(k_request_a1_ball_counts, "not one count per call");
+  std::vector<std::uint64_t> counts;
+  for (double c : answer) {
+    if (!(c >= 0.0 && c < 0x1p53)) broken(k_request_a1_ball_counts, "a count out of range");
+    counts.push_back(static_cast<std::uint64_t>(c));
+  }
+  return counts;
+}
+
+EstimateAndError RemoteSubject::a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
+                                               std::uint64_t seed, std::uint64_t stream) {
+  const std::vector<double> answer = call(k_request_a1_monte_carlo, {static_cast<double>(f), param, s.lower, s.upper, as_number(n),
+                                                                     as_number(seed), as_number(stream)});
+  if (answer.size() != 2) broken(k_request_a1_monte_carlo, "not an estimate and its standard error");
+  return {answer[0], answer[1]};
+}
+
+double RemoteSubject::a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) {
+  const std::vector<double> answer =
+      call(k_request_a1_trapezoid, {static_cast<double>(f), param, s.lower, s.upper, as_number(n)});
+  if (answer.size() != 1) broken(k_request_a1_trapezoid, "not one value");
+  return answer[0];
+}
+
+A1AnswerFile RemoteSubject::a1_answers() {
+  const std::vector<double> answer = call(k_request_a1_answers, {});
+  if (answer.size() != 2 + 2 * 5) broken(k_request_a1_answers, "not the answers file's 12 numbers");
+  A1AnswerFile a;
+  a.readable = answer[0] != 0.0;
+  a.valid = answer[1] != 0.0;
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    if (answer[2 + 2 * i] != 0.0) a.values[i] = answer[3 + 2 * i];
+  return a;
+}
+
 std::vector<Vec3> RemoteSubject::samples(SamplerKind kind, const std::vector<Vec2>& u) {
   std::vector<double> params{static_cast<double>(kind)};
   params.reserve(1 + 2 * u.size());

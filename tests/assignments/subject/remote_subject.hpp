@@ -34,6 +34,14 @@ class RemoteSubject {
   RemoteSubject& operator=(const RemoteSubject&) = delete;
   ~RemoteSubject() { stop(); }
 
+  double a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream);
+  double a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream);
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
+                                            std::uint64_t stream);
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
+                                  std::uint64_t stream);
+  double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n);
+  A1AnswerFile a1_answers();
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u);
   std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points);
   PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,

@@ -55,6 +55,11 @@ A5Estimator a5_estimator(const std::vector<double>& params) {
   return e;
 }
 
+/// A sample count (at most 2^30: a1's largest is 2e5).
+std::uint64_t count(double x) { return static_cast<std::uint64_t>(whole(x, 1 << 30)); }
+
+A1Integrand integrand(double x) { return static_cast<A1Integrand>(whole(x, 3)); }
+
 std::uint64_t seed(double x) {
   if (!(x >= 0.0 && x < 0x1p53) || x != static_cast<double>(static_cast<std::uint64_t>(x)))
     throw std::invalid_argument("a seed that is not a whole number below 2^53");
@@ -62,6 +67,39 @@ std::uint64_t seed(double x) {
 }
 
 std::vector<double> answer(const LocalSubject& s, const std::string& name, const std::vector<double>& params) {
+  if (name == k_request_a1_disk) {
+    need(params, 3, name);
+    return {s.a1_disk(count(params[0]), seed(params[1]), seed(params[2]))};
+  }
+  if (name == k_request_a1_ball) {
+    need(params, 4, name);
+    return {s.a1_ball(whole(params[0], 64), count(params[1]), seed(params[2]), seed(params[3]))};
+  }
+  if (name == k_request_a1_ball_counts) {
+    if (params.size() < 2 || params.size() % 2 != 0) throw std::invalid_argument("a1_ball_counts takes pairs");
+    std::vector<std::array<std::uint64_t, 2>> calls;
+    for (std::size_t i = 2; i < params.size(); i += 2)
+      calls.push_back({static_cast<std::uint64_t>(whole(params[i], 64)), count(params[i + 1])});
+    std::vector<double> out;
+    for (std::uint64_t c : s.a1_ball_counts(calls, seed(params[0]), seed(params[1]))) out.push_back(static_cast<double>(c));
+    return out;
+  }
+  if (name == k_request_a1_monte_carlo) {
+    need(params, 7, name);
+    const EstimateAndError e = s.a1_monte_carlo(integrand(params[0]), params[1], Segment{params[2], params[3]},
+                                                count(params[4]), seed(params[5]), seed(params[6]));
+    return {e.estimate, e.standard_error};
+  }
+  if (name == k_request_a1_trapezoid) {
+    need(params, 5, name);
+    return {s.a1_trapezoid(integrand(params[0]), params[1], Segment{params[2], params[3]}, count(params[4]))};
+  }
+  if (name == k_request_a1_answers) {
+    const A1AnswerFile a = s.a1_answers();
+    std::vector<double> out{a.readable ? 1.0 : 0.0, a.valid ? 1.0 : 0.0};
+    for (const auto& v : a.values) out.insert(out.end(), {v ? 1.0 : 0.0, v.value_or(0.0)});
+    return out;
+  }
   if (name == k_request_a2_samples) {
     const SamplerKind kind = sampler_kind(params);
     std::vector<Vec2> u;
