@@ -1,4 +1,5 @@
-// A subject program that misbehaves as $MCRT_FAKE_MODE says, for protocol_test.cpp: what a
+// A subject program that misbehaves as its name says (protocol_test.cpp runs it through a link
+// named for the mode: the subject's environment is cleared), for protocol_test.cpp: what a
 // student's code could do to the subject (print frames of its own, end mid-request, hang,
 // leave a process behind) must fail the request with a message naming it, never pass as an
 // answer.
@@ -10,6 +11,7 @@
 //   hang     never answers
 //   error    answers "error" with a message
 //   child    answers with the pid of a child it leaves sleeping in its process group
+//   env      answers 1 if it can see where the checker's reports go (GTEST_OUTPUT), else 0
 
 #include <signal.h>
 #include <unistd.h>
@@ -22,9 +24,9 @@
 
 using namespace mcrt::testing::assignment;
 
-int main() {
-  const char* mode_env = std::getenv("MCRT_FAKE_MODE");
-  const std::string mode = mode_env != nullptr ? mode_env : "echo";
+int main(int, char** argv) {
+  const std::string name = argv[0];
+  const std::string mode = name.substr(name.rfind('/') + 1);
   FrameReader in(STDIN_FILENO);
   std::string token, problem;
   if (!in.read_line(token, k_max_header_bytes, -1.0, problem)) return 1;
@@ -50,6 +52,8 @@ int main() {
       pause();
     } else if (mode == "error") {
       write_error_frame(STDOUT_FILENO, token, "not implemented: a2.1 sample_uniform_hemisphere");
+    } else if (mode == "env") {
+      write_frame(STDOUT_FILENO, token, "ok", {std::getenv("GTEST_OUTPUT") != nullptr ? 1.0 : 0.0});
     } else if (mode == "child") {
       const pid_t child = fork();
       if (child == 0) {

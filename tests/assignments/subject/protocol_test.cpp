@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -19,10 +21,26 @@
 namespace mcrt::testing::assignment {
 namespace {
 
+/// Points $MCRT_SUBJECT at the fake subject through a link named `mode` (its name is its mode).
+void use_fake(const char* mode) {
+  struct Folder {  // removed when the test program ends
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("mcrt-fake-subject-" + std::to_string(::getpid()));
+    Folder() { std::filesystem::create_directories(path); }
+    ~Folder() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  const std::filesystem::path link = folder.path / mode;
+  if (!std::filesystem::exists(link)) std::filesystem::create_symlink(MCRT_FAKE_SUBJECT, link);
+  ::setenv("MCRT_SUBJECT", link.c_str(), 1);
+}
+
 /// The message of the exception request `name` throws in `mode`, or "" if it answered.
 std::string failure_of(const char* mode, std::vector<double>* answer = nullptr) {
-  ::setenv("MCRT_SUBJECT", MCRT_FAKE_SUBJECT, 1);
-  ::setenv("MCRT_FAKE_MODE", mode, 1);
+  use_fake(mode);
   ::setenv("MCRT_SUBJECT_ANSWER_SECONDS", "1", 1);  // the hang's test: 1 s, not 50
   RemoteSubject subject;
   try {
@@ -60,6 +78,14 @@ TEST(SubjectProtocol, AnErrorAnswerCarriesItsMessage) {
   EXPECT_EQ(failure_of("error"), "not implemented: a2.1 sample_uniform_hemisphere");
 }
 
+TEST(SubjectProtocol, TheSubjectDoesNotLearnWhereTheReportsGo) {
+  ::setenv("GTEST_OUTPUT", "xml:/tmp/reports/", 1);
+  std::vector<double> answer;
+  EXPECT_EQ(failure_of("env", &answer), "");
+  EXPECT_EQ(answer, std::vector<double>{0.0}) << "GTEST_OUTPUT reached the subject's environment";
+  ::unsetenv("GTEST_OUTPUT");
+}
+
 /// Whether process `pid` still runs (a zombie does not).
 bool running(pid_t pid) {
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
@@ -70,8 +96,7 @@ bool running(pid_t pid) {
 }
 
 TEST(SubjectProtocol, StopKillsWhatTheSubjectLeftInItsGroup) {
-  ::setenv("MCRT_SUBJECT", MCRT_FAKE_SUBJECT, 1);
-  ::setenv("MCRT_FAKE_MODE", "child", 1);
+  use_fake("child");
   RemoteSubject subject;
   const std::vector<double> answer = subject.call("a2_samples", {});
   ASSERT_EQ(answer.size(), 1u);

@@ -56,7 +56,12 @@ void RemoteSubject::start() {
     if (!launcher_makes_group) ::setpgid(0, 0);
     ::dup2(requests[0], STDIN_FILENO);
     ::dup2(answers[1], STDOUT_FILENO);
-    ::execv(argv[0], argv.data());
+    // nothing of the checker's environment but PATH: not where its reports go (GTEST_OUTPUT,
+    // MCRT_TEST_REPORT_DIR), nor the subject's own path
+    const char* path = std::getenv("PATH");
+    std::string path_entry = std::string("PATH=") + (path != nullptr ? path : "/usr/bin:/bin");
+    char* environment[] = {path_entry.data(), nullptr};
+    ::execve(argv[0], argv.data(), environment);
     const std::string message = fmt::format("checker: cannot run {}: {}\n", argv[0], std::strerror(errno));
     (void)!::write(STDERR_FILENO, message.data(), message.size());
     ::_exit(127);
