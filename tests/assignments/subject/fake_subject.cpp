@@ -57,6 +57,8 @@ int main(int, char** argv) {
     } else if (mode == "child") {
       const pid_t child = fork();
       if (child == 0) {
+        // no descriptor of the checker's or the test runner's: a regression fails, not hangs
+        for (int fd = 0; fd < 3; ++fd) close(fd);
         for (;;) pause();
       }
       write_frame(STDOUT_FILENO, token, "ok", {static_cast<double>(child)});
