@@ -9,6 +9,7 @@
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/subject/subject.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
 #include "known_bugs/estimators.hpp"
@@ -37,31 +38,51 @@ TEST_F(Diagnoses, FalseFailureRateIsBelowOneInAMillion) {
   EXPECT_LT(majority_false_failure_rate(), 1e-6);
 }
 
+/// a1's producer with the student's functions (LocalSubject's) but one replaced.
+auto student_disk() { return [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); }; }
+auto student_ball() { return [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); }; }
+auto student_count() { return [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); }; }
+auto student_basic() {
+  return [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); };
+}
+auto student_rule() { return [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); }; }
+
+template <class D>
+auto with_disk(D d) { return a1_producer(d, student_ball(), student_count(), student_basic(), student_rule()); }
+template <class B>
+auto with_ball(B b) { return a1_producer(student_disk(), b, student_count(), student_basic(), student_rule()); }
+template <class B>
+auto with_basic(B b) { return a1_producer(student_disk(), student_ball(), student_count(), b, student_rule()); }
+template <class R>
+auto with_rule(R r) { return a1_producer(student_disk(), student_ball(), student_count(), student_basic(), r); }
+
 TEST_F(Diagnoses, A1DiskWithoutTheFactorFour) {
-  expect_diagnosis(check_disk_estimator([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; }),
+  expect_diagnosis(check_disk_estimator(with_disk([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; })),
                    "your estimate is about pi/4: you forgot the factor 4");
 }
 
 TEST_F(Diagnoses, A1DiskWithYEqualToX) {
-  expect_diagnosis(check_disk_estimator(disk_area_same_coordinate_twice), "your estimate is 4/sqrt(2)");
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_same_coordinate_twice)), "your estimate is 4/sqrt(2)");
 }
 
 TEST_F(Diagnoses, A1BallHalfScale) {
-  expect_diagnosis(check_ball_estimator([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }, {3}),
+  expect_diagnosis(check_ball_estimator(with_ball([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }), {3}),
                    "your volume is half of V_k");
 }
 
 TEST_F(Diagnoses, A1MonteCarloWithoutTheLength) {
-  expect_diagnosis(check_basic_estimator([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
                      MonteCarloEstimate e = monte_carlo(f, s, n, rng);
                      e.estimate = monte_carlo_without_volume(f, s, n, rng);
                      return e;
-                   }),
+                   })),
                    "your mean is 0.33x the expected value: is the length (b - a)");
 }
 
 TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
-  expect_diagnosis(check_trapezoid([](std::uint64_t n) { return trapezoid_with_full_end_weights(Gaussian1D{}, n); }),
+  expect_diagnosis(check_trapezoid(with_rule([](const auto&, const Segment&, std::uint64_t n) {
+                     return trapezoid_with_full_end_weights(Gaussian1D{}, n);
+                   })),
                    "your error falls as h, not h^2");
 }
 
@@ -70,19 +91,19 @@ double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 double disk_density(const Vec2&) { return uniform_disk_pdf(); }
 
 TEST_F(Diagnoses, A2UniformHemisphereThatIsCosine) {
-  expect_diagnosis(check_sampler(sample_cosine_hemisphere, uniform_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(uniform_density), sampler_hemisphere_binning(),
                                  SamplerKind::uniform_hemisphere, "diagnosis_cosine_as_uniform"),
                    "observed/expected ~ 2 cos(theta): your samples look cosine-distributed");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereThatIsUniform) {
-  expect_diagnosis(check_sampler(sample_uniform_hemisphere, cosine_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_uniform_hemisphere), each(cosine_density), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_uniform_as_cosine"),
                    "observed/expected ~ 1 / (2 cos(theta))");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
-  expect_diagnosis(check_sampler(cosine_hemisphere_with_radius_u, cosine_density, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(cosine_hemisphere_with_radius_u), each(cosine_density), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_cosine_radius_u"),
                    "half the expected samples near the horizon and too many near the pole: is the disk point "
                    "at r = u0");
@@ -90,66 +111,82 @@ TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
 
 TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
   // the sampler is right; its chi-square fails only through the pdf, and says so
-  expect_diagnosis(check_sampler(sample_cosine_hemisphere, cosine_pdf_times_two, sampler_hemisphere_binning(),
+  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(cosine_pdf_times_two), sampler_hemisphere_binning(),
                                  SamplerKind::cosine_hemisphere, "diagnosis_wrong_pdf"),
                    "your pdf integrates to 2.000, not 1, and this test compares your samples with it: fix the pdf first");
 }
 
 TEST_F(Diagnoses, A2DiskWithRadiusU) {
-  expect_diagnosis(check_sampler(disk_with_radius_u, disk_density, sampler_disk_binning(), SamplerKind::unit_disk,
+  expect_diagnosis(check_sampler(each(disk_with_radius_u), each(disk_density), sampler_disk_binning(), SamplerKind::unit_disk,
                                  "diagnosis_disk_radius_u"),
                    "points crowd the centre");
 }
 
 TEST_F(Diagnoses, A2PdfsOffByTwo) {
-  expect_diagnosis(check_pdf_integral(hemisphere_pdf_one_over_pi, sampler_hemisphere_binning(), "1/pi"),
+  expect_diagnosis(check_pdf_integral(each(hemisphere_pdf_one_over_pi), sampler_hemisphere_binning(), "1/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large (is it off by a factor of 2");
-  expect_diagnosis(check_pdf_integral(cosine_pdf_times_two, sampler_hemisphere_binning(), "2 cos/pi"),
+  expect_diagnosis(check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(), "2 cos/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large");
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceLate) {
-  expect_diagnosis(check_ray_counts(incident_radiance_one_bounce_late), "ray count is N^(k+1)");
-  expect_diagnosis(check_recursive_furnace(incident_radiance_one_bounce_late), "your mean is that of depth k + 1");
+  expect_diagnosis(check_ray_counts(a3_producer(incident_radiance_one_bounce_late)), "ray count is N^(k+1)");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_bounce_late)), "your mean is that of depth k + 1");
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
-  const TaskResult r = check_ray_counts(incident_radiance_one_bounce_early);
+  const TaskResult r = check_ray_counts(a3_producer(incident_radiance_one_bounce_early));
   EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A3WithoutOneOverN) {
-  expect_diagnosis(check_recursive_furnace(incident_radiance_without_one_over_n), "each level weighs N a instead of a");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_without_one_over_n)), "each level weighs N a instead of a");
 }
 
 TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
-  expect_diagnosis(check_recursive_furnace(incident_radiance_one_shared_direction),
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_shared_direction)),
                    "the mean is right but the variance is");
 }
 
 TEST_F(Diagnoses, A4MissingCosine) {
-  expect_diagnosis(check_path_furnace(path_radiance_without_cosine), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_without_cosine)), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
 }
 
 TEST_F(Diagnoses, A4SpherePdf) {
-  expect_diagnosis(check_path_furnace(path_radiance_with_sphere_pdf), "the per-bounce weight averages 2a instead of a: is your pdf off");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_with_sphere_pdf)), "the per-bounce weight averages 2a instead of a: is your pdf off");
 }
 
 TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_path_furnace(path_radiance_cosine_directions_uniform_pdf), "the per-bounce weight averages 4a/3");
-  EXPECT_FALSE(check_reference_regions(path_radiance_cosine_directions_uniform_pdf).passed);
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_cosine_directions_uniform_pdf)), "the per-bounce weight averages 4a/3");
+  EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
+}
+
+/// The student-side producer of a5 with one estimator replaced by a known-wrong one.
+template <class R>
+auto with_roulette(R roulette) {
+  return a5_producer(roulette, estimate_importance_path_radiance, estimate_nee_radiance);
+}
+
+template <class I>
+auto with_importance(I importance) {
+  return a5_producer(estimate_path_radiance_roulette, importance, estimate_nee_radiance);
+}
+
+template <class N>
+auto with_nee(N nee) {
+  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, nee);
 }
 
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
-  expect_diagnosis(check_roulette_furnace(roulette_without_division), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_without_division)), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
 }
 
 TEST_F(Diagnoses, A5RouletteBeforeTheEmission) {
-  expect_diagnosis(check_roulette_furnace(roulette_before_emission), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_before_emission)), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
 }
 
 TEST_F(Diagnoses, A5RouletteFromVertexZero) {
-  expect_diagnosis(check_roulette_furnace(roulette_from_depth_zero), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_from_depth_zero)), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
 }
 
 /// A known-wrong path tracer as a5.2's estimator: it ignores the pdf it is handed.
@@ -161,12 +198,12 @@ auto ignoring_the_pdf(Tracer tracer) {
 }
 
 TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
-  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi)),
+  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi))),
                    "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
 }
 
 TEST_F(Diagnoses, A5CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_cosine_furnace_is_exact(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)),
+  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf))),
                    "the per-bounce weight averages 4a/3 and varies");
 }
 
@@ -179,33 +216,33 @@ auto with_path_end(Nee nee) {
 }
 
 TEST_F(Diagnoses, A5NeeEmissionTwice) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_emission_twice)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
                    "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
-  EXPECT_FALSE(check_nee_regions(with_path_end(nee_emission_twice)).passed);
+  EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_emission_twice))).passed);
 }
 
 TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_without_jacobian)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_jacobian))),
                    "direct light is 2.70x and varies from path to path; every light sample here should give exactly a Le: is p_A converted to solid angle");
-  EXPECT_FALSE(check_nee_regions(with_path_end(nee_without_jacobian)).passed);
+  EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_without_jacobian))).passed);
 }
 
 TEST_F(Diagnoses, A5NeeCapOnly) {
-  expect_diagnosis(check_nee_light_beyond_cap(with_path_end(nee_cap_only)),
+  expect_diagnosis(check_nee_light_beyond_cap(with_nee(with_path_end(nee_cap_only))),
                    "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutOneOverNLights) {
   // one light: nothing to see; two: the diagnosis names the 1/N
-  EXPECT_TRUE(check_nee_regions(with_path_end(nee_without_one_over_n_lights)).passed);
-  const TaskResult r = check_nee_two_lights(with_path_end(nee_without_one_over_n_lights));
+  EXPECT_TRUE(check_nee_regions(with_nee(with_path_end(nee_without_one_over_n_lights))).passed);
+  const TaskResult r = check_nee_two_lights(with_nee(with_path_end(nee_without_one_over_n_lights)));
   EXPECT_FALSE(r.passed) << r.message;
   EXPECT_NE(r.message.find("DIAGNOSIS: region"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("does the light sample's pdf include the 1/N_lights"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_path_end(nee_shadow_ray_hits_light)),
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_shadow_ray_hits_light))),
                    "direct light is 0.00x: almost no shadow ray reaches the light");
 }
 

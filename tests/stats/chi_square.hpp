@@ -90,29 +90,39 @@ double pdf_integral(const Pdf& pdf, const Binning<Point>& binning) {
   return total;
 }
 
-/// Draws `samples` points sample(u) with u from Rng(seed, stream) and tests their counts in
-/// `binning` against `pdf`. Sampler: Point(Vec2 u); Pdf: double(const Point&).
-template <class Point, class Sampler, class Pdf>
-ChiSquareResult chi_square_sampler_test(const Sampler& sample, const Pdf& pdf,
-                                        const Binning<Point>& binning, std::uint64_t seed,
-                                        std::uint64_t samples, std::uint64_t stream = 0) {
-  const std::vector<double> probability = cell_probabilities(pdf, binning);
+/// Counts `points` in the cells of `binning` and tests the counts against the cell
+/// probabilities `probability` (cell_probabilities of the pdf).
+template <class Point>
+ChiSquareResult chi_square_points_test(const std::vector<Point>& points, const std::vector<double>& probability,
+                                       const Binning<Point>& binning) {
   std::vector<CellCount> cells(probability.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
     cells[c].u_index = static_cast<int>(c) % binning.u_cells;
     cells[c].v_index = static_cast<int>(c) / binning.u_cells;
-    cells[c].expected = static_cast<double>(samples) * probability[c];
+    cells[c].expected = static_cast<double>(points.size()) * probability[c];
   }
-  Rng rng(seed, stream);
   std::uint64_t outside = 0;
-  for (std::uint64_t k = 0; k < samples; ++k) {
-    const int c = binning.cell_of(sample(rng.uniform2()));
+  for (const Point& p : points) {
+    const int c = binning.cell_of(p);
     if (c < 0)
       ++outside;
     else
       cells[static_cast<std::size_t>(c)].observed += 1.0;
   }
   return chi_square_test(std::move(cells), outside);
+}
+
+/// Draws `samples` points sample(u) with u from Rng(seed, stream) and tests their counts in
+/// `binning` against `pdf`. Sampler: Point(Vec2 u); Pdf: double(const Point&).
+template <class Point, class Sampler, class Pdf>
+ChiSquareResult chi_square_sampler_test(const Sampler& sample, const Pdf& pdf,
+                                        const Binning<Point>& binning, std::uint64_t seed,
+                                        std::uint64_t samples, std::uint64_t stream = 0) {
+  Rng rng(seed, stream);
+  std::vector<Point> points;
+  points.reserve(samples);
+  for (std::uint64_t k = 0; k < samples; ++k) points.push_back(sample(rng.uniform2()));
+  return chi_square_points_test(points, cell_probabilities(pdf, binning), binning);
 }
 
 /// Writes the failure report of a chi-square test into `dir`: NAME.csv (one row per cell:

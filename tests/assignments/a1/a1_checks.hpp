@@ -1,12 +1,14 @@
 #pragma once
-// The grading procedures of assignment a1 (Monte Carlo integration), templated on the code
-// under test so that tests/assignments/diagnosis_test.cpp can run them on known-wrong variants.
+// The grading procedures of assignment a1 (Monte Carlo integration). They judge the answers
+// of `p`, a Subject or an A1Producer (a1_produce.hpp): a1_disk, a1_ball, a1_monte_carlo,
+// a1_trapezoid, each given its seed and stream (diagnosis_test.cpp: known-wrong variants).
 
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "assignments/a1/a1_produce.hpp"
 #include "assignments/grading.hpp"
 #include "core/rng.hpp"
 #include "integration/ball.hpp"
@@ -27,13 +29,11 @@ struct TaskResult {
 inline constexpr std::uint64_t k_disk_points = 200000;  ///< sd of 4M/N: 0.0037
 
 /// a1.1: E[4M/N] = pi, z-tested with the closed-form sd 4 sqrt(p(1-p)/N) at three seeds.
-/// `estimate(n, rng)` is the disk estimator.
-template <class Estimate>
-TaskResult check_disk_estimator(Estimate&& estimate) {
+template <class P>
+TaskResult check_disk_estimator(P&& producer) {
   double sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    Rng rng(seed, 11);
-    const double a = estimate(k_disk_points, rng);
+    const double a = producer.a1_disk(k_disk_points, seed, 11);
     sum += a;
     return z_test_p_value(a, k_pi, disk_area_theory_std(k_disk_points));
   });
@@ -48,16 +48,14 @@ TaskResult check_disk_estimator(Estimate&& estimate) {
 }
 
 /// a1.2: E[2^k M/N] = V_k for k = `dims`, z-tested with the closed-form sd.
-/// `estimate(k, n, rng)` is the ball estimator.
-template <class Estimate>
-TaskResult check_ball_estimator(Estimate&& estimate, const std::vector<int>& dims) {
+template <class P>
+TaskResult check_ball_estimator(P&& producer, const std::vector<int>& dims) {
   constexpr std::uint64_t n = 100000;
   TaskResult result{true, ""};
   for (int k : dims) {
     double sum = 0.0;
     const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-      Rng rng(seed, 12);
-      const double vol = estimate(k, n, rng);
+      const double vol = producer.a1_ball(k, n, seed, 12);
       sum += vol;
       return z_test_p_value(vol, unit_ball_volume(k), ball_volume_theory_std(k, n));
     });
@@ -74,20 +72,17 @@ TaskResult check_ball_estimator(Estimate&& estimate, const std::vector<int>& dim
 
 /// a1.3: F_N = (b - a)/N sum f(X_i) for f = x^2 on [1, 4] (I = 21, vol J - I^2 = 172.8):
 /// the mean z-tested at three seeds, and its standard error within 10% of the theory (its
-/// relative sd is about 1% at N = 10^4). `estimate(f, segment, n, rng)` returns
-/// MonteCarloEstimate.
-template <class Estimate>
-TaskResult check_basic_estimator(Estimate&& estimate) {
+/// relative sd is about 1% at N = 10^4).
+template <class P>
+TaskResult check_basic_estimator(P&& producer) {
   constexpr std::uint64_t n = 10000;
   const Segment segment{1.0, 4.0};
-  const auto f = [](double x) { return x * x; };
   const double integral = 21.0, theory_sd = std::sqrt(172.8 / static_cast<double>(n));
   double sum = 0.0;
   bool se_ok = true;
   std::string se_note;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    Rng rng(seed, 13);
-    const MonteCarloEstimate e = estimate(f, segment, n, rng);
+    const EstimateAndError e = producer.a1_monte_carlo(A1Integrand::square, 0.0, segment, n, seed, 13);
     sum += e.estimate;
     if (!near(e.standard_error, theory_sd, 0.1)) {
       se_ok = false;
@@ -106,10 +101,11 @@ TaskResult check_basic_estimator(Estimate&& estimate) {
 /// a1.4: the trapezoid rule on exp(-x^2) over [0, 1]: its error must fall as h^2 (ratio 4
 /// when n - 1 doubles; 2 would be O(h), the end points' half weights forgotten) and be close to
 /// the leading term h^2 (f'(b) - f'(a)) / 12 (Euler-Maclaurin). Deterministic: the
-/// tolerance 2% covers the next term, O(h^4). `rule(n)` is T_n.
-template <class Rule>
-TaskResult check_trapezoid(Rule&& rule) {
+/// tolerance 2% covers the next term, O(h^4).
+template <class P>
+TaskResult check_trapezoid(P&& producer) {
   const Gaussian1D f;
+  const auto rule = [&](std::uint64_t n) { return producer.a1_trapezoid(A1Integrand::gaussian, 0.0, f.domain, n); };
   const double integral = f.reference();
   const double fprime_b = -2.0 * std::exp(-1.0), fprime_a = 0.0;
   TaskResult result{true, ""};

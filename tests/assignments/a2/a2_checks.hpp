@@ -1,17 +1,23 @@
 #pragma once
-// The grading procedures of assignment a2 (sampling directions), templated on the sampler and
-// pdf under test so that tests/assignments/diagnosis_test.cpp can run them on wrong variants.
+// The grading procedures of assignment a2 (sampling directions). Each judges what a bulk
+// producer returns: `samples(us)` the sampler's points for a vector of u, `pdf(points)` the
+// pdf's values at a vector of points. The tests take them from subject() (the student's code,
+// in-process or in the subject program); tests/assignments/diagnosis_test.cpp from known-wrong
+// variants through each().
 // Each sampler is held to the chi-square test of tests/stats/ (about 230 equal-measure cells,
 // 1e5 points) at three seeds, failing on 2 of 3 rejections at 5e-4 (grading.hpp), and its pdf
 // must integrate to 1 over its domain (Gauss-Kronrod per cell, tolerance 1e-6).
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/grading.hpp"
+#include "assignments/subject/requests.hpp"
 #include "stats/binning.hpp"
 #include "stats/chi_square.hpp"
 #include "stats/report.hpp"
@@ -42,8 +48,6 @@ bool bands_follow(const std::vector<double>& ratio, double low, double high, Sha
   }
   return true;
 }
-
-enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk };
 
 /// The shape of the observed / expected ratios says which distribution the samples follow.
 inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, const Grid& grid) {
@@ -78,16 +82,88 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
   return "";
 }
 
-/// A sampler's chi-square test at the grading seeds; on failure, the heat map's path (written
-/// under test-reports/, or $MCRT_TEST_REPORT_DIR) and a diagnosis.
-template <class Point, class Sampler, class Pdf>
-TaskResult check_sampler(const Sampler& sample, const Pdf& pdf, const Binning<Point>& binning,
+/// The cell probabilities of a pdf known only through bulk requests, exactly as
+/// cell_probabilities computes them: the adaptive quadrature runs on the values known so far
+/// (0 for a point not yet asked), the points it lacked are asked in one request, and it runs
+/// again until it lacked none. Every round asks at least the first point the final run needs,
+/// so it ends; a pdf smooth in each cell takes a few rounds.
+template <class Point, class PdfBatch>
+std::vector<double> bulk_cell_probabilities(PdfBatch&& pdf, const Binning<Point>& binning) {
+  struct Key {
+    Point p;
+    bool operator==(const Key& o) const { return std::memcmp(&p, &o.p, sizeof p) == 0; }
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = 0;
+      const auto* words = reinterpret_cast<const std::uint64_t*>(&k.p);
+      for (std::size_t i = 0; i < sizeof k.p / 8; ++i) h = (h ^ words[i]) * 0x100000001b3ULL;
+      return h;
+    }
+  };
+  std::unordered_map<Key, double, Hash> known;
+  {
+    // First the nodes of the quadrature's first level in every cell, as it computes them
+    // (scale * t + mean): a pdf smooth in each cell needs no other, so one request and one run.
+    using Quadrature = boost::math::quadrature::gauss_kronrod<double, 15>;
+    const auto nodes = [](double a, double b) {
+      const double mean = (b + a) / 2, scale = (b - a) / 2;
+      std::vector<double> x;
+      for (double t : Quadrature::abscissa()) {
+        x.push_back(scale * t + mean);
+        if (t != 0.0) x.push_back(scale * -t + mean);
+      }
+      return x;
+    };
+    std::vector<Point> first;
+    for (int j = 0; j < binning.v_cells; ++j)
+      for (int i = 0; i < binning.u_cells; ++i) {
+        const double u0 = binning.u_low(i), v0 = binning.v_low(j);
+        for (double v : nodes(v0, v0 + binning.v_width()))
+          for (double u : nodes(u0, u0 + binning.u_width())) first.push_back(binning.point_at(u, v));
+      }
+    const std::vector<double> values = pdf(first);
+    for (std::size_t i = 0; i < first.size(); ++i) known[Key{first[i]}] = i < values.size() ? values[i] : 0.0;
+  }
+  for (;;) {
+    std::vector<Point> missing;
+    std::unordered_map<Key, bool, Hash> asked;
+    const auto lookup = [&](const Point& x) {
+      const auto it = known.find(Key{x});
+      if (it != known.end()) return it->second;
+      if (asked.emplace(Key{x}, true).second) missing.push_back(x);
+      return 0.0;
+    };
+    std::vector<double> probability = cell_probabilities(lookup, binning);
+    if (missing.empty()) return probability;
+    const std::vector<double> values = pdf(missing);
+    for (std::size_t i = 0; i < missing.size(); ++i) known[Key{missing[i]}] = i < values.size() ? values[i] : 0.0;
+  }
+}
+
+/// The integral of a bulk pdf over the binning's domain (pdf_integral's).
+template <class Point, class PdfBatch>
+double bulk_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning) {
+  double total = 0.0;
+  for (double p : bulk_cell_probabilities(pdf, binning)) total += p;
+  return total;
+}
+
+/// A sampler's chi-square test at the grading seeds (1e5 points of u drawn from
+/// Rng(seed, 41)); on failure, the heat map's path (written under test-reports/, or
+/// $MCRT_TEST_REPORT_DIR) and a diagnosis.
+template <class Point, class SampleBatch, class PdfBatch>
+TaskResult check_sampler(SampleBatch&& samples, PdfBatch&& pdf, const Binning<Point>& binning,
                          SamplerKind kind, const std::string& name) {
   std::string diagnosis_text;
   bool reported = false;
+  const std::vector<double> probability = bulk_cell_probabilities(pdf, binning);
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const ChiSquareResult r =
-        chi_square_sampler_test(sample, pdf, binning, seed, k_sampler_samples, 41);
+    Rng rng(seed, 41);
+    std::vector<Vec2> u(k_sampler_samples);
+    for (Vec2& x : u) x = rng.uniform2();
+    const std::vector<Point> points = samples(u);
+    const ChiSquareResult r = chi_square_points_test(points, probability, binning);
     if (r.p_value < k_seed_alpha && !reported) {
       reported = true;
       diagnosis_text = diagnose_sampler(kind, r, binning);
@@ -99,7 +175,8 @@ TaskResult check_sampler(const Sampler& sample, const Pdf& pdf, const Binning<Po
   if (!v.passed()) {
     // The test compares the samples with the pdf given: a pdf that is not a density fails a
     // correct sampler too, and its own test says how it is wrong.
-    const double total = pdf_integral(pdf, binning);
+    double total = 0.0;
+    for (double p : probability) total += p;
     if (std::abs(total - 1.0) >= 1e-6)
       diagnosis_text = diagnosis(fmt::format(
           "your pdf integrates to {:.3f}, not 1, and this test compares your samples with it: fix the pdf "
@@ -110,10 +187,42 @@ TaskResult check_sampler(const Sampler& sample, const Pdf& pdf, const Binning<Po
   return {v.passed(), message};
 }
 
+/// The bulk producers of a Subject for sampler `kind`, as check_sampler takes them: points of
+/// type Point (a disk point as Vec2).
+template <class Point, class S>
+auto samples_of(S& subject, SamplerKind kind) {
+  return [&subject, kind](const std::vector<Vec2>& u) {
+    std::vector<Point> out;
+    out.reserve(u.size());
+    for (const Vec3& p : subject.samples(kind, u)) {
+      if constexpr (std::is_same_v<Point, Vec2>)
+        out.emplace_back(p.x, p.y);
+      else
+        out.push_back(p);
+    }
+    return out;
+  };
+}
+
+template <class Point, class S>
+auto pdf_of(S& subject, SamplerKind kind) {
+  return [&subject, kind](const std::vector<Point>& points) {
+    std::vector<Vec3> at;
+    at.reserve(points.size());
+    for (const Point& p : points) {
+      if constexpr (std::is_same_v<Point, Vec2>)
+        at.emplace_back(p.x, p.y, 0.0);
+      else
+        at.push_back(p);
+    }
+    return subject.pdf_values(kind, at);
+  };
+}
+
 /// The pdf integrates to 1 over the binning's domain.
-template <class Point, class Pdf>
-TaskResult check_pdf_integral(const Pdf& pdf, const Binning<Point>& binning, const std::string& name) {
-  const double total = pdf_integral(pdf, binning);
+template <class Point, class PdfBatch>
+TaskResult check_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning, const std::string& name) {
+  const double total = bulk_pdf_integral(pdf, binning);
   const bool ok = std::abs(total - 1.0) < 1e-6;
   std::string message = fmt::format("{} integrates to {:.6f} over its domain", name, total);
   if (!ok) {

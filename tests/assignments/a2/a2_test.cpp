@@ -1,77 +1,85 @@
 // Assignment a2, sampling directions: the public tests (CTest label a2). Each sampler is graded
-// by the chi-square test against its pdf and by the pdf integrating to 1 (a2_checks.hpp).
+// by the chi-square test against its pdf and by the pdf integrating to 1 (a2_checks.hpp). The
+// samplers are reached through subject() only: in-process here, in the subject program when
+// scripts/grade builds this file as a checker.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "assignments/a2/a2_checks.hpp"
-#include "sampling/hemisphere.hpp"
-#include "sampling/plane.hpp"
-#include "sampling/sphere.hpp"
+#include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
 
-double uniform_hemisphere_density(const Vec3&) { return uniform_hemisphere_pdf(); }
-double cosine_hemisphere_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
-double uniform_sphere_density(const Vec3&) { return uniform_sphere_pdf(); }
-double uniform_disk_density(const Vec2&) { return uniform_disk_pdf(); }
-
 TEST(A2, Task1UniformHemisphereFollowsItsPdf) {
-  const TaskResult r = check_sampler(sample_uniform_hemisphere, uniform_hemisphere_density,
+  const TaskResult r = check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_hemisphere),
+                                     pdf_of<Vec3>(subject(), SamplerKind::uniform_hemisphere),
                                      sampler_hemisphere_binning(), SamplerKind::uniform_hemisphere,
                                      "a2_uniform_hemisphere");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task1UniformHemispherePdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(uniform_hemisphere_density, sampler_hemisphere_binning(), "uniform_hemisphere_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec3>(subject(), SamplerKind::uniform_hemisphere),
+                                          sampler_hemisphere_binning(), "uniform_hemisphere_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task2CosineHemisphereFollowsItsPdf) {
-  const TaskResult r = check_sampler(sample_cosine_hemisphere, cosine_hemisphere_density,
+  const TaskResult r = check_sampler(samples_of<Vec3>(subject(), SamplerKind::cosine_hemisphere),
+                                     pdf_of<Vec3>(subject(), SamplerKind::cosine_hemisphere),
                                      sampler_hemisphere_binning(), SamplerKind::cosine_hemisphere,
                                      "a2_cosine_hemisphere");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task2CosineHemispherePdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(cosine_hemisphere_density, sampler_hemisphere_binning(), "cosine_hemisphere_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec3>(subject(), SamplerKind::cosine_hemisphere),
+                                          sampler_hemisphere_binning(), "cosine_hemisphere_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task3UniformSphereFollowsItsPdf) {
-  const TaskResult r = check_sampler(sample_uniform_sphere, uniform_sphere_density, sphere_binning(21, 21),
+  const TaskResult r = check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_sphere),
+                                     pdf_of<Vec3>(subject(), SamplerKind::uniform_sphere), sphere_binning(21, 21),
                                      SamplerKind::uniform_sphere, "a2_uniform_sphere");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task3UniformSpherePdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(uniform_sphere_density, sphere_binning(21, 21), "uniform_sphere_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec3>(subject(), SamplerKind::uniform_sphere),
+                                          sphere_binning(21, 21), "uniform_sphere_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task4UnitDiskFollowsItsPdf) {
-  const TaskResult r = check_sampler(sample_uniform_disk, uniform_disk_density, sampler_disk_binning(),
+  const TaskResult r = check_sampler(samples_of<Vec2>(subject(), SamplerKind::unit_disk),
+                                     pdf_of<Vec2>(subject(), SamplerKind::unit_disk), sampler_disk_binning(),
                                      SamplerKind::unit_disk, "a2_unit_disk");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task4UnitDiskPdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(uniform_disk_density, sampler_disk_binning(), "uniform_disk_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec2>(subject(), SamplerKind::unit_disk), sampler_disk_binning(),
+                                          "uniform_disk_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 // Directions are unit vectors: the chi-square bins by angle and would not see a length error.
 TEST(A2, DirectionsAreUnitVectors) {
+  std::vector<Vec2> u;
   for (double u0 : {0.0, 0.3, 0.999})
-    for (double u1 : {0.0, 0.5, 0.999}) {
-      EXPECT_NEAR(glm::length(sample_uniform_hemisphere({u0, u1})), 1.0, 1e-12) << "a2.1 at u = " << u0 << ", " << u1;
-      EXPECT_NEAR(glm::length(sample_cosine_hemisphere({u0, u1})), 1.0, 1e-12) << "a2.2 at u = " << u0 << ", " << u1;
-      EXPECT_NEAR(glm::length(sample_uniform_sphere({u0, u1})), 1.0, 1e-12) << "a2.3 at u = " << u0 << ", " << u1;
-    }
+    for (double u1 : {0.0, 0.5, 0.999}) u.emplace_back(u0, u1);
+  const std::vector<Vec3> h = subject().samples(SamplerKind::uniform_hemisphere, u);
+  const std::vector<Vec3> c = subject().samples(SamplerKind::cosine_hemisphere, u);
+  const std::vector<Vec3> s = subject().samples(SamplerKind::uniform_sphere, u);
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    EXPECT_NEAR(glm::length(h[i]), 1.0, 1e-12) << "a2.1 at u = " << u[i].x << ", " << u[i].y;
+    EXPECT_NEAR(glm::length(c[i]), 1.0, 1e-12) << "a2.2 at u = " << u[i].x << ", " << u[i].y;
+    EXPECT_NEAR(glm::length(s[i]), 1.0, 1e-12) << "a2.3 at u = " << u[i].x << ", " << u[i].y;
+  }
 }
 
 }  // namespace

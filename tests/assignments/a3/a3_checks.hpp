@@ -1,13 +1,14 @@
 #pragma once
-// The grading procedures of assignment a3 (the recursive estimator), templated on the
-// estimator under test: `radiance(scene, ray, depth, settings, rng, count)`, as
-// incident_radiance.
+// The grading procedures of assignment a3 (the recursive estimator). They judge the bulk
+// answers of `p`, a Subject or an A3Producer (a3_produce.hpp): single calls with their ray
+// counts (recursive_single) and furnace samples (recursive_furnace) of incident_radiance.
 
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "assignments/a1/a1_checks.hpp"
+#include "assignments/a3/a3_produce.hpp"
 #include "assignments/grading.hpp"
 #include "integration/statistics.hpp"
 #include "render/recursive_estimator.hpp"
@@ -18,19 +19,17 @@
 namespace mcrt::testing::assignment {
 
 /// Exact: one call from the furnace's centre traces 1 + N + ... + N^k rays (none escapes).
-template <class Radiance>
-TaskResult check_ray_counts(Radiance&& radiance) {
-  const Scene furnace = make_furnace(0.5, 1.0);
+template <class P>
+TaskResult check_ray_counts(P&& producer) {
   TaskResult result{true, ""};
   for (const auto& [n, k] : std::vector<std::pair<int, int>>{{1, 0}, {1, 4}, {2, 3}, {3, 2}, {4, 1}}) {
-    Rng rng(7, static_cast<std::uint64_t>(10 * n + k));
-    RayCount count;
-    radiance(furnace, Ray{Vec3(0.0), Vec3(0.0, 0.0, 1.0)}, 0, RecursiveSettings{n, k}, rng, count);
+    const std::uint64_t rays =
+        producer.recursive_single(0.5, 1.0, Vec3(0.0), Vec3(0.0, 0.0, 1.0), n, k, 7, static_cast<std::uint64_t>(10 * n + k)).rays;
     const std::uint64_t expected = geometric_ray_count(static_cast<std::uint64_t>(n), k);
-    const bool ok = count.rays == expected;
+    const bool ok = rays == expected;
     result.passed = result.passed && ok;
-    result.message += fmt::format("N = {}, k = {}: {} rays, expected {}\n", n, k, count.rays, expected);
-    if (!ok) result.message += diagnose_ray_count(count.rays, static_cast<std::uint64_t>(n), k) + "\n";
+    result.message += fmt::format("N = {}, k = {}: {} rays, expected {}\n", n, k, rays, expected);
+    if (!ok) result.message += diagnose_ray_count(rays, static_cast<std::uint64_t>(n), k) + "\n";
   }
   return result;
 }
@@ -38,24 +37,16 @@ TaskResult check_ray_counts(Radiance&& radiance) {
 /// The furnace (a = 0.5, Le = 1, N = 2, k = 3): the mean of 4000 samples t-tested against
 /// m_k = 1.875 and their variance z-tested against V_k (furnace_moments), the two p-values
 /// Sidak-combined, at the three grading seeds.
-template <class Radiance>
-TaskResult check_recursive_furnace(Radiance&& radiance) {
+template <class P>
+TaskResult check_recursive_furnace(P&& producer) {
   constexpr double a = 0.5;
   constexpr int n_branches = 2, k = 3, samples = 4000;
-  const Scene furnace = make_furnace(a, 1.0);
   const FurnaceMoments m = furnace_moments(a, n_branches, k);
   double mean_sum = 0.0, variance_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    std::vector<double> values;
+    const std::vector<double> values = producer.recursive_furnace(a, n_branches, k, samples, seed, 31);
     RunningStats stats;
-    RayCount count;
-    for (int i = 0; i < samples; ++i) {
-      Rng rng(seed, stream_index(31, static_cast<std::uint64_t>(i)));
-      const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
-      const double L = average(radiance(furnace, ray, 0, RecursiveSettings{n_branches, k}, rng, count));
-      values.push_back(L);
-      stats.add(L);
-    }
+    for (double L : values) stats.add(L);
     mean_sum += stats.mean();
     variance_sum += stats.variance();
     const double p_mean = t_test_p_value(stats.mean(), stats.variance(), stats.count(), m.mean);

@@ -4,35 +4,30 @@
 #include <gtest/gtest.h>
 
 #include "assignments/a3/a3_checks.hpp"
+#include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
 
 TEST(A3, Task1RayCountsAreExact) {
-  const TaskResult r = check_ray_counts(incident_radiance);
+  const TaskResult r = check_ray_counts(subject());
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A3, Task1FurnaceMeanAndVarianceMatchTheClosedForms) {
-  const TaskResult r = check_recursive_furnace(incident_radiance);
+  const TaskResult r = check_recursive_furnace(subject());
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A3, Task1DepthZeroReturnsTheEmission) {
-  const Scene furnace = make_furnace(0.7, 2.5);
-  Rng rng(5, 5);
-  RayCount count;
-  const Color L = incident_radiance(furnace, {Vec3(0.0), {0.0, 0.6, 0.8}}, 0, {8, 0}, rng, count);
-  EXPECT_DOUBLE_EQ(average(L), 2.5) << "at max_depth k = 0 the recursion returns the emission only";
-  EXPECT_EQ(count.rays, 1u) << "at max_depth k = 0 one ray is traced: does the recursion stop at depth == k?";
+  const PathSample p = subject().recursive_single(0.7, 2.5, Vec3(0.0), {0.0, 0.6, 0.8}, 8, 0, 5, 5);
+  EXPECT_DOUBLE_EQ(p.radiance, 2.5) << "at max_depth k = 0 the recursion returns the emission only";
+  EXPECT_EQ(p.rays, 1u) << "at max_depth k = 0 one ray is traced: does the recursion stop at depth == k?";
 }
 
 TEST(A3, Task1EscapingRayBringsNoLight) {
-  const Scene furnace = make_furnace(0.7, 2.5);
-  Rng rng(5, 6);
-  RayCount count;
-  const Color L = incident_radiance(furnace, {Vec3(0.0, 0.0, 1e9), {0.0, 0.0, 1.0}}, 0, {2, 2}, rng, count);
-  EXPECT_EQ(average(L), 0.0) << "a ray that leaves the scene brings no light";
+  const PathSample p = subject().recursive_single(0.7, 2.5, {0.0, 0.0, 1e9}, {0.0, 0.0, 1.0}, 2, 2, 5, 6);
+  EXPECT_EQ(p.radiance, 0.0) << "a ray that leaves the scene brings no light";
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #pragma once
-// The grading procedures of assignment a4 (the path tracer), templated on the tracer under
-// test: `radiance(scene, ray, max_depth, rng, count)`, as estimate_path_radiance.
+// The grading procedures of assignment a4 (the path tracer). They judge bulk answers:
+// `furnace(albedo, depth, n, seed, block)` the values of n furnace paths (furnace_values) and
+// `sky(k, spp, seed)` every sample of the 16 x 16 sky render (sky_values); the tests take them
+// from subject(), diagnosis_test.cpp from known-wrong tracers (furnace_of, sky_of).
 
 #include <array>
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "assignments/a1/a1_checks.hpp"
+#include "assignments/a4/a4_produce.hpp"
 #include "assignments/grading.hpp"
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
@@ -19,43 +22,12 @@
 
 namespace mcrt::testing::assignment {
 
-/// A small scene lit by a white sky (a large emitting sphere, Le = 1) that every escaping
-/// direction of a uniform sampler finds, so renders of a few hundred paths per pixel have small
-/// errors: a red ball on a grey ground, seen from slightly above.
-inline Scene make_sky_scene() {
-  Scene scene;
-  scene.name = "sky";
-  const auto sky = scene.add_material({Color(0.0), Color(1.0)});
-  const auto ground = scene.add_material({Color(0.5), Color(0.0)});
-  const auto ball = scene.add_material({Color(0.7, 0.3, 0.2), Color(0.0)});
-  scene.add_sphere({Vec3(0.0), 100.0, sky});
-  scene.add_sphere({Vec3(0.0, -1001.0, 0.0), 1000.0, ground});
-  scene.add_sphere({Vec3(0.0), 1.0, ball});
-  scene.camera = {Vec3(0.0, 0.5, 4.0), Vec3(0.0, -0.15, -1.0), Vec3(0.0, 1.0, 0.0), 0.9, 0.0};
-  return scene;
-}
-
-/// Values of `radiance` for n paths from the furnace's centre in uniformly random directions.
-template <class Radiance>
-std::vector<double> furnace_values(Radiance&& radiance, double albedo, int depth, int n,
-                                   std::uint64_t seed, std::uint64_t block) {
-  const Scene furnace = make_furnace(albedo, 1.0);
-  std::vector<double> values;
-  RayCount count;
-  for (int i = 0; i < n; ++i) {
-    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
-    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
-    values.push_back(average(radiance(furnace, ray, depth, rng, count)));
-  }
-  return values;
-}
-
 /// What one bounce's weight w = f_r cos / p looks like: at depth 1 in the furnace (Le = 1),
 /// L = 1 + w. A correct tracer has E[w] = a and Var[w] = a^2 / 3.
-template <class Radiance>
-std::string diagnose_bounce_weight(Radiance&& radiance, double a) {
+template <class Furnace>
+std::string diagnose_bounce_weight(Furnace&& furnace, double a) {
   RunningStats w;
-  for (double L : furnace_values(radiance, a, 1, 4000, 99, 77)) w.add(L - 1.0);
+  for (double L : furnace(a, 1, 4000, 99, 77)) w.add(L - 1.0);
   const double mean = w.mean() / a;  // in units of a
   if (near(mean, 2.0, 0.05) && w.variance() < 1e-12)
     return diagnosis("the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
@@ -73,14 +45,14 @@ std::string diagnose_bounce_weight(Radiance&& radiance, double a) {
 /// The furnace (a = 0.5, Le = 1, k = 3): the mean of 20000 paths z-tested against
 /// (1 - a^(k+1)) / (1 - a) with the closed-form variance, and their variance z-tested against
 /// it, Sidak-combined, at the three grading seeds. Also the depth off-by-one.
-template <class Radiance>
-TaskResult check_path_furnace(Radiance&& radiance) {
+template <class Furnace>
+TaskResult check_path_furnace(Furnace&& furnace) {
   constexpr double a = 0.5;
   constexpr int k = 3, n = 20000;
   const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(a, 1.0, k);
   double mean_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const std::vector<double> values = furnace_values(radiance, a, k, n, seed, 51);
+    const std::vector<double> values = furnace(a, k, n, seed, 51);
     RunningStats s;
     for (double x : values) s.add(x);
     mean_sum += s.mean();
@@ -90,7 +62,7 @@ TaskResult check_path_furnace(Radiance&& radiance) {
   const double mean = mean_sum / k_seeds;
   std::string d;
   if (!v.passed()) {
-    d = diagnose_bounce_weight(radiance, a);
+    d = diagnose_bounce_weight(furnace, a);
     if (d.empty() && near(mean, furnace_radiance(a, 1.0, k + 1), 0.005))
       d = diagnosis("your mean is that of k + 1 bounces: does your loop stop one bounce late?");
     if (d.empty() && near(mean, furnace_radiance(a, 1.0, k - 1), 0.005))
@@ -107,34 +79,14 @@ TaskResult check_path_furnace(Radiance&& radiance) {
 /// at another seed, drawn anew at each grading seed: independent of the student's, and in
 /// every kit of a4, where the tracers of chapters 06-08 are withheld), the standard error of
 /// the difference taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
-/// The mean channel radiance of `estimate` per region x region block of a Size x Size image:
-/// spp samples per pixel, sample s of pixel p drawn from the stream (p, s).
-template <int Size, int Region, class Estimate>
-std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
-    const Camera& camera, Estimate&& estimate, int spp, std::uint64_t seed) {
-  constexpr int regions = Size / Region;
-  std::array<RunningStats, regions * regions> stats;
-  RayCount count;
-  for (int y = 0; y < Size; ++y)
-    for (int x = 0; x < Size; ++x)
-      for (int s = 0; s < spp; ++s) {
-        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * Size + x),
-                                   static_cast<std::uint64_t>(s)));
-        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(
-            average(estimate(ray, rng, count)));
-      }
-  return stats;
-}
-
-template <class Radiance>
-TaskResult check_reference_regions(Radiance&& radiance) {
-  constexpr int size = 16, region = 4, regions = size / region, k = 4;
+template <class Sky>
+TaskResult check_reference_regions(Sky&& sky) {
+  constexpr int size = 16, region = 4, regions = size / region, k = 4, spp = 256;
   const Scene scene = make_sky_scene();
   const Camera camera(scene.camera, size, size);
   using Stats = std::array<RunningStats, regions * regions>;
-  const auto collect = [&](auto&& estimate, int spp, std::uint64_t seed) {
-    return region_stats<size, region>(camera, estimate, spp, seed);
+  const auto collect = [&](auto&& estimate, int samples, std::uint64_t seed) {
+    return region_stats<size, region>(camera, estimate, samples, seed);
   };
   const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
     return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);
@@ -144,8 +96,7 @@ TaskResult check_reference_regions(Radiance&& radiance) {
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
     // A reference of its own per seed: the three verdicts stay independent.
     const Stats reference = collect(reference_tracer, 1024, seed ^ 0x5eedULL);
-    const Stats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) { return radiance(scene, ray, k, rng, count); },
-                                  256, seed);
+    const Stats student = stats_by_region<size, region>(sky(k, spp, seed), spp);
     double p_min = 1.0;
     for (int r = 0; r < regions * regions; ++r) {
       const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
@@ -161,6 +112,33 @@ TaskResult check_reference_regions(Radiance&& radiance) {
   return {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
                                   v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the reference",
                                                                 worst % regions, worst / regions, worst_z))};
+}
+
+/// The bulk producers of check_path_furnace and check_reference_regions for a tracer run in
+/// this process (a known-wrong one, in diagnosis_test.cpp).
+template <class Radiance>
+auto furnace_of(Radiance radiance) {
+  return [radiance](double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) {
+    return furnace_values(radiance, albedo, depth, n, seed, block);
+  };
+}
+
+template <class Radiance>
+auto sky_of(Radiance radiance) {
+  return [radiance](int k, int spp, std::uint64_t seed) { return sky_values(radiance, 16, k, spp, seed); };
+}
+
+/// The same producers from a Subject (its a4 requests).
+template <class S>
+auto furnace_of_subject(S& subject) {
+  return [&subject](double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) {
+    return subject.path_furnace(albedo, depth, n, seed, block);
+  };
+}
+
+template <class S>
+auto sky_of_subject(S& subject) {
+  return [&subject](int k, int spp, std::uint64_t seed) { return subject.path_sky(16, k, spp, seed); };
 }
 
 }  // namespace mcrt::testing::assignment

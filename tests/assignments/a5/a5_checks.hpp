@@ -1,6 +1,7 @@
 #pragma once
-// The grading procedures of assignment a5 (variance reduction), templated on the estimator
-// under test, with the signatures of the solution's:
+// The grading procedures of assignment a5 (variance reduction). They judge the bulk answers
+// of `p`, a Subject or an A5Producer (a5_produce.hpp): furnace paths (a5_paths), Cornell box
+// samples (a5_regions), wall samples (a5_wall) of the estimator an A5Estimator names:
 //   a5.1 estimate_path_radiance_roulette(scene, ray, roulette, rng, count)
 //   a5.2 estimate_importance_path_radiance(scene, ray, max_depth, pdf, rng, count)
 //   a5.3 estimate_nee_radiance(scene, ray, path_end, rng, count)
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "assignments/a4/a4_checks.hpp"
+#include "assignments/a5/a5_produce.hpp"
 #include "assignments/grading.hpp"
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
@@ -26,21 +28,6 @@
 #include "stats/hypothesis.hpp"
 
 namespace mcrt::testing::assignment {
-
-/// n furnace paths (path i in a uniformly random direction, stream (block, i) of seed) of
-/// `estimate(ray, rng, count)`: their radiance and rays.
-template <class Estimate>
-std::vector<FurnacePath> a5_furnace_paths(const Scene& furnace, int n, std::uint64_t seed,
-                                          std::uint64_t block, Estimate&& estimate) {
-  std::vector<FurnacePath> paths(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
-    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
-    RayCount count;
-    paths[static_cast<std::size_t>(i)] = {average(estimate(furnace, ray, rng, count)), count.rays};
-  }
-  return paths;
-}
 
 /// Whether a furnace path's value (a = albedo, Le = 1, depth k) is exact: Le (1 + a + ... + a^k),
 /// or that of a path ended early at a direction of density 0 (u on the edge of [0,1)^2, 2^-32
@@ -70,18 +57,15 @@ inline double furnace_roulette_mean_before_emission(double a, int d, double q) {
 
 /// The roulette furnace of check_roulette_furnace at one seed: its p-value (adding the mean
 /// radiance and mean rays to the sums given).
-template <class Roulette_>
-double roulette_furnace_p_value(Roulette_&& radiance, std::uint64_t seed, double& mean_sum, double& rays_sum) {
+template <class P>
+double roulette_furnace_p_value(P&& producer, std::uint64_t seed, double& mean_sum, double& rays_sum) {
   constexpr double a = 0.5, q = 0.7;
   constexpr int d = 2, n = 20000;
   const Roulette roulette{d, RoulettePolicy::fixed, q, 0.05};
-  const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance_untruncated(a, 1.0);
   const double variance = furnace_roulette_variance(a, 1.0, d, q);
   const double rays = furnace_roulette_mean_rays(d, q), rays_variance = q / ((1.0 - q) * (1.0 - q));
-  const auto paths = a5_furnace_paths(furnace, n, seed, 61, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
-    return radiance(s, r, roulette, rng, c);
-  });
+  const auto paths = producer.a5_paths(roulette_estimator(roulette), a, n, seed, 61);
   std::vector<double> values;
   RunningStats L, R;
   for (const FurnacePath& p : paths) {
@@ -100,14 +84,14 @@ double roulette_furnace_p_value(Roulette_&& radiance, std::uint64_t seed, double
 /// against Le / (1 - a) = 2 (no depth cut, no bias), their variance against the closed form
 /// (finite: q > 4 a^2 / 3), and their mean ray count against d + 1/(1 - q) (a geometric
 /// length, variance q / (1 - q)^2); Sidak-combined, at the three grading seeds.
-template <class Roulette_>
-TaskResult check_roulette_furnace(Roulette_&& radiance) {
+template <class P>
+TaskResult check_roulette_furnace(P&& producer) {
   constexpr double a = 0.5, q = 0.7;
   constexpr int d = 2;
   const double expected = furnace_radiance_untruncated(a, 1.0), rays = furnace_roulette_mean_rays(d, q);
   double mean_sum = 0.0, rays_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return roulette_furnace_p_value(radiance, seed, mean_sum, rays_sum);
+    return roulette_furnace_p_value(producer, seed, mean_sum, rays_sum);
   });
   const double mean = mean_sum / k_seeds, mean_rays = rays_sum / k_seeds;
   std::string d_text;
@@ -138,13 +122,10 @@ TaskResult check_roulette_furnace(Roulette_&& radiance) {
 
 /// The furnace's per-bounce weight w = f_r cos / p at depth 1 (L = 1 + w): its mean and
 /// spread over 4000 paths, in units of a, with the pdf `pdf`.
-template <class Radiance>
-RunningStats furnace_bounce_weights(Radiance&& radiance, const HemispherePdf& pdf, double a) {
+template <class P>
+RunningStats furnace_bounce_weights(P&& producer, const HemispherePdf& pdf, double a) {
   RunningStats w;
-  const Scene furnace = make_furnace(a, 1.0);
-  for (const FurnacePath& p : a5_furnace_paths(furnace, 4000, 99, 78, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
-         return radiance(s, r, 1, pdf, rng, c);
-       }))
+  for (const FurnacePath& p : producer.a5_paths(importance_estimator(1, pdf), a, 4000, 99, 78))
     w.add((p.radiance - 1.0) / a);
   return w;
 }
@@ -153,22 +134,19 @@ RunningStats furnace_bounce_weights(Radiance&& radiance, const HemispherePdf& pd
 /// in the furnace (a = 0.5, k = 3) every one of 2000 paths returns Le (1 + a + a^2 + a^3):
 /// checked path by path (to 1e-9), no statistics (exact_furnace_path: but for at most two
 /// paths ended early at a direction of density 0).
-template <class Radiance>
-TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
+template <class P>
+TaskResult check_cosine_furnace_is_exact(P&& producer) {
   constexpr double a = 0.5;
   constexpr int k = 3;
   const HemispherePdf cosine = cosine_power_pdf(1);
-  const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance(a, 1.0, k);
   int wrong = 0, early = 0;
   double first_wrong = 0.0;
-  for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 7, 79, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
-         return radiance(s, r, k, cosine, rng, c);
-       }))
+  for (const FurnacePath& p : producer.a5_paths(importance_estimator(k, cosine), a, 2000, 7, 79))
     if (!exact_furnace_path(p.radiance, a, k, 1e-9, early) && wrong++ == 0) first_wrong = p.radiance;
   if (wrong == 0)
     return {true, fmt::format("furnace a = 0.5, k = 3, cosine pdf: all 2000 paths return {:.6f}", expected)};
-  const RunningStats w = furnace_bounce_weights(radiance, cosine, a);
+  const RunningStats w = furnace_bounce_weights(producer, cosine, a);
   std::string d;
   const double spread = std::sqrt(w.variance());
   if (!std::isfinite(w.mean()))
@@ -194,17 +172,14 @@ TaskResult check_cosine_furnace_is_exact(Radiance&& radiance) {
 /// and for the uniform pdf their variance too (Sidak-combined), at the three grading seeds.
 /// Only the mean for cos^m, m >= 2: its weight w ~ 1/cos^(m-1) has an infinite fourth moment,
 /// so the sample variance has no standard error to test it with.
-template <class Radiance>
-double importance_furnace_p_value(Radiance&& radiance, const HemispherePdf& pdf, std::uint64_t seed, double& mean_sum) {
+template <class P>
+double importance_furnace_p_value(P&& producer, const HemispherePdf& pdf, std::uint64_t seed, double& mean_sum) {
   constexpr double a = 0.5;
   constexpr int k = 3, n = 20000;
-  const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(pdf, a, 1.0, k);
   std::vector<double> values;
   RunningStats s;
-  for (const FurnacePath& p : a5_furnace_paths(furnace, n, seed, 62, [&](const Scene& sc, const Ray& r, Rng& rng, RayCount& c) {
-         return radiance(sc, r, k, pdf, rng, c);
-       })) {
+  for (const FurnacePath& p : producer.a5_paths(importance_estimator(k, pdf), a, n, seed, 62)) {
     values.push_back(p.radiance);
     s.add(p.radiance);
   }
@@ -214,17 +189,17 @@ double importance_furnace_p_value(Radiance&& radiance, const HemispherePdf& pdf,
   return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
 }
 
-template <class Radiance>
-TaskResult check_importance_furnace(Radiance&& radiance, const HemispherePdf& pdf) {
+template <class P>
+TaskResult check_importance_furnace(P&& producer, const HemispherePdf& pdf) {
   const double expected = furnace_radiance(0.5, 1.0, 3);
   double mean_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return importance_furnace_p_value(radiance, pdf, seed, mean_sum);
+    return importance_furnace_p_value(producer, pdf, seed, mean_sum);
   });
   const double mean = mean_sum / k_seeds;
   std::string d;
   if (!v.passed()) {
-    const RunningStats w = furnace_bounce_weights(radiance, pdf, 0.5);
+    const RunningStats w = furnace_bounce_weights(producer, pdf, 0.5);
     if (!near(w.mean(), 1.0, 0.05))
       d = diagnosis(fmt::format("with the {} pdf the per-bounce weight averages {:.3f}a instead of a: is f_r cos / p "
                                 "divided by the pdf of the direction drawn (hemisphere_pdf(pdf, cos theta))?",
@@ -240,28 +215,17 @@ TaskResult check_importance_furnace(Radiance&& radiance, const HemispherePdf& pd
 // ---------------------------------------------------------------------------------------------
 // a5.3 next-event estimation
 
-/// NEE at depth k without roulette (the path tracer's truncation).
-inline PathEnd nee_depth_cut(int k) {
-  PathEnd end;
-  end.roulette.min_depth = 1 << 20;  // never reached: no roulette
-  end.max_depth = k;
-  return end;
-}
-
 /// In the furnace (unit sphere, the whole sphere the light) every light sample gives exactly
 /// f_r Le cos_x cos_y / (r^2 p_A) = a Le, and the cosine bounce weighs a: each of 2000 paths at
 /// k = 3 returns Le (1 + a + a^2 + a^3), checked path by path (to 1e-6; exact_furnace_path).
-template <class Nee>
-TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
+template <class P>
+TaskResult check_nee_furnace_is_exact(P&& producer) {
   constexpr double a = 0.5;
   constexpr int k = 3;
-  const Scene furnace = make_furnace(a, 1.0);
   const double expected = furnace_radiance(a, 1.0, k);
   RunningStats all;
   int wrong = 0, early = 0;
-  for (const FurnacePath& p : a5_furnace_paths(furnace, 2000, 11, 80, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
-         return radiance(s, r, nee_depth_cut(k), rng, c);
-       })) {
+  for (const FurnacePath& p : producer.a5_paths(nee_estimator(nee_depth_cut(k)), a, 2000, 11, 80)) {
     all.add(p.radiance);
     wrong += !exact_furnace_path(p.radiance, a, k, 1e-6, early);
   }
@@ -295,8 +259,8 @@ TaskResult check_nee_furnace_is_exact(Nee&& radiance) {
 /// grading seeds.
 /// One seed of check_nee_regions: the Sidak-combined p-value of the 16 regions (and the worst
 /// region: its index, z and ratio of means, when it is worse than `worst_z`).
-template <class Nee>
-double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio,
+template <class P>
+double nee_regions_p_value(P&& producer, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio,
                            int lamp_parts = 1) {
   constexpr int size = 16, region = 4, regions = size / region, k = 3;
   const Scene scene = make_cornell_box(3.0, lamp_parts);
@@ -308,9 +272,8 @@ double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, doubl
   const Stats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
     return estimate_path_radiance(scene, ray, k, rng, count);
   }, 1024, seed ^ 0xa5a5ULL);
-  const Stats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
-    return radiance(scene, ray, nee_depth_cut(k), rng, count);
-  }, 64, seed);
+  const Stats student = stats_by_region<size, region>(producer.a5_regions(nee_estimator(nee_depth_cut(k)), lamp_parts,
+                                                                          size, 64, seed), 64);
   double p_min = 1.0;
   for (int r = 0; r < regions * regions; ++r) {
     const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
@@ -328,13 +291,13 @@ double nee_regions_p_value(Nee&& radiance, std::uint64_t seed, int& worst, doubl
 /// check_nee_regions on the box whose lamp is in `lamp_parts` strips: the verdict, and the
 /// worst region's distance when it fails (a diagnosis of the 1/N_lights when it is off by a
 /// factor and there are several lights).
-template <class Nee>
-TaskResult nee_regions_verdict(Nee&& radiance, int lamp_parts, const std::string& scene) {
+template <class P>
+TaskResult nee_regions_verdict(P&& producer, int lamp_parts, const std::string& scene) {
   constexpr int regions = 4;
   int worst = 0;
   double worst_z = 0.0, worst_ratio = 1.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return nee_regions_p_value(radiance, seed, worst, worst_z, worst_ratio, lamp_parts);
+    return nee_regions_p_value(producer, seed, worst, worst_z, worst_ratio, lamp_parts);
   });
   std::string message = fmt::format("{} 16 x 16, k = 3, regions of 4 x 4 pixels: {}", scene, v.describe());
   if (v.passed()) return {true, message};
@@ -352,18 +315,18 @@ TaskResult nee_regions_verdict(Nee&& radiance, int lamp_parts, const std::string
   return {false, message};
 }
 
-template <class Nee>
-TaskResult check_nee_regions(Nee&& radiance) {
-  return nee_regions_verdict(radiance, 1, "Cornell box");
+template <class P>
+TaskResult check_nee_regions(P&& producer) {
+  return nee_regions_verdict(producer, 1, "Cornell box");
 }
 
 /// The same with the lamp cut into two strips side by side (make_cornell_box's lamp_parts): the
 /// same light and image, but the light sampler picks one of two emitters, so its pdf carries
 /// the 1/2 of that pick. Forgetting it (p_A for p_A / 2) halves the direct light: every region
 /// is darker than the path tracer's (and brighter if the 1/N is applied twice over).
-template <class Nee>
-TaskResult check_nee_two_lights(Nee&& radiance) {
-  return nee_regions_verdict(radiance, 2, "Cornell box with its lamp in two parts,");
+template <class P>
+TaskResult check_nee_two_lights(P&& producer) {
+  return nee_regions_verdict(producer, 2, "Cornell box with its lamp in two parts,");
 }
 
 /// a5.3 where a sphere light shows more than its cap: cornell-spheres' light is a ball sunk
@@ -372,8 +335,8 @@ TaskResult check_nee_two_lights(Nee&& radiance) {
 /// and the light, where the light is seen beyond its cap. 4000 rays onto that strip of wall at
 /// depth 1 (the wall's direct light): NEE's mean against a4's path tracer's (4000 paths at
 /// another seed), a z-test from both sample variances, at the three grading seeds.
-template <class Nee>
-double nee_beyond_cap_p_value(Nee&& radiance, std::uint64_t seed, double& ratio) {
+template <class P>
+double nee_beyond_cap_p_value(P&& producer, std::uint64_t seed, double& ratio) {
   const Scene scene = make_cornell_spheres();
   constexpr int n = 4000;
   const auto collect = [&](auto&& estimate, std::uint64_t at_seed) {
@@ -392,19 +355,18 @@ double nee_beyond_cap_p_value(Nee&& radiance, std::uint64_t seed, double& ratio)
   const RunningStats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
     return estimate_path_radiance(scene, ray, 1, rng, count);
   }, seed ^ 0x5a5aULL);
-  const RunningStats student = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
-    return radiance(scene, ray, nee_depth_cut(1), rng, count);
-  }, seed);
+  RunningStats student;
+  for (double x : producer.a5_wall(nee_estimator(nee_depth_cut(1)), n, seed)) student.add(x);
   ratio = student.mean() / reference.mean();
   return z_test_p_value(student.mean(), reference.mean(),
                         std::sqrt(student.variance() / n + reference.variance() / n));
 }
 
-template <class Nee>
-TaskResult check_nee_light_beyond_cap(Nee&& radiance) {
+template <class P>
+TaskResult check_nee_light_beyond_cap(P&& producer) {
   double ratio = 1.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return nee_beyond_cap_p_value(radiance, seed, ratio);
+    return nee_beyond_cap_p_value(producer, seed, ratio);
   });
   std::string d;
   if (!v.passed() && ratio < 0.1)

@@ -15,9 +15,14 @@ The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp n
                  whose points.json gives 100 a test, with no editable file changed
   early_exit     a sampler that calls std::_Exit(0), so CTest sees its tests pass
   atexit_exit    a wrong sampler whose exit hook turns the failed program's status into 0
-  forged_report  (open) a sampler that writes passing gtest reports itself, then exits with 0:
-                 code that runs in the test's process can forge what it reports
-Exit status: 0 every closed attack gained nothing, 1 otherwise, 2 not run as root.
+  forged_report  a sampler that writes passing gtest reports itself (where GTEST_OUTPUT says, or
+                 where the grading folder's layout puts them), then exits with 0
+  fake_frames    a sampler that writes answer frames of its own (a made-up token) to stdout and
+                 every descriptor, then ends the subject mid-request
+a2 is split (subject/checker): the sampler runs in the subject program, as nobody, and the
+checker that writes the reports holds no student code. Each attack is held to the pole sampler,
+the same submission without the attack.
+Exit status: 0 every attack gained nothing, 1 otherwise, 2 not run as root.
 """
 
 import json
@@ -155,18 +160,25 @@ def main():
         sphere=sphere_with("mcrt_attack::succeed_at_exit(); return {0.0, 0.0, 1.0};", "atexit_exit.inc")))
     report("atexit_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
 
-    # forged_report: open, reported
+    # forged_report and fake_frames: the verdicts are the checker's, out of the student code's reach
     run, _, graded = grade(root, build, submission(
         root, os.path.join(work, "forged"), sphere=sphere_with("mcrt_attack::forge_report_and_leave();",
                                                                  "forged_report.inc")))
-    print(f"  open   forged_report (expected, needs the subject/checker split): graded {score(graded)} "
-          f"against the pole sampler's {pole}", flush=True)
+    report("forged_report", score(graded) is not None and score(graded) <= pole,
+           f"graded {score(graded)} against the pole sampler's {pole}")
+    run, _, graded = grade(root, build, submission(
+        root, os.path.join(work, "frames"), sphere=sphere_with("mcrt_attack::fake_frames_and_leave();",
+                                                                 "fake_frames.inc")))
+    named = graded is not None and "gave no valid answer to request a2_samples" in json.dumps(graded)
+    report("fake_frames", score(graded) is not None and score(graded) <= pole and named,
+           f"graded {score(graded)} against the pole sampler's {pole}; the feedback "
+           f"{'names' if named else 'does not name'} the unanswered request")
 
     shutil.rmtree(RESULTS_DIR, ignore_errors=True)
     if failures:
         print(f"run_attacks: attacks that gained something: {', '.join(failures)}", file=sys.stderr)
         sys.exit(1)
-    print("run_attacks: every closed attack gained nothing")
+    print("run_attacks: every attack gained nothing")
 
 
 if __name__ == "__main__":

@@ -3,17 +3,16 @@
 #include <gtest/gtest.h>
 
 #include "assignments/a3/a3_checks.hpp"
+#include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
 
 TEST(A3Hidden, RayCountsAtFiveBranches) {
-  const Scene furnace = make_furnace(0.3, 1.0);
   for (int k : {0, 1, 2, 3}) {
-    Rng rng(17, static_cast<std::uint64_t>(k));
-    RayCount count;
-    incident_radiance(furnace, {Vec3(0.0), {1.0, 0.0, 0.0}}, 0, {5, k}, rng, count);
-    EXPECT_EQ(count.rays, geometric_ray_count(5, k)) << diagnose_ray_count(count.rays, 5, k);
+    const std::uint64_t rays =
+        subject().recursive_single(0.3, 1.0, Vec3(0.0), {1.0, 0.0, 0.0}, 5, k, 17, static_cast<std::uint64_t>(k)).rays;
+    EXPECT_EQ(rays, geometric_ray_count(5, k)) << diagnose_ray_count(rays, 5, k);
   }
 }
 

@@ -1,20 +1,18 @@
-// Hidden tests of a5: roulette from vertex 0 at another q; importance sampling at another
+// Hidden tests of a5 (their parameters travel as requests: the subject holds no hidden test): roulette from vertex 0 at another q; importance sampling at another
 // albedo; NEE's depth cut traces at most 2k + 1 rays and a black room's NEE is the emission.
 
 #include <gtest/gtest.h>
 
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
 
 TEST(A5Hidden, RouletteFromVertexZeroAtQPointNine) {
-  const Scene furnace = make_furnace(0.6, 1.0);
   const Roulette roulette{0, RoulettePolicy::fixed, 0.9, 0.05};
   RunningStats L;
-  for (const FurnacePath& p : a5_furnace_paths(furnace, 20000, 4243, 5, [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
-         return estimate_path_radiance_roulette(s, r, roulette, rng, c);
-       }))
+  for (const FurnacePath& p : subject().a5_paths(roulette_estimator(roulette), 0.6, 20000, 4243, 5))
     L.add(p.radiance);
   const double expected = furnace_radiance_untruncated(0.6, 1.0);
   const double p = z_test_p_value(L.mean(), expected, std::sqrt(furnace_roulette_variance(0.6, 1.0, 0, 0.9) / 20000.0));
@@ -22,19 +20,14 @@ TEST(A5Hidden, RouletteFromVertexZeroAtQPointNine) {
 }
 
 TEST(A5Hidden, CosineFurnaceAtAlbedoPointEightIsExact) {
-  const Scene furnace = make_furnace(0.8, 1.0);
-  Rng rng(17, 17);
-  RayCount count;
-  const double L = average(estimate_importance_path_radiance(furnace, {Vec3(0.0), {0.0, 1.0, 0.0}}, 6, cosine_power_pdf(1), rng, count));
+  const double L =
+      subject().a5_single(importance_estimator(6, cosine_power_pdf(1)), 0.8, 1.0, {0.0, 1.0, 0.0}, 17, 17).radiance;
   EXPECT_NEAR(L, furnace_radiance(0.8, 1.0, 6), 1e-9 * L) << "with the cosine pdf every furnace path is exact";
 }
 
 TEST(A5Hidden, NeeDepthCutTracesAtMostTwoKPlusOneRays) {
-  const Scene furnace = make_furnace(0.5, 1.0);
-  Rng rng(19, 19);
-  RayCount count;
-  estimate_nee_radiance(furnace, {Vec3(0.0), {0.0, 0.0, 1.0}}, nee_depth_cut(4), rng, count);
-  EXPECT_EQ(count.rays, 9u) << "k = 4: 5 closest-hit queries and one shadow ray at each of the 4 vertices before the cut";
+  const PathSample p = subject().a5_single(nee_estimator(nee_depth_cut(4)), 0.5, 1.0, {0.0, 0.0, 1.0}, 19, 19);
+  EXPECT_EQ(p.rays, 9u) << "k = 4: 5 closest-hit queries and one shadow ray at each of the 4 vertices before the cut";
 }
 
 }  // namespace

@@ -1,0 +1,119 @@
+#pragma once
+// What a4's checks ask of a path tracer, produced in bulk: `radiance(scene, ray, max_depth,
+// rng, count)` as estimate_path_radiance. LocalSubject answers a4's requests with these (the
+// student's tracer); the checks run them on the instructor's reference and diagnosis_test.cpp
+// on known-wrong tracers. No test and no verdict here: the subject program includes it.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/rng.hpp"
+#include "geometry/camera.hpp"
+#include "integration/statistics.hpp"
+#include "assignments/subject/requests.hpp"
+#include "render/scene.hpp"
+#include "sampling/sphere.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// A small scene lit by a white sky (a large emitting sphere, Le = 1) that every escaping
+/// direction of a uniform sampler finds, so renders of a few hundred paths per pixel have small
+/// errors: a red ball on a grey ground, seen from slightly above.
+inline Scene make_sky_scene() {
+  Scene scene;
+  scene.name = "sky";
+  const auto sky = scene.add_material({Color(0.0), Color(1.0)});
+  const auto ground = scene.add_material({Color(0.5), Color(0.0)});
+  const auto ball = scene.add_material({Color(0.7, 0.3, 0.2), Color(0.0)});
+  scene.add_sphere({Vec3(0.0), 100.0, sky});
+  scene.add_sphere({Vec3(0.0, -1001.0, 0.0), 1000.0, ground});
+  scene.add_sphere({Vec3(0.0), 1.0, ball});
+  scene.camera = {Vec3(0.0, 0.5, 4.0), Vec3(0.0, -0.15, -1.0), Vec3(0.0, 1.0, 0.0), 0.9, 0.0};
+  return scene;
+}
+
+/// Values of `radiance` for n paths from the furnace's centre in uniformly random directions.
+template <class Radiance>
+std::vector<double> furnace_values(Radiance&& radiance, double albedo, int depth, int n,
+                                   std::uint64_t seed, std::uint64_t block) {
+  const Scene furnace = make_furnace(albedo, 1.0);
+  std::vector<double> values;
+  RayCount count;
+  for (int i = 0; i < n; ++i) {
+    Rng rng(seed, stream_index(block, static_cast<std::uint64_t>(i)));
+    const Ray ray{Vec3(0.0), sample_uniform_sphere(rng.uniform2())};
+    values.push_back(average(radiance(furnace, ray, depth, rng, count)));
+  }
+  return values;
+}
+
+/// The mean channel radiance of `estimate` per region x region block of a Size x Size image:
+/// spp samples per pixel, sample s of pixel p drawn from the stream (p, s).
+template <int Size, int Region, class Estimate>
+std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
+    const Camera& camera, Estimate&& estimate, int spp, std::uint64_t seed) {
+  constexpr int regions = Size / Region;
+  std::array<RunningStats, regions * regions> stats;
+  RayCount count;
+  for (int y = 0; y < Size; ++y)
+    for (int x = 0; x < Size; ++x)
+      for (int s = 0; s < spp; ++s) {
+        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * Size + x),
+                                   static_cast<std::uint64_t>(s)));
+        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(
+            average(estimate(ray, rng, count)));
+      }
+  return stats;
+}
+
+/// Region statistics of per-sample values listed in region_stats's order (rows, pixels,
+/// samples), added in that order so that they equal region_stats's; a missing value is NaN.
+template <int Size, int Region>
+std::array<RunningStats, (Size / Region) * (Size / Region)> stats_by_region(const std::vector<double>& values, int spp) {
+  constexpr int regions = Size / Region;
+  std::array<RunningStats, regions * regions> stats;
+  std::size_t i = 0;
+  for (int y = 0; y < Size; ++y)
+    for (int x = 0; x < Size; ++x)
+      for (int s = 0; s < spp; ++s, ++i)
+        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(i < values.size() ? values[i]
+                                                                                                   : std::nan(""));
+  return stats;
+}
+
+/// The channel-mean radiance of every sample of the sky scene at Size x Size pixels (spp per
+/// pixel, depth k), in the order region_stats adds them: rows, then pixels, then samples.
+template <class Radiance>
+std::vector<double> sky_values(Radiance&& radiance, int size, int k, int spp, std::uint64_t seed) {
+  const Scene scene = make_sky_scene();
+  const Camera camera(scene.camera, size, size);
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(size * size * spp));
+  RayCount count;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      for (int s = 0; s < spp; ++s) {
+        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
+        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+        values.push_back(average(radiance(scene, ray, k, rng, count)));
+      }
+  return values;
+}
+
+/// One path of `radiance` in the furnace (albedo, emission) from its centre along `direction`,
+/// drawn from Rng(seed, stream): its channel-mean radiance and its rays.
+
+template <class Radiance>
+PathSample furnace_path(Radiance&& radiance, double albedo, double emission, Vec3 direction, int depth,
+                        std::uint64_t seed, std::uint64_t stream) {
+  const Scene furnace = make_furnace(albedo, emission);
+  Rng rng(seed, stream);
+  RayCount count;
+  const double L = average(radiance(furnace, {Vec3(0.0), direction}, depth, rng, count));
+  return {L, count.rays};
+}
+
+}  // namespace mcrt::testing::assignment

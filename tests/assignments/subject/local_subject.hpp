@@ -1,0 +1,135 @@
+#pragma once
+// LocalSubject: every request answered by calling the student's functions in this process.
+// The ordinary test suite and a kit's self-grading use it (fast, nothing to start); the
+// subject program answers a checker's requests with it (subject_main.cpp). It is the only
+// place of the assignment tests that calls a student's function.
+
+#include <stdexcept>
+#include <vector>
+
+#include "assignments/a1/a1_produce.hpp"
+#include "assignments/a3/a3_produce.hpp"
+#include "assignments/a4/a4_produce.hpp"
+#include "assignments/a5/a5_produce.hpp"
+#include "assignments/subject/requests.hpp"
+#include "integration/disk_area.hpp"
+#include "integration/monte_carlo.hpp"
+#include "integration/quadrature.hpp"
+#include "render/path_tracer.hpp"
+#include "sampling/hemisphere.hpp"
+#include "sampling/plane.hpp"
+#include "sampling/sphere.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// a1's producer with the student's functions.
+inline auto student_a1() {
+  return a1_producer([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); },
+                     [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); },
+                     [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); },
+                     [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); },
+                     [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); });
+}
+
+/// a5's producer with the student's three estimators.
+inline auto student_a5() {
+  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, estimate_nee_radiance);
+}
+
+struct LocalSubject {
+  /// a1: the student's estimators, each from Rng(seed, stream) (A1Producer), and the answers file.
+  double a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream) const {
+    return student_a1().a1_disk(n, seed, stream);
+  }
+  double a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream) const {
+    return student_a1().a1_ball(k, n, seed, stream);
+  }
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
+                                            std::uint64_t stream) const {
+    return student_a1().a1_ball_counts(calls, seed, stream);
+  }
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
+                                  std::uint64_t stream) const {
+    return student_a1().a1_monte_carlo(f, param, s, n, seed, stream);
+  }
+  double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) const {
+    return student_a1().a1_trapezoid(f, param, s, n);
+  }
+  A1AnswerFile a1_answers() const { return read_a1_answers(MCRT_A1_ANSWERS); }
+
+  /// a2: the sampler `kind` at each u (a disk point with z = 0).
+  std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u) const {
+    std::vector<Vec3> out;
+    out.reserve(u.size());
+    for (const Vec2& x : u) {
+      switch (kind) {
+        case SamplerKind::uniform_hemisphere: out.push_back(sample_uniform_hemisphere(x)); break;
+        case SamplerKind::cosine_hemisphere: out.push_back(sample_cosine_hemisphere(x)); break;
+        case SamplerKind::uniform_sphere: out.push_back(sample_uniform_sphere(x)); break;
+        case SamplerKind::unit_disk: { const Vec2 d = sample_uniform_disk(x); out.emplace_back(d.x, d.y, 0.0); break; }
+      }
+    }
+    return out;
+  }
+
+  /// a2: the pdf of sampler `kind` at each point (per steradian; per unit area for the disk).
+  std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points) const {
+    std::vector<double> out;
+    out.reserve(points.size());
+    for (const Vec3& w : points) {
+      switch (kind) {
+        case SamplerKind::uniform_hemisphere: out.push_back(uniform_hemisphere_pdf()); break;
+        case SamplerKind::cosine_hemisphere: out.push_back(cosine_hemisphere_pdf(w.z)); break;
+        case SamplerKind::uniform_sphere: out.push_back(uniform_sphere_pdf()); break;
+        case SamplerKind::unit_disk: out.push_back(uniform_disk_pdf()); break;
+      }
+    }
+    return out;
+  }
+
+  /// a3: one call of incident_radiance (A3Producer::recursive_single).
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
+                              std::uint64_t seed, std::uint64_t stream) const {
+    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  }
+
+  /// a3: furnace samples of incident_radiance (A3Producer::recursive_furnace).
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
+                                        std::uint64_t block) const {
+    return a3_producer(incident_radiance).recursive_furnace(albedo, n, k, samples, seed, block);
+  }
+
+  /// a4: n furnace paths of estimate_path_radiance (furnace_values).
+  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) const {
+    return furnace_values(estimate_path_radiance, albedo, depth, n, seed, block);
+  }
+
+  /// a4: every sample of the sky scene's size x size render (sky_values).
+  std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed) const {
+    return sky_values(estimate_path_radiance, size, depth, spp, seed);
+  }
+
+  /// a4: one furnace path from the centre along `direction` (furnace_path).
+  PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
+                         std::uint64_t stream) const {
+    return furnace_path(estimate_path_radiance, albedo, emission, direction, depth, seed, stream);
+  }
+
+  /// a5: the estimator `e` names, run by A5Producer with the student's three estimators.
+  std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
+                                    std::uint64_t block) const {
+    return student_a5().a5_paths(e, albedo, n, seed, block);
+  }
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
+                       std::uint64_t stream) const {
+    return student_a5().a5_single(e, albedo, emission, direction, seed, stream);
+  }
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed) const {
+    return student_a5().a5_regions(e, lamp_parts, size, spp, seed);
+  }
+  std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed) const { return student_a5().a5_wall(e, n, seed); }
+
+  void stop() {}  // nothing runs apart from this process
+};
+
+}  // namespace mcrt::testing::assignment

@@ -1,0 +1,101 @@
+#pragma once
+// What a check may ask of the code under test, shared by LocalSubject (the student's functions
+// called in-process), RemoteSubject (the same requests sent to the subject program) and the
+// subject program's dispatcher. No student header is included here: the checker uses this.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/math.hpp"
+#include "integration/domain.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// a2's four samplers (each with its pdf).
+enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk };
+
+/// Request names, as they travel in frames.
+inline constexpr const char* k_request_a2_samples = "a2_samples";
+inline constexpr const char* k_request_a2_pdf = "a2_pdf";
+inline constexpr const char* k_request_a3_single = "a3_single";
+inline constexpr const char* k_request_a3_furnace = "a3_furnace";
+inline constexpr const char* k_request_a4_furnace = "a4_furnace";
+inline constexpr const char* k_request_a4_sky = "a4_sky";
+inline constexpr const char* k_request_a4_single = "a4_single";
+
+/// One path's channel-mean radiance and its rays (a4's single path).
+struct PathSample {
+  double radiance = 0.0;
+  std::uint64_t rays = 0;
+};
+
+/// a1's integrands (a1_produce.hpp): exp(-x^2), 3x + 1, x^2, a constant.
+enum class A1Integrand { gaussian, line, square, constant };
+
+/// A basic Monte Carlo estimate with its standard error (MonteCarloEstimate's fields).
+struct EstimateAndError {
+  double estimate = 0.0;
+  double standard_error = 0.0;
+};
+
+/// a1.5's answers file as the subject read it.
+struct A1AnswerFile {
+  bool readable = false;
+  bool valid = false;
+  std::array<std::optional<double>, 5> values{};
+};
+
+inline constexpr const char* k_request_a1_disk = "a1_disk";
+inline constexpr const char* k_request_a1_ball = "a1_ball";
+inline constexpr const char* k_request_a1_ball_counts = "a1_ball_counts";
+inline constexpr const char* k_request_a1_monte_carlo = "a1_monte_carlo";
+inline constexpr const char* k_request_a1_trapezoid = "a1_trapezoid";
+inline constexpr const char* k_request_a1_answers = "a1_answers";
+
+/// One of a5's estimators and its parameters, as numbers (a5_produce.hpp converts them).
+struct A5Estimator {
+  enum Kind { roulette, importance, nee };
+  Kind kind = roulette;
+  int min_depth = 0;   ///< roulette, nee: the Roulette
+  int policy = 0;
+  double q = 0.0;
+  double floor = 0.0;
+  int max_depth = -1;  ///< importance, nee
+  int pdf_kind = 0;    ///< importance: the HemispherePdf
+  int pdf_m = 0;
+};
+
+inline constexpr std::size_t k_a5_estimator_numbers = 8;
+
+inline void append(std::vector<double>& out, const A5Estimator& e) {
+  out.insert(out.end(), {static_cast<double>(e.kind), static_cast<double>(e.min_depth), static_cast<double>(e.policy),
+                         e.q, e.floor, static_cast<double>(e.max_depth), static_cast<double>(e.pdf_kind),
+                         static_cast<double>(e.pdf_m)});
+}
+
+inline constexpr const char* k_request_a5_paths = "a5_paths";
+inline constexpr const char* k_request_a5_single = "a5_single";
+inline constexpr const char* k_request_a5_regions = "a5_regions";
+inline constexpr const char* k_request_a5_wall = "a5_wall";
+
+/// A seed, block or count sent as a double: exact below 2^53, which every request stays under.
+inline double as_number(std::uint64_t x) { return static_cast<double>(x); }
+
+/// Points travel as x, y, z triples (a disk point with z = 0).
+inline std::vector<double> flatten(const std::vector<Vec3>& points) {
+  std::vector<double> out;
+  out.reserve(points.size() * 3);
+  for (const Vec3& p : points) out.insert(out.end(), {p.x, p.y, p.z});
+  return out;
+}
+
+inline std::vector<Vec3> unflatten3(const double* values, std::size_t count) {
+  std::vector<Vec3> out;
+  out.reserve(count / 3);
+  for (std::size_t i = 0; i + 2 < count; i += 3) out.emplace_back(values[i], values[i + 1], values[i + 2]);
+  return out;
+}
+
+}  // namespace mcrt::testing::assignment
