@@ -84,11 +84,12 @@ std::array<RunningStats, (Size / Region) * (Size / Region)> stats_by_region(cons
   return stats;
 }
 
-/// The channel-mean radiance of every sample of the sky scene at Size x Size pixels (spp per
-/// pixel, depth k), in the order region_stats adds them: rows, then pixels, then samples.
+/// The channel-mean radiance(scene, ray, rng, count) of every camera sample of `scene` at
+/// size x size pixels and spp per pixel, in the order region_stats adds them: rows, then
+/// pixels, then samples, each sample on its own stream of `seed`.
 template <class Radiance>
-std::vector<double> sky_values(Radiance&& radiance, int size, int k, int spp, std::uint64_t seed) {
-  const Scene scene = make_sky_scene();
+std::vector<double> every_pixel_sample(const Scene& scene, int size, int spp, std::uint64_t seed,
+                                       Radiance&& radiance) {
   const Camera camera(scene.camera, size, size);
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(size * size * spp));
@@ -98,9 +99,18 @@ std::vector<double> sky_values(Radiance&& radiance, int size, int k, int spp, st
       for (int s = 0; s < spp; ++s) {
         Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
         const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-        values.push_back(average(radiance(scene, ray, k, rng, count)));
+        values.push_back(average(radiance(scene, ray, rng, count)));
       }
   return values;
+}
+
+/// Every sample of the sky scene at depth k (every_pixel_sample).
+template <class Radiance>
+std::vector<double> sky_values(Radiance&& radiance, int size, int k, int spp, std::uint64_t seed) {
+  return every_pixel_sample(make_sky_scene(), size, spp, seed,
+                            [&](const Scene& scene, const Ray& ray, Rng& rng, RayCount& count) {
+                              return radiance(scene, ray, k, rng, count);
+                            });
 }
 
 /// One path of `radiance` in the furnace (albedo, emission) from its centre along `direction`,

@@ -13,7 +13,6 @@
 
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/subject/requests.hpp"
-#include "geometry/camera.hpp"
 #include "render/importance_path_tracer.hpp"
 #include "render/next_event_estimation.hpp"
 #include "render/russian_roulette.hpp"
@@ -104,19 +103,10 @@ struct A5Producer {
   /// Every sample of the Cornell box (its lamp at 3x its area, in `lamp_parts` strips) at
   /// size x size pixels, spp per pixel, in region_stats's order.
   std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed) const {
-    const Scene scene = make_cornell_box(3.0, lamp_parts);
-    const Camera camera(scene.camera, size, size);
-    std::vector<double> values;
-    values.reserve(static_cast<std::size_t>(size * size * spp));
-    RayCount count;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x)
-        for (int s = 0; s < spp; ++s) {
-          Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
-          const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-          values.push_back(average(run(e, scene, ray, rng, count)));
-        }
-    return values;
+    return every_pixel_sample(make_cornell_box(3.0, lamp_parts), size, spp, seed,
+                              [&](const Scene& scene, const Ray& ray, Rng& rng, RayCount& count) {
+                                return run(e, scene, ray, rng, count);
+                              });
   }
 
   /// n rays onto cornell-spheres' left wall between the ceiling and the light (y in [82, 84],
