@@ -113,27 +113,6 @@ RayWork predicted_work(const Options& o) {
           "spp x pixels x 32"};
 }
 
-// rmse_vs_spp.csv: one row per spp, its two-render RMS error, its RMS error against the
-// reference (empty without one) and the cost of both renders.
-Table rmse_table() {
-  return Table({{"spp", Column::integer},
-                {"rmse", Column::real, 9},  // sqrt(mean over pixels and channels of (A - B)^2 / 2)
-                {"rmse_vs_reference", Column::real, 9},  // sqrt(mean of (A - R)^2)
-                {"seconds", Column::real, 6},
-                {"rays", Column::integer},
-                {"rays_per_second", Column::real, 6}});
-}
-
-// depth_bias.csv: per --bias-depths depth and spp, the two errors of a pair rendered at that
-// depth (the same samples as the main pairs, cut shallower).
-Table depth_bias_table() {
-  return Table({{"depth", Column::integer},
-                {"spp", Column::integer},
-                {"rmse", Column::real, 9},               // two-render: noise only
-                {"rmse_vs_reference", Column::real, 9},  // noise and the cut's bias
-                {"rays", Column::integer}});
-}
-
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
 // images of growing spp share their first samples, so they show one image converging.
 std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Camera& camera,

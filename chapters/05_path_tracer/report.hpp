@@ -21,6 +21,28 @@
 
 namespace mcrt {
 
+// rmse_vs_spp.csv: one row per spp, its two-render RMS error, its RMS error against the
+// reference (empty without one) and the cost of both renders.
+inline Table rmse_table() {
+  return Table({{"spp", Column::integer},
+                {"rmse", Column::real, 9},  // sqrt(mean over pixels and channels of (A - B)^2 / 2)
+                {"rmse_vs_reference", Column::real, 9},  // sqrt(mean of (A - R)^2)
+                {"seconds", Column::real, 6},
+                {"rays", Column::integer},
+                {"rays_per_second", Column::real, 6}});
+}
+
+// depth_bias.csv: per --bias-depths depth and spp, the two errors of a pair rendered at that
+// depth (the same samples as the main pairs, cut shallower).
+inline Table depth_bias_table() {
+  return Table({{"depth", Column::integer},
+                {"spp", Column::integer},
+                {"rmse", Column::real, 9},               // two-render: noise only
+                {"rmse_vs_reference", Column::real, 9},  // noise and the cut's bias
+                {"rays", Column::integer}});
+}
+
+
 // The slope of log RMS error against log spp; NaN with fewer than two points or a zero error.
 inline double fitted_slope(const Table& errors) {
   const std::vector<double> spp = errors.numbers("spp"), rmse = errors.numbers("rmse");
