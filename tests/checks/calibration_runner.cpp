@@ -124,15 +124,16 @@ Calibration pilot(const StatisticalCheck& check, const Options& o) {
 
 // Seeds per check within the budget: cheapest first, each taking an equal share of what is
 // left (clamped to [min_seeds, seeds]), so the time cheap checks do not use goes to the rest.
-std::vector<int> allocate_seeds(const std::vector<Calibration>& pilots, const Options& o) {
+// `left` is the seconds left for checks first.. (the pilots already run); `slowdown` scales the
+// pilots' costs by how much slower the finished checks ran than their pilots predicted (a
+// machine that got busier), so the run keeps to its budget.
+std::vector<int> allocate_seeds(const std::vector<Calibration>& pilots, std::size_t first,
+                                double left, double slowdown, const Options& o) {
   std::vector<double> cost(pilots.size());  // seconds per seed
-  double left = o.budget;
-  for (std::size_t k = 0; k < pilots.size(); ++k) {
-    cost[k] = std::max(pilots[k].seconds, 1e-6) / k_pilot_seeds;
-    left -= pilots[k].seconds;
-  }
-  std::vector<std::size_t> order(pilots.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  for (std::size_t k = 0; k < pilots.size(); ++k)
+    cost[k] = slowdown * std::max(pilots[k].seconds, 1e-6) / k_pilot_seeds;
+  std::vector<std::size_t> order;
+  for (std::size_t k = first; k < pilots.size(); ++k) order.push_back(k);
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cost[a] < cost[b]; });
   std::vector<int> seeds(pilots.size(), o.min_seeds);
   for (std::size_t r = 0; r < order.size(); ++r) {
@@ -308,13 +309,30 @@ int run(const CLI::App& app, Options o) {
   // The run provokes many designed failures; their reports would only be noise.
   set_failure_reports(false);
   const double level = sidak_alpha(0.01, 4 * static_cast<int>(checks.size()));
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds_since_start = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   std::vector<Calibration> rows;
   for (const StatisticalCheck* check : checks) rows.push_back(pilot(*check, o));
-  const std::vector<int> seeds = allocate_seeds(rows, o);
+  const double pilots_seconds = seconds_since_start();
+  // The plan at the pilots' speed; each check is planned again before it runs, from the time
+  // left and the speed measured so far, never above its first plan (the progress bar's total).
+  const std::vector<int> planned = allocate_seeds(rows, 0, o.budget - pilots_seconds, 1.0, o);
   std::uint64_t total = 0;
-  for (int n : seeds) total += static_cast<std::uint64_t>(n - k_pilot_seeds);
+  for (int n : planned) total += static_cast<std::uint64_t>(n - k_pilot_seeds);
   ProgressBar progress("calibration", total, o.common.quiet);
-  for (std::size_t k = 0; k < rows.size(); ++k) finish(rows[k], seeds[k], o, level, progress);
+  double predicted = 0.0, spent = 0.0;  // seconds of the finished checks' extra seeds
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const double slowdown = predicted > 0.0 ? std::max(1.0, spent / predicted) : 1.0;
+    const std::vector<int> seeds =
+        allocate_seeds(rows, k, o.budget - seconds_since_start(), slowdown, o);
+    const int n = std::min(seeds[k], planned[k]);
+    const double pilot_seconds = rows[k].seconds;
+    finish(rows[k], n, o, level, progress);
+    predicted += pilot_seconds / k_pilot_seeds * (n - k_pilot_seeds);
+    spent += rows[k].seconds - pilot_seconds;
+  }
   progress.finish();
 
   write_outputs(o.common.out, rows, o.common.seed);

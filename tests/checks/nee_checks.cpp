@@ -165,8 +165,14 @@ MCRT_STATISTICAL_CHECK(mis_furnace_mean_with_roulette, 1e-4) {
   return furnace_roulette_check(seed, 1, true);
 }
 
-// 12 x 9 pixels, 3 x 3 blocks (12 blocks x 3 channels), 600 samples per pixel per estimator,
-// depth 4: chapter 07's cosine estimator against NEE and against MIS (power).
+// 12 x 9 pixels, 3 x 3 blocks (12 blocks x 3 channels), 6000 samples per pixel per estimator,
+// depth 4: chapter 07's cosine estimator against NEE and against MIS (power). The cosine
+// estimator finds the small lamp rarely, so its block means are skewed: at 600 samples correct
+// code was rejected at 26 of 300 seeds at 1e-4 (89 at 0.05), at 6000 at none of 300 (18 at
+// 0.05, 6 at 0.01). More samples removed the rejections: the signature of skew, not of bias,
+// which they would expose. The Sidak combination over correlated channels does not give
+// uniform p-values (two-sided KS p 5e-11 over those 300 seeds), so the check is declared "at
+// most alpha" and calibrated one-sided: no rate significantly above its level.
 double agreement_check(std::uint64_t seed, double light_scale, bool mis) {
   SceneParams params;
   params.light_scale = light_scale;
@@ -174,7 +180,7 @@ double agreement_check(std::uint64_t seed, double light_scale, bool mis) {
   constexpr int k_depth = 4;
   const PathEnd end{Roulette{}, k_depth};
   return mcrt::testing::block_agreement_p_value(
-      scene, 12, 9, 3, 600, seed,
+      scene, 12, 9, 3, 6000, seed,
       [&](const Ray& ray, Rng& rng, RayCount& count) {
         return estimate_importance_path_radiance(scene, ray, k_depth, cosine_power_pdf(1), rng,
                                                  count);
@@ -185,13 +191,13 @@ double agreement_check(std::uint64_t seed, double light_scale, bool mis) {
       });
 }
 
-MCRT_STATISTICAL_CHECK(nee_agrees_with_cosine_estimator_by_block, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(nee_agrees_with_cosine_estimator_by_block, 1e-4) {
   return agreement_check(seed, 1.0, false);
 }
-MCRT_STATISTICAL_CHECK(mis_agrees_with_cosine_estimator_by_block, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(mis_agrees_with_cosine_estimator_by_block, 1e-4) {
   return agreement_check(seed, 1.0, true);
 }
-MCRT_STATISTICAL_CHECK(nee_agrees_with_cosine_estimator_by_block_large_light, 1e-4) {
+MCRT_STATISTICAL_CHECK_AT_MOST(nee_agrees_with_cosine_estimator_by_block_large_light, 1e-4) {
   return agreement_check(seed, 3.0, false);
 }
 
