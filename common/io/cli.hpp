@@ -10,18 +10,12 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
+#include "io/cli11.hpp"
+#include "io/json.hpp"
+#include "io/usage_error.hpp"
 #include "render/scene.hpp"
 
 namespace mcrt {
-
-/// A request that parses but cannot be done (too much work, inconsistent flags): exit code 2.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// A chapter's identity, written once: its executable's name, its output folder
 /// (out/<name>) and the "chapter" entry of summary.json.

@@ -10,7 +10,7 @@
 
 #include <sys/resource.h>
 
-#include "io/cli.hpp"
+#include "io/usage_error.hpp"
 
 namespace mcrt {
 

@@ -17,11 +17,11 @@
 
 #include "core/progress.hpp"
 #include "geometry/camera.hpp"
-#include "io/cli.hpp"
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
 #include "io/sha256.hpp"
+#include "io/usage_error.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"

@@ -16,8 +16,7 @@
 #include <filesystem>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "io/json.hpp"
 #include "render/image.hpp"
 #include "render/scene.hpp"
 

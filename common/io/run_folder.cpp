@@ -17,9 +17,9 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
 #include "io/interrupt.hpp"
 #include "io/output.hpp"
+#include "io/usage_error.hpp"
 
 namespace mcrt {
 
@@ -34,7 +34,13 @@ constexpr const char* k_previous_suffix = "-previous";
 // The name of a staging folder made inside --out (beside its files) rather than beside it.
 constexpr const char* k_inside_name = "mcrt";
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+// Appended piece by piece: "'" + a temporary trips a false -Wrestrict in g++ 12.
+std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
 
 std::string reason_of(int error) { return std::error_code(error, std::generic_category()).message(); }
 

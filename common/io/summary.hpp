@@ -7,9 +7,8 @@
 
 #include <filesystem>
 
-#include <nlohmann/json.hpp>
-
 #include "io/cli.hpp"
+#include "io/json.hpp"
 
 namespace mcrt {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
+#include "io/usage_error.hpp"
 
 namespace mcrt {
 

@@ -95,7 +95,7 @@ TaskResult check_basic_estimator(P&& producer) {
   const bool passed = v.passed() && se_ok;
   return {passed, fmt::format("F_N of x^2 on [1, 4]: mean {:.5f} (I = 21); {}\n{}{}", mean,
                               v.describe(), se_note,
-                              v.passed() ? "" : "\n" + diagnose_mean_ratio(mean, integral))};
+                              v.passed() ? std::string() : fmt::format("\n{}", diagnose_mean_ratio(mean, integral)))};
 }
 
 /// a1.4: the trapezoid rule on exp(-x^2) over [0, 1]: its error must fall as h^2 (ratio 4
