@@ -147,10 +147,12 @@ def questions_a2(p):
                1 / (2 * r0), "r = u0 puts probability dr on each ring of area 2 pi r dr"),
         number("cosine_pdf", 1, "The cosine hemisphere pdf at theta0 (per steradian)",
                math.cos(math.radians(theta0)) / math.pi, "p = cos(theta) / pi"),
-        choice("chi_square_cells", 1, "Why (phi, cos theta) cells rather than (phi, theta)?",
-               {"a": "equal (phi, cos theta) cells have equal solid angle, so a uniform density expects equal counts",
-                "b": "fewer cells are needed", "c": "theta cannot be computed from a direction"},
-               "a", "d omega = d(cos theta) d phi"),
+        choice("cosine_cell_counts", 1,
+               "The cosine sampler's points binned in the equal (phi, cos theta) cells: its expected count per cell",
+               {"a": "is the same in every cell",
+                "b": "is larger near the pole, in proportion to the integral of cos(theta) over the cell",
+                "c": "is larger near the horizon"},
+               "b", "expected count = N times the integral of p = cos(theta) / pi over the cell"),
         text("malley", 2, "Show that Malley's method gives p(omega) = cos(theta) / pi.",
              ["1: the disk point has density 1/pi per unit area",
               "1: projecting up, dA = cos(theta) d omega, so p(omega) = cos(theta) / pi"]),
@@ -206,8 +208,10 @@ def questions_a5(p):
     h, s, dx, lights = p["height"], p["side"], p["offset"], p["lights"]
     r2 = h * h + dx * dx
     return [
-        number("reach_probability", 1, "Fixed q after d: the probability that a path reaches vertex j",
-               q ** (j - d), "vertices 0..d always go on; each later one with probability q"),
+        number("no_division_mean", 1,
+               "Fixed q after d, survivors keep their weight (no division by q): the furnace mean (Le = 1)",
+               (1 - a ** (d + 1)) / (1 - a) + a ** d * a * q / (1 - a * q),
+               "vertex j > d is reached with probability q^(j - d) and then adds a^j on average"),
         number("survivor_weight", 1, "E[beta_j] over the paths that reach vertex j (furnace, uniform sampling)",
                a ** j / q ** (j - d), "each survival divides beta by q; each bounce multiplies its mean by a"),
         number("wrong_pdf_mean", 1,
@@ -221,10 +225,11 @@ def questions_a5(p):
         choice("missing_one_over_n", 1, "NEE without the 1/N_lights in p_omega, in a scene of N_lights equal lights: the direct light is",
                {"a": "N_lights times too bright", "b": "N_lights times too dark", "c": "unbiased"},
                "b", "the pdf is N_lights times too large, so each term is N_lights times too small"),
-        text("camera_exception", 2,
-             "Why does NEE add the emission of the camera ray's hit, and of no later hit?",
-             ["1: no light sample stands for the first vertex's emission (there is no vertex before it)",
-              "1: every later hit's emission was the previous vertex's shadow-ray term; adding it again counts it twice"]),
+        text("furnace_blind_spot", 2,
+             "Name one bug of sample_direct_light that the exact furnace test of a5.3 cannot catch, and the test of the handout that catches it.",
+             ["1: a bug the furnace hides: its one light is the whole sphere and nothing occludes (a missing 1/N_lights, "
+              "a visibility test that never blocks, sampling only the visible cap)",
+              "1: the test that sees it: two lights (1/N_lights), the Cornell box regions (shadows), the strip above the ceiling (the cap)"]),
     ]
 
 
