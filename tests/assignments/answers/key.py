@@ -177,10 +177,8 @@ def questions_a3(p):
              "Why does the variance fall with N but the cost grow as N^k? Compare with N = 1 and N times more samples per pixel.",
              ["1: branching averages only the first bounce's estimate over N; deeper levels multiply the rays",
               "1: N = 1 with N times the samples buys the same or more variance reduction for far fewer rays"]),
-        choice("small_depth_misses", 1, "What does the estimator miss when k is small?",
-               {"a": "the light of paths with more than k bounces (it is biased low)",
-                "b": "nothing: it is unbiased at every k", "c": "the emission of the first hit"},
-               "a", "E[L_k] sums T^j Le for j <= k only"),
+        number("deepest_fraction", 1, "The fraction of one camera sample's rays that the deepest level traces",
+               n ** k / rays, "N^k of the 1 + N + ... + N^k rays"),
     ]
 
 
