@@ -59,10 +59,21 @@ PARAMS = {
     },
 }
 
-# The hidden tests' seeds (scripts/make-assignment --variant writes them into the autograder's
-# copy of tests/assignments/hidden/aN_hidden_test.cpp, at `k_hidden_seed = ...;`): the
-# instructor tree's own value is the default.
-HIDDEN_SEED_DEFAULT = {"a3": 17, "a4": 4242, "a5": 4243}
+# The hidden tests' seeds and parameters: scripts/make-assignment --variant writes them into
+# the autograder's copy of tests/assignments/hidden/aN_hidden_test.cpp, at its lines
+# `inline constexpr T k_hidden_NAME = VALUE;`; the default is the instructor tree's own value.
+# The seed is drawn from 2^32 values (None below); the ranges keep every test's premise: a5's
+# roulette path has a finite fourth moment, as at the default (each vertex multiplies it by
+# E[w^4] / q^3 = (16 a^4 / 5) / q^3, at most 0.571 / 0.614 = 0.93 < 1 over the ranges), so its
+# z-test of the mean is as well calibrated as the default's; a furnace albedo below 1.
+HIDDEN = {
+    "a3": {"seed": (17, None), "branches": (5, [3, 5, 6, 7])},
+    "a4": {"seed": (4242, None), "emission": (1.25, [round(0.5 + 0.05 * i, 2) for i in range(31)]),
+           "albedo": (0.8, [round(0.6 + 0.01 * i, 2) for i in range(26)])},
+    "a5": {"seed": (4243, None), "roulette_q": (0.9, [round(0.85 + 0.01 * i, 2) for i in range(11)]),
+           "roulette_albedo": (0.6, [round(0.5 + 0.01 * i, 2) for i in range(16)]),
+           "cosine_albedo": (0.8, [round(0.6 + 0.01 * i, 2) for i in range(31)])},
+}
 
 
 def derived_index(secret, field, size):
@@ -81,14 +92,18 @@ def params(a, secret=None):
             for name, (_, choices) in table.items()}
 
 
-def hidden_seed(a, secret=None):
-    """The seed of `a`'s hidden tests (None: `a` has none): below 2^32, so that seed + a small
-    offset never overflows and every value prints as a plain C++ literal."""
-    if a not in HIDDEN_SEED_DEFAULT:
-        return None
-    if secret is None:
-        return HIDDEN_SEED_DEFAULT[a]
-    return 1000 + derived_index(secret, f"{a}.hidden_seed", 2 ** 32 - 1000)
+def hidden_values(a, secret=None):
+    """{name: value} of `a`'s hidden tests (empty: none varies). A seed is below 2^32, so that
+    seed + a small offset never overflows and every value prints as a plain C++ literal."""
+    out = {}
+    for name, (default, choices) in HIDDEN.get(a, {}).items():
+        if secret is None:
+            out[name] = default
+        elif choices is None:
+            out[name] = 1000 + derived_index(secret, f"{a}.hidden_{name}", 2 ** 32 - 1000)
+        else:
+            out[name] = choices[derived_index(secret, f"{a}.hidden_{name}", len(choices))]
+    return out
 
 
 def ball_volume(k):

@@ -234,6 +234,8 @@ class KitsAndVariants(unittest.TestCase):
         self.assertNotEqual(read(x1, "kit/docs/assignments/a5.md"), read(y, "kit/docs/assignments/a5.md"))
         self.assertNotIn("<!--v:", read(x1, "kit/docs/assignments/a5.md"))
         self.assertNotEqual(read(x1, "hidden/a5_hidden_test.cpp"), read(y, "hidden/a5_hidden_test.cpp"))
+        for name, value in key.hidden_values("a5", "course-2028").items():
+            self.assertIn(f"k_hidden_{name} = {value!r};", read(y, "hidden/a5_hidden_test.cpp"))
         for rel in ("kit/tests/assignments/a5/a5_test.cpp", "kit/tests/assignments/a5/a5_checks.hpp"):
             self.assertEqual(read(x1, rel), read(y, rel))
         for folder in folders.values():
@@ -248,8 +250,9 @@ class KitsAndVariants(unittest.TestCase):
             for qid, q in one.items():
                 if q["kind"] == "number":
                     self.assertNotAlmostEqual(q["answer"], two[qid]["answer"], msg=f"{a} {qid}")
-            self.assertNotEqual(key.hidden_seed(a, "course-2027"), key.hidden_seed(a, "course-2028")) \
-                if key.hidden_seed(a) is not None else None
+            if key.hidden_values(a):  # the hidden tests' seed too
+                self.assertNotEqual(key.hidden_values(a, "course-2027")["seed"],
+                                    key.hidden_values(a, "course-2028")["seed"])
 
     def test_handout_placeholders_name_parameters(self):
         make = tree_copy.load_script(os.path.join(self.tree, "scripts/make-assignment"))
