@@ -66,6 +66,9 @@ class Grading(unittest.TestCase):
                 for line in q["rubric"]:
                     self.assertIn(line, t["output"])
                 self.assertEqual(t["visibility"], "after_published")  # the rubric only after grading
+            manual = sum(q["points"] for q in text_questions)
+            summary = grade_script.results_json(a, list(tests.values()), False, "")["output"]
+            self.assertIn(f"{manual} points of text answers are graded by hand", summary)
 
     def test_wrong_numbers_and_letters_score_zero_with_a_diagnosis(self):
         for a in ASSIGNMENTS:
