@@ -27,34 +27,35 @@ k_rel_tol = 1e-3
 PARAMS = {
     "a1": {
         "k": (3, [3, 4, 5]),                                       # dimension of the ball
-        "s": (1.25, [round(1.05 + 0.01 * i, 2) for i in range(56)]),  # the cube is [-s, s]^k
+        "s": (1.25, [round(1.05 + 0.001 * i, 3) for i in range(551)]),  # the cube is [-s, s]^k
         "n": (800, list(range(500, 5001, 50))),                     # points per estimate
     },
     "a2": {
-        "r0": (0.35, [round(0.15 + 0.01 * i, 2) for i in range(71)]),   # a radius in the disk
-        "theta0": (35, list(range(10, 81))),                            # degrees
+        "r0": (0.35, [round(0.15 + 0.001 * i, 3) for i in range(701)]),  # a radius in the disk
+        "theta0": (35, [round(10 + 0.1 * i, 1) for i in range(701)]),     # degrees
     },
     "a3": {
-        "branches": (6, [3, 4, 5, 6, 7, 9]),
+        "branches": (6, [3, 4, 5, 6, 7, 8, 9]),
         "depth": (4, [3, 4, 5, 6]),
+        "albedo": (0.55, [round(0.3 + 0.001 * i, 3) for i in range(501)]),
         "width": (320, [160, 200, 240, 320, 400, 480, 640]),
         "height": (240, [120, 160, 200, 240, 300, 360]),
-        "spp": (8, [2, 4, 8, 16, 32]),
+        "spp": (8, list(range(2, 65))),
         "rate": (2e8, [1e8, 2e8, 3e8, 5e8, 8e8]),                        # rays per second
     },
     "a4": {
-        "albedo": (0.65, [round(0.3 + 0.01 * i, 2) for i in range(56)]),
+        "albedo": (0.65, [round(0.3 + 0.001 * i, 3) for i in range(551)]),
         "depth": (4, [2, 3, 4, 5, 6, 7]),
-        "emission": (1.5, [round(0.5 + 0.05 * i, 2) for i in range(41)]),
+        "emission": (1.5, [round(0.5 + 0.01 * i, 2) for i in range(201)]),
     },
     "a5": {
-        "albedo": (0.45, [round(0.3 + 0.01 * i, 2) for i in range(41)]),
+        "albedo": (0.45, [round(0.3 + 0.001 * i, 3) for i in range(401)]),
         "min_depth": (2, [1, 2, 3, 4]),
-        "q": (0.75, [round(0.5 + 0.01 * i, 2) for i in range(46)]),
+        "q": (0.75, [round(0.5 + 0.001 * i, 3) for i in range(451)]),
         "vertex": (5, [5, 6, 7, 8]),                               # a vertex beyond min_depth
-        "height": (1.6, [round(1.0 + 0.05 * i, 2) for i in range(41)]),  # of the light above x
-        "side": (0.4, [round(0.2 + 0.02 * i, 2) for i in range(26)]),    # of the square light
-        "offset": (0.5, [round(0.1 + 0.05 * i, 2) for i in range(19)]),  # of y from above x
+        "height": (1.6, [round(1.0 + 0.01 * i, 2) for i in range(201)]),  # of the light above x
+        "side": (0.4, [round(0.2 + 0.01 * i, 2) for i in range(51)]),     # of the square light
+        "offset": (0.5, [round(0.1 + 0.01 * i, 2) for i in range(91)]),   # of y from above x
         "lights": (2, [2, 3, 4]),
     },
 }
@@ -179,21 +180,30 @@ def questions_a2(p):
     ]
 
 
+def furnace_recursion_variance(a, n, k):
+    """Var[L_k] of the recursion in the furnace (Le = 1): V_j = a^2 / (3N) (4 V_(j-1) + m_(j-1)^2)."""
+    v, m = 0.0, 1.0
+    for _ in range(k):
+        v, m = a * a / (3 * n) * (4 * v + m * m), 1 + a * m
+    return v
+
+
 def questions_a3(p):
     n, k = p["branches"], p["depth"]
     rays = sum(n ** j for j in range(k + 1))
     seconds = p["width"] * p["height"] * p["spp"] * rays / p["rate"]
     return [
-        number("rays_per_sample", 1, "Rays of one camera sample at N branches, depth k, in the furnace",
-               rays, "1 + N + N^2 + ... + N^k: the camera ray, then N rays per vertex"),
+        number("rays_per_pixel", 1, "Rays of one pixel at spp samples, N branches, depth k, in the furnace",
+               p["spp"] * rays, "spp x (1 + N + N^2 + ... + N^k): the camera ray, then N rays per vertex"),
         number("image_seconds", 1, "Seconds for the image at the given size, spp and rate", seconds,
                "pixels x spp x rays per sample / rays per second"),
         text("variance_and_cost", 2,
              "Why does the variance fall with N but the cost grow as N^k? Compare with N = 1 and N times more samples per pixel.",
              ["1: branching averages only the first bounce's estimate over N; deeper levels multiply the rays",
               "1: N = 1 with N times the samples buys the same or more variance reduction for far fewer rays"]),
-        number("deepest_fraction", 1, "The fraction of one camera sample's rays that the deepest level traces",
-               n ** k / rays, "N^k of the 1 + N + ... + N^k rays"),
+        number("furnace_variance", 1, "The variance of one camera sample's estimate in the furnace (Le = 1)",
+               furnace_recursion_variance(p["albedo"], n, k),
+               "Var[w L] = E[w^2] E[L^2] - (E[w] E[L])^2 at every level, divided by N"),
     ]
 
 
