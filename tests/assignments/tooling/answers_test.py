@@ -191,6 +191,15 @@ class KitsAndVariants(unittest.TestCase):
                                       f"{a} {q['id']}")
         with open(os.path.join(out, "tests/assignments/a4/answers.json")) as f:
             self.assertTrue(all(v is None for k, v in json.load(f).items() if not k.startswith("_")))
+        # the kit check of scripts/test --kits (leak_check.py) finds a key's answer planted in it
+        leak_check = os.path.join(self.tree, "scripts/leak_check.py")
+        self.assertEqual(tree_copy.run_script(leak_check, ["a4", out], self.tree)[0], 0)
+        q = next(q for q in key.questions("a5") if q["id"] == "light_term")
+        with open(os.path.join(out, "tests/assignments/a4/answers.json"), "a") as f:
+            f.write(f"light term {q['answer']:.5g}\n")
+        status, output = tree_copy.run_script(leak_check, ["a4", out], self.tree)
+        self.assertEqual(status, 1, output)
+        self.assertIn("tests/assignments/a4/answers.json: a5 light_term", output)
         tree_copy.remove(out)
 
     def test_a_key_answer_planted_in_a_tracked_file_refuses_the_kit(self):
