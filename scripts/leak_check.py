@@ -4,7 +4,10 @@ asks for, or a later one, even with its variables renamed and its comments rewri
 
   scripts/leak_check.py aN KIT      compares KIT (made by scripts/make-assignment aN) against
                                     the solution regions and withheld files of aN and of every
-                                    later assignment in the tree this script is in
+                                    later assignment in the tree this script is in, and searches
+                                    it for the written questions' keys of aN and later
+                                    (tests/assignments/answers/key.py: make-assignment's
+                                    key_leaks)
 
 The C++ of every kit file (and every fenced code block of its Markdown pages) is cut into
 tokens with comments and whitespace dropped; identifiers become one symbol, numbers another,
@@ -273,11 +276,16 @@ def main():
     for rel, a, b, ref in known:
         print(f"leak_check {assignment}: known, still open: {rel}:{a}-{b} copies {ref} "
               f"({KNOWN_OPEN[(rel, ref.split()[0])]})")
+    keys = make.key_leaks(assignment, kit)
+    if keys:
+        print(f"leak_check {assignment}: {len(keys)} answers of the written questions' key in {kit}:\n  "
+              + "\n  ".join(keys))
     if leaks:
         print(f"leak_check {assignment}: {len(leaks)} copies of a solution in {kit}:\n{report(leaks)}")
+    if leaks or keys:
         sys.exit(1)
     print(f"leak_check {assignment}: no window of {k_window_tokens} tokens of {len(references)} "
-          f"solutions and withheld files in {kit}")
+          f"solutions and withheld files in {kit}, and no answer of the key")
 
 
 if __name__ == "__main__":

@@ -6,12 +6,7 @@
 
 #include <array>
 #include <cstdint>
-#include <fstream>
-#include <optional>
-#include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "assignments/subject/requests.hpp"
 #include "core/rng.hpp"
@@ -30,24 +25,6 @@ auto with_a1_integrand(A1Integrand kind, double param, Body&& body) {
     case A1Integrand::constant: break;
   }
   return body([param](double) { return param; });
-}
-
-/// The keys of the written answers (a1.5), in the order they travel.
-inline constexpr std::array<const char*, 5> k_a1_answer_keys{"E_Y", "V_Y", "E_M", "V_M", "V_estimate"};
-
-/// The answers file read as data: whether it could be read and parsed, and each key's number.
-inline A1AnswerFile read_a1_answers(const std::string& path) {
-  A1AnswerFile a;
-  std::ifstream in(path);
-  a.readable = static_cast<bool>(in);
-  if (!a.readable) return a;
-  const nlohmann::json answers = nlohmann::json::parse(in, nullptr, false);
-  a.valid = !answers.is_discarded();
-  if (!a.valid) return a;
-  for (std::size_t i = 0; i < k_a1_answer_keys.size(); ++i)
-    if (answers.is_object() && answers.contains(k_a1_answer_keys[i]) && answers[k_a1_answer_keys[i]].is_number())
-      a.values[i] = answers[k_a1_answer_keys[i]].get<double>();
-  return a;
 }
 
 /// disk(n, rng), ball(k, n, rng), count(k, n, rng), basic(f, segment, n, rng) -> estimate with

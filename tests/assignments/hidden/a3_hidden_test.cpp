@@ -2,17 +2,26 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
 
-TEST(A3Hidden, RayCountsAtFiveBranches) {
+// The seed and parameters of these tests: scripts/make-assignment --variant SECRET writes the
+// variant's values into the autograder's copy of these lines (tests/assignments/answers/key.py,
+// HIDDEN); these are the defaults.
+inline constexpr std::uint64_t k_hidden_seed = 17;
+inline constexpr int k_hidden_branches = 5;
+
+TEST(A3Hidden, RayCountsAtOtherBranches) {
+  const int n = k_hidden_branches;
   for (int k : {0, 1, 2, 3}) {
     const std::uint64_t rays =
-        subject().recursive_single(0.3, 1.0, Vec3(0.0), {1.0, 0.0, 0.0}, 5, k, 17, static_cast<std::uint64_t>(k)).rays;
-    EXPECT_EQ(rays, geometric_ray_count(5, k)) << diagnose_ray_count(rays, 5, k);
+        subject().recursive_single(0.3, 1.0, Vec3(0.0), {1.0, 0.0, 0.0}, n, k, k_hidden_seed, static_cast<std::uint64_t>(k)).rays;
+    EXPECT_EQ(rays, geometric_ray_count(n, k)) << diagnose_ray_count(rays, n, k);
   }
 }
 

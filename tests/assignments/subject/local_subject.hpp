@@ -55,7 +55,6 @@ struct LocalSubject {
   double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) const {
     return student_a1().a1_trapezoid(f, param, s, n);
   }
-  A1AnswerFile a1_answers() const { return read_a1_answers(MCRT_A1_ANSWERS); }
 
   /// a2: the sampler `kind` at each u (a disk point with z = 0).
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u) const {

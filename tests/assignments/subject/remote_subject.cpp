@@ -149,17 +149,6 @@ double RemoteSubject::a1_trapezoid(A1Integrand f, double param, Segment s, std::
   return answer[0];
 }
 
-A1AnswerFile RemoteSubject::a1_answers() {
-  const std::vector<double> answer = call(k_request_a1_answers, {});
-  if (answer.size() != 2 + 2 * 5) broken(k_request_a1_answers, "not the answers file's 12 numbers");
-  A1AnswerFile a;
-  a.readable = answer[0] != 0.0;
-  a.valid = answer[1] != 0.0;
-  for (std::size_t i = 0; i < a.values.size(); ++i)
-    if (answer[2 + 2 * i] != 0.0) a.values[i] = answer[3 + 2 * i];
-  return a;
-}
-
 std::vector<Vec3> RemoteSubject::samples(SamplerKind kind, const std::vector<Vec2>& u) {
   std::vector<double> params{static_cast<double>(kind)};
   params.reserve(1 + 2 * u.size());

@@ -12,6 +12,7 @@
 
 #include <sys/types.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,7 +42,6 @@ class RemoteSubject {
   EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
                                   std::uint64_t stream);
   double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n);
-  A1AnswerFile a1_answers();
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u);
   std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points);
   PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,

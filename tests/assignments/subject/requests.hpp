@@ -3,9 +3,7 @@
 // called in-process), RemoteSubject (the same requests sent to the subject program) and the
 // subject program's dispatcher. No student header is included here: the checker uses this.
 
-#include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "core/math.hpp"
@@ -40,19 +38,11 @@ struct EstimateAndError {
   double standard_error = 0.0;
 };
 
-/// a1.5's answers file as the subject read it.
-struct A1AnswerFile {
-  bool readable = false;
-  bool valid = false;
-  std::array<std::optional<double>, 5> values{};
-};
-
 inline constexpr const char* k_request_a1_disk = "a1_disk";
 inline constexpr const char* k_request_a1_ball = "a1_ball";
 inline constexpr const char* k_request_a1_ball_counts = "a1_ball_counts";
 inline constexpr const char* k_request_a1_monte_carlo = "a1_monte_carlo";
 inline constexpr const char* k_request_a1_trapezoid = "a1_trapezoid";
-inline constexpr const char* k_request_a1_answers = "a1_answers";
 
 /// One of a5's estimators and its parameters, as numbers (a5_produce.hpp converts them).
 struct A5Estimator {

@@ -94,12 +94,6 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     need(params, 5, name);
     return {s.a1_trapezoid(integrand(params[0]), params[1], Segment{params[2], params[3]}, count(params[4]))};
   }
-  if (name == k_request_a1_answers) {
-    const A1AnswerFile a = s.a1_answers();
-    std::vector<double> out{a.readable ? 1.0 : 0.0, a.valid ? 1.0 : 0.0};
-    for (const auto& v : a.values) out.insert(out.end(), {v ? 1.0 : 0.0, v.value_or(0.0)});
-    return out;
-  }
   if (name == k_request_a2_samples) {
     const SamplerKind kind = sampler_kind(params);
     std::vector<Vec2> u;

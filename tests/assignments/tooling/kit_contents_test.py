@@ -58,7 +58,7 @@ class KitContents(unittest.TestCase):
         status, output = make(self.tree, "a3", "--autograder", folder)
         self.assertEqual(status, 0, output)
         self.assertEqual(sorted(os.listdir(os.path.join(folder, "hidden"))),
-                         ["CMakeLists.txt", "a3_hidden_test.cpp"])
+                         ["CMakeLists.txt", "a3_answers_key.json", "a3_hidden_test.cpp"])
         self.assertFalse([f for f in all_files(os.path.join(folder, "kit")) if "hidden_test" in f])
         for name in ("setup.sh", "run_autograder"):
             with open(os.path.join(folder, name)) as f:

@@ -3,7 +3,8 @@
 and the course's rules, for a passing, a failing, a timed-out and a non-building submission:
 every test listed with its full points (a failed build: each at 0, the compiler's errors once),
 hidden tests shown only after publication, no visible total that counts them, a hanging test
-costing only its own points. The grader runs on a tiny fake kit whose "build" and "tests" are
+costing only its own points, the written answers graded from their file (with the hidden
+folder's key) and listed, whatever the build did. The grader runs on a tiny fake kit whose "build" and "tests" are
 CMake scripts driven by the submitted file, so each case takes seconds.
 Run: results_json_test.py ROOT (CTest label unit)."""
 
@@ -73,7 +74,13 @@ add_test(NAME a9-hidden.A9Hidden.Secret COMMAND ${CMAKE_COMMAND} -DMODE=${mode} 
 set_tests_properties(a9-hidden.A9Hidden.Secret PROPERTIES LABELS a9-hidden)
 """,
     "a9_hidden_test.cpp": "TEST(A9Hidden, Secret) {}\n",
+    # the written answers' key, as an autograder carries it: a number and a text
+    "a9_answers_key.json": json.dumps({"assignment": "a9", "questions": [
+        {"id": "x", "kind": "number", "points": 1, "prompt": "x", "answer": 0.5, "rel_tol": 1e-3,
+         "hint": "h"},
+        {"id": "why", "kind": "text", "points": 2, "prompt": "why", "rubric": ["1: because"]}]}),
 }
+WRITTEN = {"a9-written.complete": 0, "a9-written.x": 1, "a9-written.why": 0}
 
 
 def write(folder, files):
@@ -91,7 +98,8 @@ class ResultsJson(unittest.TestCase):
         cls.kit = os.path.join(cls.tmp, "kit")
         write(cls.kit, FAKE)
         os.makedirs(os.path.join(cls.kit, "scripts"))
-        shutil.copy2(os.path.join(ROOT, "scripts/grade"), os.path.join(cls.kit, "scripts/grade"))
+        for name in ("grade", "written_answers.py"):
+            shutil.copy2(os.path.join(ROOT, "scripts", name), os.path.join(cls.kit, "scripts", name))
         write(os.path.join(cls.tmp, "hidden"), HIDDEN)
         with open(os.path.join(ROOT, "tests/assignments/results.schema.json")) as f:
             cls.schema = json.load(f)
@@ -102,7 +110,7 @@ class ResultsJson(unittest.TestCase):
 
     def grade(self, mode):
         submission = os.path.join(self.tmp, f"submission-{mode}")
-        write(submission, {"student.txt": mode + "\n"})
+        write(submission, {"student.txt": mode + "\n", "answers.json": '{"x": 0.5, "why": "because"}\n'})
         results = os.path.join(self.tmp, f"{mode}.json")
         run = subprocess.run([sys.executable, os.path.join(self.kit, "scripts/grade"), "a9", "--kit",
                               submission, "--hidden", os.path.join(self.tmp, "hidden"),
@@ -116,11 +124,17 @@ class ResultsJson(unittest.TestCase):
         self.assertNotIn("score", r)       # Gradescope sums the tests: no total of its own
         self.assertEqual(r["visibility"], "after_published")
         self.assertEqual({t["name"]: t["max_score"] for t in r["tests"]},
-                         {"a9.A9.First": 2, "a9.A9.Second": 3, "a9-hidden.A9Hidden.Secret": 4})
+                         dict({"a9.A9.First": 2, "a9.A9.Second": 3, "a9-hidden.A9Hidden.Secret": 4}, **WRITTEN))
         for t in r["tests"]:
-            self.assertEqual(t["visibility"],
-                             "after_published" if "-hidden." in t["name"] else "visible")
-        return run, r, {t["name"]: t["score"] for t in r["tests"]}
+            self.assertEqual(t["visibility"], "visible" if t["name"] in ("a9.A9.First", "a9.A9.Second",
+                                                                         "a9-written.complete")
+                             else "after_published")
+        # the written answers are read as data: graded whatever the build or the tests did
+        written = {t["name"]: t for t in r["tests"] if t["name"] in WRITTEN}
+        self.assertEqual(written["a9-written.x"]["score"], 1)
+        self.assertEqual(written["a9-written.why"]["extra_data"]["rubric"], ["1: because"])
+        self.assertIn("2 points of text answers are graded by hand", r["output"])
+        return run, r, {t["name"]: t["score"] for t in r["tests"] if t["name"] not in WRITTEN}
 
     def test_passing(self):
         run, r, scores = self.grade("pass")
@@ -152,7 +166,7 @@ class ResultsJson(unittest.TestCase):
     def test_not_building(self):
         run, r, scores = self.grade("broken")
         self.assertEqual(run.returncode, 1)
-        self.assertEqual(set(scores.values()), {0})
+        self.assertEqual(set(scores.values()), {0})  # the written answer's point is counted above
         text = json.dumps(r)
         self.assertEqual(text.count("expected ';' before"), 1, text)  # the errors, once
         self.assertIn("src/student.cpp:3:7: error", r["output"])
