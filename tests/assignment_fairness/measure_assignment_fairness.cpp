@@ -13,8 +13,8 @@
 // seeds: the largest p-value, and how many seeds reject (detection). Bugs caught by an exact
 // check (ray counts, exact furnace paths, a pdf's integral) are run once.
 //
-// Writes fairness.csv (one row per check or bug) and fairness.json (the same rows by name, and
-// a summary that docs/assignments/README.md quotes). Seeds are keyed by row and index, never
+// Writes fairness.csv (one row per check or bug), fairness.json (the same rows by name, and a
+// summary that docs/assignments/README.md quotes) and p_values.csv (every p-value). Seeds are keyed by row and index, never
 // by thread: the files are the same whatever --threads.
 
 #include <algorithm>
@@ -32,6 +32,7 @@
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "io/cli.hpp"
+#include "io/output.hpp"
 #include "io/summary.hpp"
 #include "io/table.hpp"
 #include "known_bugs/assignments.hpp"
@@ -355,12 +356,14 @@ Table fairness_table(const std::vector<Row>& rows) {
 Json summary_of(const std::vector<Row>& rows) {
   std::uint64_t checks = 0, p_values = 0, below_alpha = 0, region_checks = 0, hidden = 0;
   double low5 = 1.0, high5 = 0.0, low1 = 1.0, high1 = 0.0, min_p = 1.0, min_ks_p = 1.0, hidden_min_p = 1.0;
+  double min_ks_p_without_regions = 1.0;
   std::uint64_t bugs = 0, bugs_detected = 0, exact_bugs = 0, exact_detected = 0, undetected_expected = 0;
   double bug_max_p = 0.0;
   for (const Row& row : rows) {
     if (!row.bug) {
       const FalseFailures f = false_failures(row.p_values, row.alpha);
       min_ks_p = std::min(min_ks_p, f.ks_p);
+      if (!row.region) min_ks_p_without_regions = std::min(min_ks_p_without_regions, f.ks_p);
       if (!row.majority) {
         ++hidden;
         hidden_min_p = std::min(hidden_min_p, f.min_p);
@@ -403,6 +406,7 @@ Json summary_of(const std::vector<Row>& rows) {
   s["fraction_below_1_percent_highest"] = high1;
   s["majority_min_p"] = min_p;
   s["min_ks_p"] = min_ks_p;
+  s["min_ks_p_without_regions"] = min_ks_p_without_regions;
   s["pooled_alpha_rate_upper_95"] = pooled_upper;
   s["pooled_majority_failure_upper_95"] = majority_false_failure_rate(pooled_upper);
   s["design_majority_failure_rate"] = majority_false_failure_rate();
@@ -415,6 +419,16 @@ Json summary_of(const std::vector<Row>& rows) {
   s["exact_bugs_detected"] = exact_detected;
   s["expected_bugs_missed_at_some_seed"] = undetected_expected;
   return s;
+}
+
+/// p_values.csv: every p-value, by row and seed (to look at a distribution the table sums up).
+std::string p_values_csv(const std::vector<Row>& rows, std::uint64_t first_seed) {
+  std::string text = "name,seed,p_value\n";
+  for (const Row& row : rows)
+    if (row.p_value)
+      for (std::size_t i = 0; i < row.p_values.size(); ++i)
+        text += fmt::format("{},{},{:.9g}\n", row.name, first_seed + i, row.p_values[i]);
+  return text;
 }
 
 /// fairness.json: the flags, the grading rule, the summary, and every row by name.
@@ -454,6 +468,7 @@ void run(const CLI::App& app, Options o) {
   measure(rows, o);
   const Table table = fairness_table(rows);
   write_csv(o.common.dir / "fairness.csv", table);
+  write_file_atomic(o.common.dir / "p_values.csv", p_values_csv(rows, o.common.seed));
   const Json json = json_of(app, o, table, rows);
   write_json(o.common.dir / "fairness.json", json);
   if (!o.common.quiet) {
