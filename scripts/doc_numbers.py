@@ -17,6 +17,14 @@ maths, where the check does not look.
                                                   (scripts/make-figures' run folders); only
                                                   the names of the given run labels change
     scripts/doc_numbers.py check                      every page against docs/numbers.json
+
+The assignments page (docs/assignments/README.md) quotes the fairness measurement instead, as
+`fairness.<part>.<name>.<column>` (fairness.summary.<key>, fairness.checks.<check>.<column>,
+fairness.bugs.<bug>.<column>): the numbers of docs/assignments/fairness.json, the file
+measure_assignment_fairness writes. That file holds many more numbers than the page quotes, so
+none of them has to be quoted; its own program writes it, so it is not in numbers.json's
+sources. In that page only the Fairness section must tag its measured-looking numbers (the
+rest quotes build times, machine-dependent, untagged).
 """
 
 import csv
@@ -43,6 +51,12 @@ CHECKED_PAGES = ["01_ray_tracing.md", "02_disk_area.md", "03_trapezoid_vs_mc.md"
                  "04_recursive_nk.md", "05_path_tracer.md", "06_russian_roulette.md",
                  "07_importance_sampling.md", "08_next_event_estimation.md", "index.md",
                  "answers.md"]
+
+# The assignments page, its measured numbers (measure_assignment_fairness's output) and the
+# section of it where every measured-looking decimal must carry a tag.
+ASSIGNMENT_PAGE = "assignments/README.md"
+FAIRNESS_JSON = os.path.join("docs", "assignments", "fairness.json")
+CHECKED_SECTIONS = {ASSIGNMENT_PAGE: "## Fairness"}
 
 # Closed-form constants a page may print untagged, each with what it is.
 CLOSED_FORM = {
@@ -138,27 +152,45 @@ def find_untagged(page, text):
     return found
 
 
-def check(docs, numbers, checked_pages=CHECKED_PAGES):
+def section_text(text, heading):
+    """The page with every line outside the section opened by `heading` (up to the next
+    heading of its level) blanked, so that line numbers stay those of the page."""
+    level = heading.split(" ")[0] + " "
+    lines, inside = [], False
+    for line in text.split("\n"):
+        if line.startswith(level):
+            inside = line.strip() == heading
+        lines.append(line if inside else "")
+    return "\n".join(lines)
+
+
+def check(docs, numbers, checked_pages=CHECKED_PAGES, optional=None,
+          checked_sections=CHECKED_SECTIONS):
     """Every problem of the pages in `docs` ({page: text}) against `numbers` ({name: value}),
     one line each: a wrong number, an unknown name, a tag that quotes no number, a name no
-    page quotes, a measured-looking number without a tag."""
+    page quotes, a measured-looking number without a tag (in `checked_pages`, or in the
+    section `checked_sections` names of a page). Names of `optional` ({name: value}) may be
+    quoted like those of `numbers`, but need not be."""
+    optional = optional or {}
     problems, quoted = [], set()
     for page, text in sorted(docs.items()):
         for quote in find_quotes(page, text):
             quoted.add(quote.name)
-            if quote.name not in numbers:
+            if quote.name not in numbers and quote.name not in optional:
                 problems.append(f"{quote.where()}: unknown name {quote.name}")
             elif quote.printed is None:
                 problems.append(f"{quote.where()}: the tag {quote.name} follows no number")
             else:
-                value = numbers[quote.name]
+                value = numbers[quote.name] if quote.name in numbers else optional[quote.name]
                 # The printed number is the value rounded: within half a step of its last digit
                 # (plus a relative 1e-9 for the binary representation of both).
                 if not abs(quote.value - value) <= quote.half_step + 1e-9 * abs(value):
                     problems.append(f"{quote.where()}: {quote.name} is {value!r}, the page "
                                     f"prints {quote.printed}")
-        if page in checked_pages:
-            for line, number in find_untagged(page, text):
+        scope = text if page in checked_pages else (
+            section_text(text, checked_sections[page]) if page in checked_sections else None)
+        if scope is not None:
+            for line, number in find_untagged(page, scope):
                 problems.append(f"{page}:{line}: {number} looks measured but has no "
                                 f"<!--n:name--> tag (or belongs in CLOSED_FORM)")
     for name in sorted(set(numbers) - quoted):
@@ -169,6 +201,42 @@ def check(docs, numbers, checked_pages=CHECKED_PAGES):
 def read_docs(folder):
     return {name: open(os.path.join(folder, name), encoding="utf-8").read()
             for name in sorted(os.listdir(folder)) if name.endswith(".md")}
+
+
+def flatten(value, prefix):
+    """{prefix.key.key...: number} for every number in nested JSON objects (booleans and text
+    left out)."""
+    if isinstance(value, dict):
+        out = {}
+        for key, item in value.items():
+            out.update(flatten(item, f"{prefix}.{key}"))
+        return out
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return {prefix: float(value)}
+    return {}
+
+
+def fairness_numbers(repo):
+    """The names the assignments page may quote: fairness.summary.*, fairness.checks.*,
+    fairness.bugs.* of docs/assignments/fairness.json ({} when the tree has none: a kit)."""
+    try:
+        with open(os.path.join(repo, FAIRNESS_JSON), encoding="utf-8") as file:
+            measured = json.load(file)
+    except FileNotFoundError:
+        return {}
+    return flatten({part: measured.get(part, {}) for part in ("summary", "checks", "bugs")},
+                   "fairness")
+
+
+def read_pages(repo):
+    """Every page that quotes numbers: docs/*.md and, when the tree has it (a kit does not),
+    the assignments page."""
+    docs = read_docs(os.path.join(repo, "docs"))
+    path = os.path.join(repo, "docs", ASSIGNMENT_PAGE)
+    if os.path.isfile(path):
+        with open(path, encoding="utf-8") as file:
+            docs[ASSIGNMENT_PAGE] = file.read()
+    return docs
 
 
 # ---------------------------------------------------------------------------------------------
@@ -249,7 +317,7 @@ def main(argv):
     if len(argv) == 2 and argv[1] == "check":
         with open(os.path.join(REPO, "docs", "numbers.json"), encoding="utf-8") as file:
             numbers = json.load(file)
-        problems = check(read_docs(os.path.join(REPO, "docs")), numbers)
+        problems = check(read_pages(REPO), numbers, optional=fairness_numbers(REPO))
         for line in problems:
             print(line)
         return 1 if problems else 0

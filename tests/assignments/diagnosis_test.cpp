@@ -9,6 +9,7 @@
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
@@ -37,24 +38,6 @@ class Diagnoses : public ::testing::Test {
 TEST_F(Diagnoses, FalseFailureRateIsBelowOneInAMillion) {
   EXPECT_LT(majority_false_failure_rate(), 1e-6);
 }
-
-/// a1's producer with the student's functions (LocalSubject's) but one replaced.
-auto student_disk() { return [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); }; }
-auto student_ball() { return [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); }; }
-auto student_count() { return [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); }; }
-auto student_basic() {
-  return [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); };
-}
-auto student_rule() { return [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); }; }
-
-template <class D>
-auto with_disk(D d) { return a1_producer(d, student_ball(), student_count(), student_basic(), student_rule()); }
-template <class B>
-auto with_ball(B b) { return a1_producer(student_disk(), b, student_count(), student_basic(), student_rule()); }
-template <class B>
-auto with_basic(B b) { return a1_producer(student_disk(), student_ball(), student_count(), b, student_rule()); }
-template <class R>
-auto with_rule(R r) { return a1_producer(student_disk(), student_ball(), student_count(), student_basic(), r); }
 
 TEST_F(Diagnoses, A1DiskWithoutTheFactorFour) {
   expect_diagnosis(check_disk_estimator(with_disk([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; })),
@@ -161,22 +144,6 @@ TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
   EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
-/// The student-side producer of a5 with one estimator replaced by a known-wrong one.
-template <class R>
-auto with_roulette(R roulette) {
-  return a5_producer(roulette, estimate_importance_path_radiance, estimate_nee_radiance);
-}
-
-template <class I>
-auto with_importance(I importance) {
-  return a5_producer(estimate_path_radiance_roulette, importance, estimate_nee_radiance);
-}
-
-template <class N>
-auto with_nee(N nee) {
-  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, nee);
-}
-
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
   expect_diagnosis(check_roulette_furnace(with_roulette(roulette_without_division)), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
 }
@@ -189,14 +156,6 @@ TEST_F(Diagnoses, A5RouletteFromVertexZero) {
   expect_diagnosis(check_roulette_furnace(with_roulette(roulette_from_depth_zero)), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
 }
 
-/// A known-wrong path tracer as a5.2's estimator: it ignores the pdf it is handed.
-template <class Tracer>
-auto ignoring_the_pdf(Tracer tracer) {
-  return [tracer](const Scene& scene, Ray ray, int max_depth, const HemispherePdf&, Rng& rng, RayCount& count) {
-    return tracer(scene, ray, max_depth, rng, count);
-  };
-}
-
 TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
   expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi))),
                    "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
@@ -205,14 +164,6 @@ TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
 TEST_F(Diagnoses, A5CosineDirectionsUniformPdf) {
   expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf))),
                    "the per-bounce weight averages 4a/3 and varies");
-}
-
-/// A known-wrong NEE as a5.3's estimator: its depth cut taken from the PathEnd.
-template <class Nee>
-auto with_path_end(Nee nee) {
-  return [nee](const Scene& scene, Ray ray, const PathEnd& end, Rng& rng, RayCount& count) {
-    return nee(scene, ray, end.max_depth, rng, count);
-  };
 }
 
 TEST_F(Diagnoses, A5NeeEmissionTwice) {

@@ -21,8 +21,18 @@ class ThePagesTest(unittest.TestCase):
     def test_every_quoted_number_matches_numbers_json(self):
         with open(os.path.join(REPO, "docs", "numbers.json"), encoding="utf-8") as file:
             numbers = json.load(file)
-        problems = doc_numbers.check(doc_numbers.read_docs(os.path.join(REPO, "docs")), numbers)
+        # the assignments page quotes docs/assignments/fairness.json (measure_assignment_fairness)
+        problems = doc_numbers.check(doc_numbers.read_pages(REPO), numbers,
+                                     optional=doc_numbers.fairness_numbers(REPO))
         self.assertEqual(problems, [], "\n" + "\n".join(problems))
+
+    def test_the_assignments_fairness_section_quotes_the_measurement(self):
+        page = os.path.join(REPO, "docs", doc_numbers.ASSIGNMENT_PAGE)
+        if not os.path.isfile(page):
+            self.skipTest("no assignments page (a kit)")
+        with open(page, encoding="utf-8") as file:
+            quotes = doc_numbers.find_quotes(doc_numbers.ASSIGNMENT_PAGE, file.read())
+        self.assertGreaterEqual(sum(q.name.startswith("fairness.") for q in quotes), 10)
 
     def test_every_name_has_a_source_run(self):
         with open(os.path.join(REPO, "docs", "numbers.json"), encoding="utf-8") as file:
@@ -86,6 +96,41 @@ class TheCheckTest(unittest.TestCase):
             "about 0.5 of it, or 12 %, at a 99.9 % interval",
             "<!-- a comment with 1.234 -->"])
         self.assertEqual(problems(text, {}), [])
+
+
+class TheFairnessQuotesTest(unittest.TestCase):
+    """The assignments page against fairness.json: its names need not all be quoted, a wrong
+    digit fails, and its Fairness section (only) must tag what it measured."""
+
+    MEASURED = {"summary": {"majority_min_p": 0.00123, "seeds": 1000, "all": True},
+                "checks": {"a1_disk": {"ks_p": 0.4567, "test": "a1.A1.Task1"}}, "bugs": {}}
+
+    def quotes(self, text):
+        optional = doc_numbers.flatten(self.MEASURED, "fairness")
+        return doc_numbers.check({doc_numbers.ASSIGNMENT_PAGE: text}, {}, checked_pages=[],
+                                 optional=optional)
+
+    def test_numbers_of_the_measurement_are_flattened_by_name(self):
+        self.assertEqual(doc_numbers.flatten(self.MEASURED, "fairness"),
+                         {"fairness.summary.majority_min_p": 0.00123,
+                          "fairness.summary.seeds": 1000.0,
+                          "fairness.checks.a1_disk.ks_p": 0.4567})
+
+    def test_a_right_quote_passes_and_unquoted_names_are_fine(self):
+        self.assertEqual(self.quotes("## Fairness\nsmallest 0.0012<!--n:fairness.summary.majority_min_p-->"), [])
+
+    def test_a_wrong_digit_fails(self):
+        found = self.quotes("## Fairness\nKS p 0.457<!--n:fairness.checks.a1_disk.ks_p--> and 0.45<!--n:x-->")
+        self.assertIn("assignments/README.md:2: unknown name x", found)
+        found = self.quotes("## Fairness\nKS p 0.458<!--n:fairness.checks.a1_disk.ks_p-->")
+        self.assertEqual(len(found), 1)
+        self.assertIn("fairness.checks.a1_disk.ks_p is 0.4567, the page prints 0.458", found[0])
+
+    def test_an_untagged_number_fails_in_the_fairness_section_only(self):
+        text = "## Grading\nbuilt in 7.45 s\n## Fairness\n4.31 % below 0.05\n## Times\n12.5 s"
+        found = self.quotes(text)
+        self.assertEqual(len(found), 1)
+        self.assertIn("assignments/README.md:4: 4.31 looks measured", found[0])
 
 
 class TheWriterTest(unittest.TestCase):

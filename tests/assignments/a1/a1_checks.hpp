@@ -28,14 +28,23 @@ struct TaskResult {
 
 inline constexpr std::uint64_t k_disk_points = 200000;  ///< sd of 4M/N: 0.0037
 
-/// a1.1: E[4M/N] = pi, z-tested with the closed-form sd 4 sqrt(p(1-p)/N) at three seeds.
+/// a1.1 at one seed: the p-value of 4M/N z-tested against pi with the closed-form sd
+/// 4 sqrt(p(1-p)/N) (the estimate in `estimate`).
+template <class P>
+double disk_p_value(P&& producer, std::uint64_t seed, double& estimate) {
+  estimate = producer.a1_disk(k_disk_points, seed, 11);
+  return z_test_p_value(estimate, k_pi, disk_area_theory_std(k_disk_points));
+}
+
+/// a1.1: E[4M/N] = pi, disk_p_value at three seeds.
 template <class P>
 TaskResult check_disk_estimator(P&& producer) {
   double sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const double a = producer.a1_disk(k_disk_points, seed, 11);
+    double a = 0.0;
+    const double p = disk_p_value(producer, seed, a);
     sum += a;
-    return z_test_p_value(a, k_pi, disk_area_theory_std(k_disk_points));
+    return p;
   });
   const double mean = sum / k_seeds;
   std::string d = diagnose_mean_ratio(mean, k_pi);
@@ -47,17 +56,27 @@ TaskResult check_disk_estimator(P&& producer) {
                                   mean, k_pi, v.describe(), v.passed() ? "" : d)};
 }
 
-/// a1.2: E[2^k M/N] = V_k for k = `dims`, z-tested with the closed-form sd.
+inline constexpr std::uint64_t k_ball_points = 100000;
+
+/// a1.2 at one seed: the p-value of 2^k M/N z-tested against V_k with the closed-form sd
+/// (the estimate in `volume`).
+template <class P>
+double ball_p_value(P&& producer, int k, std::uint64_t seed, double& volume) {
+  volume = producer.a1_ball(k, k_ball_points, seed, 12);
+  return z_test_p_value(volume, unit_ball_volume(k), ball_volume_theory_std(k, k_ball_points));
+}
+
+/// a1.2: E[2^k M/N] = V_k for k = `dims`, ball_p_value at three seeds.
 template <class P>
 TaskResult check_ball_estimator(P&& producer, const std::vector<int>& dims) {
-  constexpr std::uint64_t n = 100000;
   TaskResult result{true, ""};
   for (int k : dims) {
     double sum = 0.0;
     const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-      const double vol = producer.a1_ball(k, n, seed, 12);
+      double vol = 0.0;
+      const double p = ball_p_value(producer, k, seed, vol);
       sum += vol;
-      return z_test_p_value(vol, unit_ball_volume(k), ball_volume_theory_std(k, n));
+      return p;
     });
     const double mean = sum / k_seeds;
     std::string d = diagnose_mean_ratio(mean, unit_ball_volume(k));
@@ -70,26 +89,39 @@ TaskResult check_ball_estimator(P&& producer, const std::vector<int>& dims) {
   return result;
 }
 
-/// a1.3: F_N = (b - a)/N sum f(X_i) for f = x^2 on [1, 4] (I = 21, vol J - I^2 = 172.8):
-/// the mean z-tested at three seeds, and its standard error within 10% of the theory (its
-/// relative sd is about 1% at N = 10^4).
+inline constexpr std::uint64_t k_basic_points = 10000;
+
+/// a1.3's F_N of x^2 on [1, 4]: I = 21, and the closed-form sd sqrt((vol J - I^2) / N) with
+/// vol J - I^2 = 172.8.
+inline double basic_estimator_theory_sd() { return std::sqrt(172.8 / static_cast<double>(k_basic_points)); }
+
+/// a1.3 at one seed: the p-value of F_N z-tested against I = 21 (the estimate and its standard
+/// error in `e`).
+template <class P>
+double basic_estimator_p_value(P&& producer, std::uint64_t seed, EstimateAndError& e) {
+  e = producer.a1_monte_carlo(A1Integrand::square, 0.0, Segment{1.0, 4.0}, k_basic_points, seed, 13);
+  return z_test_p_value(e.estimate, 21.0, basic_estimator_theory_sd());
+}
+
+/// a1.3: F_N = (b - a)/N sum f(X_i) for f = x^2 on [1, 4]: basic_estimator_p_value at three
+/// seeds, and the standard error within 10% of the theory (its relative sd is about 1% at
+/// N = 10^4).
 template <class P>
 TaskResult check_basic_estimator(P&& producer) {
-  constexpr std::uint64_t n = 10000;
-  const Segment segment{1.0, 4.0};
-  const double integral = 21.0, theory_sd = std::sqrt(172.8 / static_cast<double>(n));
+  const double integral = 21.0, theory_sd = basic_estimator_theory_sd();
   double sum = 0.0;
   bool se_ok = true;
   std::string se_note;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const EstimateAndError e = producer.a1_monte_carlo(A1Integrand::square, 0.0, segment, n, seed, 13);
+    EstimateAndError e;
+    const double p = basic_estimator_p_value(producer, seed, e);
     sum += e.estimate;
     if (!near(e.standard_error, theory_sd, 0.1)) {
       se_ok = false;
       se_note = fmt::format("standard_error {:.4g}, expected about vol * s / sqrt(N) = {:.4g}",
                             e.standard_error, theory_sd);
     }
-    return z_test_p_value(e.estimate, integral, theory_sd);
+    return p;
   });
   const double mean = sum / k_seeds;
   const bool passed = v.passed() && se_ok;

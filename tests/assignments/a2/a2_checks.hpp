@@ -149,9 +149,19 @@ double bulk_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning) {
   return total;
 }
 
-/// A sampler's chi-square test at the grading seeds (1e5 points of u drawn from
-/// Rng(seed, 41)); on failure, the heat map's path (written under test-reports/, or
-/// $MCRT_TEST_REPORT_DIR) and a diagnosis.
+/// A sampler's chi-square test at one seed: 1e5 points of u drawn from Rng(seed, 41), binned
+/// against the cell probabilities of its pdf (bulk_cell_probabilities).
+template <class Point, class SampleBatch>
+ChiSquareResult sampler_chi_square(SampleBatch&& samples, const std::vector<double>& probability,
+                                   const Binning<Point>& binning, std::uint64_t seed) {
+  Rng rng(seed, 41);
+  std::vector<Vec2> u(k_sampler_samples);
+  for (Vec2& x : u) x = rng.uniform2();
+  return chi_square_points_test(samples(u), probability, binning);
+}
+
+/// A sampler's chi-square test (sampler_chi_square) at the grading seeds; on failure, the heat
+/// map's path (written under test-reports/, or $MCRT_TEST_REPORT_DIR) and a diagnosis.
 template <class Point, class SampleBatch, class PdfBatch>
 TaskResult check_sampler(SampleBatch&& samples, PdfBatch&& pdf, const Binning<Point>& binning,
                          SamplerKind kind, const std::string& name) {
@@ -159,11 +169,7 @@ TaskResult check_sampler(SampleBatch&& samples, PdfBatch&& pdf, const Binning<Po
   bool reported = false;
   const std::vector<double> probability = bulk_cell_probabilities(pdf, binning);
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    Rng rng(seed, 41);
-    std::vector<Vec2> u(k_sampler_samples);
-    for (Vec2& x : u) x = rng.uniform2();
-    const std::vector<Point> points = samples(u);
-    const ChiSquareResult r = chi_square_points_test(points, probability, binning);
+    const ChiSquareResult r = sampler_chi_square(samples, probability, binning, seed);
     if (r.p_value < k_seed_alpha && !reported) {
       reported = true;
       diagnosis_text = diagnose_sampler(kind, r, binning);

@@ -42,22 +42,34 @@ std::string diagnose_bounce_weight(Furnace&& furnace, double a) {
   return "";
 }
 
-/// The furnace (a = 0.5, Le = 1, k = 3): the mean of 20000 paths z-tested against
-/// (1 - a^(k+1)) / (1 - a) with the closed-form variance, and their variance z-tested against
-/// it, Sidak-combined, at the three grading seeds. Also the depth off-by-one.
+/// The furnace of check_path_furnace (a = 0.5, Le = 1, k = 3) at one seed: the mean of 20000
+/// paths z-tested against (1 - a^(k+1)) / (1 - a) with the closed-form variance, and their
+/// variance z-tested against it, Sidak-combined (their mean in `mean`).
 template <class Furnace>
-TaskResult check_path_furnace(Furnace&& furnace) {
+double path_furnace_p_value(Furnace&& furnace, std::uint64_t seed, double& mean) {
   constexpr double a = 0.5;
   constexpr int k = 3, n = 20000;
   const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(a, 1.0, k);
+  const std::vector<double> values = furnace(a, k, n, seed, 51);
+  RunningStats s;
+  for (double x : values) s.add(x);
+  mean = s.mean();
+  const double p_mean = z_test_p_value(s.mean(), expected, std::sqrt(variance / n));
+  return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
+}
+
+/// The furnace: path_furnace_p_value at the three grading seeds. Also the depth off-by-one.
+template <class Furnace>
+TaskResult check_path_furnace(Furnace&& furnace) {
+  constexpr double a = 0.5;
+  constexpr int k = 3;
+  const double expected = furnace_radiance(a, 1.0, k);
   double mean_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const std::vector<double> values = furnace(a, k, n, seed, 51);
-    RunningStats s;
-    for (double x : values) s.add(x);
-    mean_sum += s.mean();
-    const double p_mean = z_test_p_value(s.mean(), expected, std::sqrt(variance / n));
-    return sidak_p_value(std::min(p_mean, variance_z_test_p_value(values, variance)), 2);
+    double mean = 0.0;
+    const double p = path_furnace_p_value(furnace, seed, mean);
+    mean_sum += mean;
+    return p;
   });
   const double mean = mean_sum / k_seeds;
   std::string d;
@@ -79,35 +91,40 @@ TaskResult check_path_furnace(Furnace&& furnace) {
 /// at another seed, drawn anew at each grading seed: independent of the student's, and in
 /// every kit of a4, where the tracers of chapters 06-08 are withheld), the standard error of
 /// the difference taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
+/// One seed of check_reference_regions: the Sidak-combined p-value of the 16 regions (and the
+/// worst region: its index and z, when it is worse than `worst_z`).
 template <class Sky>
-TaskResult check_reference_regions(Sky&& sky) {
+double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, double& worst_z) {
   constexpr int size = 16, region = 4, regions = size / region, k = 4, spp = 256;
   const Scene scene = make_sky_scene();
   const Camera camera(scene.camera, size, size);
   using Stats = std::array<RunningStats, regions * regions>;
-  const auto collect = [&](auto&& estimate, int samples, std::uint64_t seed) {
-    return region_stats<size, region>(camera, estimate, samples, seed);
-  };
   const auto reference_tracer = [&](const Ray& ray, Rng& rng, RayCount& count) {
     return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);
   };
+  // A reference of its own per seed: the three verdicts stay independent.
+  const Stats reference = region_stats<size, region>(camera, reference_tracer, 1024, seed ^ 0x5eedULL);
+  const Stats student = stats_by_region<size, region>(sky(k, spp, seed), spp);
+  double p_min = 1.0;
+  for (int r = 0; r < regions * regions; ++r) {
+    const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
+    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
+    const double p = z_test_p_value(s.mean(), t.mean(), se);
+    if (!(p >= p_min)) {
+      p_min = p;
+      if (std::abs(s.mean() - t.mean()) / se > worst_z) worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
+    }
+  }
+  return sidak_p_value(p_min, regions * regions);
+}
+
+template <class Sky>
+TaskResult check_reference_regions(Sky&& sky) {
+  constexpr int regions = 4;
   int worst = 0;
   double worst_z = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    // A reference of its own per seed: the three verdicts stay independent.
-    const Stats reference = collect(reference_tracer, 1024, seed ^ 0x5eedULL);
-    const Stats student = stats_by_region<size, region>(sky(k, spp, seed), spp);
-    double p_min = 1.0;
-    for (int r = 0; r < regions * regions; ++r) {
-      const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
-      const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
-      const double p = z_test_p_value(s.mean(), t.mean(), se);
-      if (!(p >= p_min)) {
-        p_min = p;
-        if (std::abs(s.mean() - t.mean()) / se > worst_z) worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
-      }
-    }
-    return sidak_p_value(p_min, regions * regions);
+    return reference_regions_p_value(sky, seed, worst, worst_z);
   });
   return {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
                                   v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the reference",

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""measure_assignment_fairness, --quick (seconds): it runs, writes fairness.csv and
+fairness.json with the same rows, its columns hold what they say (fractions in [0, 1], every
+known bug the diagnosis test expects caught at every seed, the one it expects to pass not
+caught), the files do not depend on --threads, and bad flags exit 2 with one line naming the
+flag (a first seed whose range holds a grading seed among them).
+
+    fairness_smoke_test.py PROGRAM
+"""
+
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+PROGRAM = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else "measure_assignment_fairness"
+
+
+def run(*flags):
+    return subprocess.run([PROGRAM, *flags], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          text=True, timeout=170)
+
+
+class QuickRunTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = tempfile.TemporaryDirectory()
+        cls.outs = {}
+        for threads in ("1", "2"):
+            out = os.path.join(cls.folder.name, f"threads{threads}")
+            done = run("--quick", "--quiet", "--threads", threads, "--out", out)
+            if done.returncode != 0:
+                raise AssertionError(f"exit {done.returncode}: {done.stderr}")
+            cls.outs[threads] = out
+        with open(os.path.join(cls.outs["2"], "fairness.csv"), newline="") as file:
+            cls.rows = list(csv.DictReader(file))
+        with open(os.path.join(cls.outs["2"], "fairness.json")) as file:
+            cls.json = json.load(file)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.folder.cleanup()
+
+    def checks(self):
+        return [r for r in self.rows if r["row"] == "check"]
+
+    def bugs(self):
+        return [r for r in self.rows if r["row"] == "bug"]
+
+    def test_the_same_files_whatever_threads(self):
+        for name in ("fairness.csv", "fairness.json"):
+            with open(os.path.join(self.outs["1"], name), "rb") as one, \
+                    open(os.path.join(self.outs["2"], name), "rb") as two:
+                self.assertEqual(one.read(), two.read(), name)
+
+    def test_every_statistical_check_of_the_assignments_is_measured(self):
+        names = {r["name"] for r in self.checks()}
+        for name in ("a1_disk", "a1_ball_k2", "a1_ball_k3", "a1_ball_k5", "a1_basic_estimator",
+                     "a2_uniform_hemisphere", "a2_cosine_hemisphere", "a2_uniform_sphere",
+                     "a2_unit_disk", "a3_furnace", "a4_furnace", "a4_regions",
+                     "a5_roulette_furnace", "a5_uniform_furnace", "a5_cos2_furnace",
+                     "a5_nee_regions", "a5_nee_two_lights", "a5_nee_beyond_cap"):
+            self.assertIn(name, names)
+
+    def test_check_columns_are_sane(self):
+        for r in self.checks():
+            seeds = int(r["seeds"])
+            self.assertEqual(seeds, 3 if r["name"] in ("a4_regions", "a5_nee_regions",
+                                                       "a5_nee_two_lights") else 20, r["name"])
+            below = [int(r[c]) for c in ("below_5_percent", "below_1_percent", "below_alpha")]
+            self.assertTrue(seeds >= below[0] >= below[1] >= below[2] >= 0, r)
+            self.assertAlmostEqual(float(r["fraction_below_5_percent"]), below[0] / seeds, places=5)
+            for column in ("min_p", "ks_p", "ks_statistic", "alpha_rate_upper_95"):
+                self.assertTrue(0.0 <= float(r[column]) <= 1.0, (r["name"], column))
+            # the bound on the rate at alpha lies above the measured rate
+            self.assertGreaterEqual(float(r["alpha_rate_upper_95"]), below[2] / seeds)
+            self.assertEqual(r["rejected_seeds"], "")
+
+    def test_every_known_bug_is_caught_at_every_seed_but_the_one_expected_to_pass(self):
+        bugs = self.bugs()
+        self.assertGreaterEqual(len(bugs), 30)
+        for r in bugs:
+            rejected, seeds = int(r["rejected_seeds"]), int(r["seeds"])
+            if r["expected_detection"] == "yes":
+                self.assertEqual(rejected, seeds, r["name"])
+                if r["verdict"] != "exact":
+                    self.assertLess(float(r["max_p"]), 5e-4, r["name"])
+            else:
+                # NEE without 1/N_lights on a one-light box: nothing to see (diagnosis_test.cpp)
+                self.assertEqual(r["name"], "a5_nee_without_one_over_n_lights_one_light")
+                self.assertEqual(rejected, 0)
+            self.assertTrue(r["test"].startswith("assignments.Diagnoses."), r["test"])
+
+    def test_the_json_holds_the_same_rows_and_a_summary(self):
+        self.assertEqual(sorted(self.json["checks"]), sorted(r["name"] for r in self.checks()))
+        self.assertEqual(sorted(self.json["bugs"]), sorted(r["name"] for r in self.bugs()))
+        self.assertEqual(self.json["seeds"], {"check": 20, "region_check": 3, "bug": 3})
+        summary = self.json["summary"]
+        self.assertEqual(summary["expected_bugs_missed_at_some_seed"], 0)
+        self.assertEqual(summary["statistical_bugs_detected_at_every_seed"],
+                         summary["statistical_bugs"])
+        self.assertAlmostEqual(summary["design_majority_failure_rate"], 7.4975e-7)
+        self.assertEqual(self.json["checks"]["a1_disk"]["seeds"], 20)
+
+
+class BadFlagsTest(unittest.TestCase):
+    def assert_usage(self, flags, names):
+        with tempfile.TemporaryDirectory() as folder:
+            done = run(*flags, "--out", os.path.join(folder, "out"))
+            self.assertEqual(done.returncode, 2, done.stderr)
+            lines = done.stderr.strip().split("\n")
+            self.assertEqual(len(lines), 1, done.stderr)
+            self.assertIn(names, lines[0])
+            self.assertFalse(os.path.exists(os.path.join(folder, "out")))
+
+    def test_a_seed_count_out_of_range(self):
+        self.assert_usage(["--seeds", "0"], "--seeds")
+        self.assert_usage(["--bug-seeds", "x"], "--bug-seeds")
+
+    def test_seeds_that_hold_a_grading_seed(self):
+        # 1000 .. 1999 holds 1009, a seed the tests grade with: not an independent measurement
+        self.assert_usage(["--seed", "1000", "--quick"], "--seed")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,198 @@
+#pragma once
+// Every known bug of tests/assignments/diagnosis_test.cpp as the fairness measurement runs it:
+// the check the diagnosis test fails it with, as a single-seed p-value (a statistical check) or
+// once (an exact one). Includes the known-wrong variants, so make-assignment withholds it (and
+// the program that includes it) from every kit.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assignments/a1/a1_checks.hpp"
+#include "assignments/a2/a2_checks.hpp"
+#include "assignments/a3/a3_checks.hpp"
+#include "assignments/a4/a4_checks.hpp"
+#include "assignments/a5/a5_checks.hpp"
+#include "assignments/known_wrong_producers.hpp"
+#include "assignments/subject/subject.hpp"
+#include "known_bugs/assignments.hpp"
+#include "known_bugs/disk_area.hpp"
+#include "known_bugs/estimators.hpp"
+#include "known_bugs/importance_sampling.hpp"
+#include "known_bugs/nee.hpp"
+#include "known_bugs/path_tracers.hpp"
+#include "known_bugs/russian_roulette.hpp"
+#include "known_bugs/samplers.hpp"
+
+namespace mcrt::testing::assignment {
+
+/// A known bug of diagnosis_test.cpp and the check it is expected to fail (or, for the one
+/// that only two lights reveal, to pass).
+struct MeasuredBug {
+  std::string name;
+  std::string test;   ///< the diagnosis test that uses it
+  std::string check;  ///< the row name of the check it is run through
+  bool expected = true;  ///< the diagnosis test expects the check to fail
+  bool region = false;
+  std::function<double(std::uint64_t)> p_value;  ///< a statistical check: its single-seed p-value
+  std::function<bool()> fails;                   ///< an exact check: whether it fails
+};
+
+inline std::string diagnosis_test(const char* name) { return std::string("assignments.Diagnoses.") + name; }
+
+inline double cosine_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
+inline double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
+inline double disk_density(const Vec2&) { return uniform_disk_pdf(); }
+
+/// A wrong sampler (or a right one with a wrong pdf) through a2's chi-square.
+template <class Point, class Sampler, class Pdf>
+MeasuredBug sampler_bug(const char* name, const char* test, const char* check, Sampler sampler, Pdf pdf,
+                        const Binning<Point>& binning) {
+  const std::vector<double> probability = bulk_cell_probabilities(each(pdf), binning);
+  return {name, diagnosis_test(test), check, true, false, [=](std::uint64_t seed) {
+            return sampler_chi_square(each(sampler), probability, binning, seed).p_value;
+          }, {}};
+}
+
+/// A bug caught by an exact check: `result` runs it once.
+template <class Result>
+MeasuredBug exact_bug(const char* name, const char* test, const char* check, Result result) {
+  return {name, diagnosis_test(test), check, true, false, {}, [result] { return !result().passed; }};
+}
+
+inline std::vector<MeasuredBug> known_bugs() {
+  std::vector<MeasuredBug> bugs;
+  const auto add = [&](const char* name, const char* test, const char* check, auto p_value, bool region = false,
+                       bool expected = true) {
+    bugs.push_back({name, diagnosis_test(test), check, expected, region, p_value, {}});
+  };
+  // a1
+  add("a1_disk_without_factor_four", "A1DiskWithoutTheFactorFour", "a1_disk", [](std::uint64_t seed) {
+    double a = 0.0;
+    return disk_p_value(with_disk([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; }), seed, a);
+  });
+  add("a1_disk_y_equal_to_x", "A1DiskWithYEqualToX", "a1_disk", [](std::uint64_t seed) {
+    double a = 0.0;
+    return disk_p_value(with_disk(disk_area_same_coordinate_twice), seed, a);
+  });
+  add("a1_ball_half_scale", "A1BallHalfScale", "a1_ball_k3", [](std::uint64_t seed) {
+    double v = 0.0;
+    return ball_p_value(with_ball([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }), 3,
+                        seed, v);
+  });
+  add("a1_basic_without_length", "A1MonteCarloWithoutTheLength", "a1_basic_estimator", [](std::uint64_t seed) {
+    EstimateAndError e;
+    return basic_estimator_p_value(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                                     MonteCarloEstimate m = monte_carlo(f, s, n, rng);
+                                     m.estimate = monte_carlo_without_volume(f, s, n, rng);
+                                     return m;
+                                   }),
+                                   seed, e);
+  });
+  bugs.push_back(exact_bug("a1_trapezoid_full_end_weights", "A1TrapezoidWithFullEndWeights", "a1_trapezoid", [] {
+    return check_trapezoid(
+        with_rule([](const auto&, const Segment&, std::uint64_t n) { return trapezoid_with_full_end_weights(Gaussian1D{}, n); }));
+  }));
+  // a2
+  bugs.push_back(sampler_bug("a2_uniform_hemisphere_is_cosine", "A2UniformHemisphereThatIsCosine",
+                             "a2_uniform_hemisphere", sample_cosine_hemisphere, uniform_density,
+                             sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_cosine_hemisphere_is_uniform", "A2CosineHemisphereThatIsUniform",
+                             "a2_cosine_hemisphere", sample_uniform_hemisphere, cosine_density,
+                             sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_cosine_hemisphere_radius_u", "A2CosineHemisphereWithRadiusU", "a2_cosine_hemisphere",
+                             cosine_hemisphere_with_radius_u, cosine_density, sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_right_sampler_wrong_pdf", "A2RightSamplerWrongPdf", "a2_cosine_hemisphere",
+                             sample_cosine_hemisphere, cosine_pdf_times_two, sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_disk_radius_u", "A2DiskWithRadiusU", "a2_unit_disk", disk_with_radius_u,
+                             disk_density, sampler_disk_binning()));
+  bugs.push_back(exact_bug("a2_hemisphere_pdf_one_over_pi", "A2PdfsOffByTwo", "a2_pdf_integral", [] {
+    return check_pdf_integral(each(hemisphere_pdf_one_over_pi), sampler_hemisphere_binning(), "1/pi");
+  }));
+  bugs.push_back(exact_bug("a2_cosine_pdf_times_two", "A2PdfsOffByTwo", "a2_pdf_integral", [] {
+    return check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(), "2 cos/pi");
+  }));
+  // a3
+  const auto a3_furnace = [&](const char* name, const char* test, auto radiance) {
+    add(name, test, "a3_furnace", [radiance](std::uint64_t seed) {
+      RunningStats r;
+      return recursive_furnace_p_value(a3_producer(radiance), seed, r);
+    });
+  };
+  a3_furnace("a3_one_bounce_late", "A3RecursionOneBounceLate", incident_radiance_one_bounce_late);
+  a3_furnace("a3_without_one_over_n", "A3WithoutOneOverN", incident_radiance_without_one_over_n);
+  a3_furnace("a3_shared_direction", "A3BranchesSharingOneDirection", incident_radiance_one_shared_direction);
+  bugs.push_back(exact_bug("a3_one_bounce_late_rays", "A3RecursionOneBounceLate", "a3_ray_counts",
+                           [] { return check_ray_counts(a3_producer(incident_radiance_one_bounce_late)); }));
+  bugs.push_back(exact_bug("a3_one_bounce_early_rays", "A3RecursionOneBounceEarly", "a3_ray_counts",
+                           [] { return check_ray_counts(a3_producer(incident_radiance_one_bounce_early)); }));
+  // a4
+  const auto a4_furnace = [&](const char* name, const char* test, auto radiance) {
+    add(name, test, "a4_furnace", [radiance](std::uint64_t seed) {
+      double m = 0.0;
+      return path_furnace_p_value(furnace_of(radiance), seed, m);
+    });
+  };
+  a4_furnace("a4_missing_cosine", "A4MissingCosine", path_radiance_without_cosine);
+  a4_furnace("a4_sphere_pdf", "A4SpherePdf", path_radiance_with_sphere_pdf);
+  a4_furnace("a4_cosine_directions_uniform_pdf", "A4CosineDirectionsUniformPdf",
+             path_radiance_cosine_directions_uniform_pdf);
+  add("a4_cosine_directions_uniform_pdf_regions", "A4CosineDirectionsUniformPdf", "a4_regions",
+      [](std::uint64_t seed) {
+        int worst = 0;
+        double z = 0.0;
+        return reference_regions_p_value(sky_of(path_radiance_cosine_directions_uniform_pdf), seed, worst, z);
+      },
+      true);
+  // a5.1
+  const auto roulette = [&](const char* name, const char* test, auto estimator) {
+    add(name, test, "a5_roulette_furnace", [estimator](std::uint64_t seed) {
+      double mean = 0.0, rays = 0.0;
+      return roulette_furnace_p_value(with_roulette(estimator), seed, mean, rays);
+    });
+  };
+  roulette("a5_roulette_without_division", "A5RouletteWithoutDividingByQ", roulette_without_division);
+  roulette("a5_roulette_before_emission", "A5RouletteBeforeTheEmission", roulette_before_emission);
+  roulette("a5_roulette_from_vertex_zero", "A5RouletteFromVertexZero", roulette_from_depth_zero);
+  // a5.2
+  bugs.push_back(exact_bug("a5_cosine_pdf_without_inv_pi", "A5CosinePdfWithoutOneOverPi", "a5_cosine_furnace_exact", [] {
+    return check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi)));
+  }));
+  bugs.push_back(exact_bug("a5_cosine_directions_uniform_pdf", "A5CosineDirectionsUniformPdf", "a5_cosine_furnace_exact",
+                           [] {
+                             return check_cosine_furnace_is_exact(
+                                 with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)));
+                           }));
+  // a5.3
+  const auto nee_regions = [&](const char* name, const char* test, auto nee, int parts, bool expected) {
+    add(name, test, parts == 1 ? "a5_nee_regions" : "a5_nee_two_lights",
+        [nee, parts](std::uint64_t seed) {
+          int worst = 0;
+          double z = 0.0, ratio = 1.0;
+          return nee_regions_p_value(with_nee(with_path_end(nee)), seed, worst, z, ratio, parts);
+        },
+        true, expected);
+  };
+  nee_regions("a5_nee_emission_twice_regions", "A5NeeEmissionTwice", nee_emission_twice, 1, true);
+  nee_regions("a5_nee_without_jacobian_regions", "A5NeeWithoutTheJacobian", nee_without_jacobian, 1, true);
+  // one light: nothing to see (the diagnosis test expects this check to pass); two: caught
+  nee_regions("a5_nee_without_one_over_n_lights_one_light", "A5NeeWithoutOneOverNLights",
+              nee_without_one_over_n_lights, 1, false);
+  nee_regions("a5_nee_without_one_over_n_lights", "A5NeeWithoutOneOverNLights", nee_without_one_over_n_lights, 2,
+              true);
+  add("a5_nee_cap_only", "A5NeeCapOnly", "a5_nee_beyond_cap", [](std::uint64_t seed) {
+    double r = 1.0;
+    return nee_beyond_cap_p_value(with_nee(with_path_end(nee_cap_only)), seed, r);
+  });
+  const auto nee_exact = [&](const char* name, const char* test, auto nee) {
+    bugs.push_back(exact_bug(name, test, "a5_nee_furnace_exact",
+                             [nee] { return check_nee_furnace_is_exact(with_nee(with_path_end(nee))); }));
+  };
+  nee_exact("a5_nee_emission_twice", "A5NeeEmissionTwice", nee_emission_twice);
+  nee_exact("a5_nee_without_jacobian", "A5NeeWithoutTheJacobian", nee_without_jacobian);
+  nee_exact("a5_nee_shadow_ray_hits_light", "A5NeeShadowRayHitsTheLight", nee_shadow_ray_hits_light);
+  return bugs;
+}
+
+}  // namespace mcrt::testing::assignment
