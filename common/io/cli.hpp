@@ -10,8 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "io/cli11.hpp"
-#include "io/json.hpp"
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
 #include "io/usage_error.hpp"
 #include "render/scene.hpp"
 

@@ -16,7 +16,8 @@
 #include <filesystem>
 #include <string>
 
-#include "io/json.hpp"
+#include <nlohmann/json.hpp>
+
 #include "render/image.hpp"
 #include "render/scene.hpp"
 

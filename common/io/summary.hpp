@@ -7,8 +7,9 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "io/cli.hpp"
-#include "io/json.hpp"
 
 namespace mcrt {
 

@@ -18,7 +18,7 @@
 #include <variant>
 #include <vector>
 
-#include "io/json.hpp"
+#include <nlohmann/json.hpp>
 
 namespace mcrt {
 

@@ -58,7 +58,7 @@ class QuickRunTest(unittest.TestCase):
 
     def test_every_statistical_check_of_the_assignments_is_measured(self):
         names = {r["name"] for r in self.checks()}
-        for name in ("a1_disk", "a1_ball_k2", "a1_ball_k3", "a1_ball_k5", "a1_basic_estimator",
+        for name in ("a1_disk", "a1_ball", "a1_basic_estimator",
                      "a2_uniform_hemisphere", "a2_cosine_hemisphere", "a2_uniform_sphere",
                      "a2_unit_disk", "a3_furnace", "a4_furnace", "a4_regions",
                      "a5_roulette_furnace", "a5_uniform_furnace", "a5_cos2_furnace",

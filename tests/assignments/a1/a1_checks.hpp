@@ -66,26 +66,40 @@ double ball_p_value(P&& producer, int k, std::uint64_t seed, double& volume) {
   return z_test_p_value(volume, unit_ball_volume(k), ball_volume_theory_std(k, k_ball_points));
 }
 
-/// a1.2: E[2^k M/N] = V_k for k = `dims`, ball_p_value at three seeds.
+/// a1.2 at one seed, every dimension of `dims` at once: the Sidak combination of their
+/// ball_p_values, so that the task holds one verdict (fails a correct solution with
+/// probability 7.5e-7, grading.hpp) rather than one per dimension. Adds each estimate to
+/// `volume_sums`.
+template <class P>
+double balls_p_value(P&& producer, const std::vector<int>& dims, std::uint64_t seed,
+                     std::vector<double>& volume_sums) {
+  volume_sums.resize(dims.size(), 0.0);
+  std::vector<double> p(dims.size());
+  for (std::size_t i = 0; i < dims.size(); ++i) {
+    double volume = 0.0;
+    p[i] = ball_p_value(producer, dims[i], seed, volume);
+    volume_sums[i] += volume;
+  }
+  return sidak_p_value(p);
+}
+
+/// a1.2: E[2^k M/N] = V_k for k = `dims`, balls_p_value at three seeds.
 template <class P>
 TaskResult check_ball_estimator(P&& producer, const std::vector<int>& dims) {
-  TaskResult result{true, ""};
-  for (int k : dims) {
-    double sum = 0.0;
-    const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-      double vol = 0.0;
-      const double p = ball_p_value(producer, k, seed, vol);
-      sum += vol;
-      return p;
-    });
-    const double mean = sum / k_seeds;
+  std::vector<double> sums;
+  const SeedVerdict v = at_grading_seeds(
+      [&](std::uint64_t seed) { return balls_p_value(producer, dims, seed, sums); });
+  TaskResult result{v.passed(), ""};
+  for (std::size_t i = 0; i < dims.size(); ++i) {
+    const int k = dims[i];
+    const double mean = sums[i] / k_seeds;
     std::string d = diagnose_mean_ratio(mean, unit_ball_volume(k));
     if (near(mean, unit_ball_volume(k) / 2.0, 0.02))
       d = diagnosis("your volume is half of V_k: is M/N scaled by 2^(k-1) instead of 2^k?");
-    result.message += fmt::format("k = {}: mean {:.5f}, V_k = {:.5f}; {}\n{}", k, mean,
-                                  unit_ball_volume(k), v.describe(), v.passed() ? "" : d + "\n");
-    result.passed = result.passed && v.passed();
+    result.message += fmt::format("k = {}: mean {:.5f}, V_k = {:.5f}\n{}", k, mean,
+                                  unit_ball_volume(k), v.passed() || d.empty() ? "" : d + "\n");
   }
+  result.message += "all dimensions at once (Sidak): " + v.describe() + "\n";
   return result;
 }
 

@@ -60,9 +60,12 @@ struct A5Estimator {
 inline constexpr std::size_t k_a5_estimator_numbers = 8;
 
 inline void append(std::vector<double>& out, const A5Estimator& e) {
-  out.insert(out.end(), {static_cast<double>(e.kind), static_cast<double>(e.min_depth), static_cast<double>(e.policy),
-                         e.q, e.floor, static_cast<double>(e.max_depth), static_cast<double>(e.pdf_kind),
-                         static_cast<double>(e.pdf_m)});
+  // One push_back per number: insert() of a list into an empty vector trips a false
+  // -Wstringop-overflow in g++ 12.
+  for (double x : {static_cast<double>(e.kind), static_cast<double>(e.min_depth), static_cast<double>(e.policy),
+                   e.q, e.floor, static_cast<double>(e.max_depth), static_cast<double>(e.pdf_kind),
+                   static_cast<double>(e.pdf_m)})
+    out.push_back(x);
 }
 
 inline constexpr const char* k_request_a5_paths = "a5_paths";
