@@ -82,7 +82,7 @@ inline std::string diagnose_lobe_samples(const std::vector<Vec3>& points, double
 /// a6.1: the lobe's sampler against its pdf (chi-square at the grading seeds, u from
 /// Rng(seed, 61)); on failure the heat map and a diagnosis.
 template <class S>
-TaskResult check_lobe_sampler(S& subject, double m = k_a6_lobe_m) {
+TaskResult check_lobe_sampler(S&& subject, double m = k_a6_lobe_m) {
   const Binning<Vec3> binning = sampler_hemisphere_binning();
   const std::string name = "a6_phong_lobe";
   const std::vector<double> probability = bulk_cell_probabilities(lobe_pdf_of(subject, m), binning);
@@ -117,7 +117,7 @@ TaskResult check_lobe_sampler(S& subject, double m = k_a6_lobe_m) {
 
 /// a6.1: the pdf round +z integrates to 1 over the hemisphere (it is 0 below it: cos alpha < 0).
 template <class S>
-TaskResult check_lobe_pdf_integral(S& subject, double m = k_a6_lobe_m) {
+TaskResult check_lobe_pdf_integral(S&& subject, double m = k_a6_lobe_m) {
   const double total = bulk_pdf_integral(lobe_pdf_of(subject, m), sampler_hemisphere_binning());
   const bool ok = std::abs(total - 1.0) < 1e-6;
   std::string message = fmt::format("phong_lobe_pdf at m = {} integrates to {:.6f} over the hemisphere round r", m, total);
@@ -138,7 +138,7 @@ TaskResult check_lobe_pdf_integral(S& subject, double m = k_a6_lobe_m) {
 /// directions round a tilted mirror direction, (m + 1)/(2 pi) cos^m(alpha) (relative 1e-9:
 /// pow's round-off at m = 10 is 1e-15), 0 behind the lobe.
 template <class S>
-TaskResult check_lobe_pdf_round_mirror(S& subject, double m = k_a6_lobe_m) {
+TaskResult check_lobe_pdf_round_mirror(S&& subject, double m = k_a6_lobe_m) {
   const Vec3 r = glm::normalize(Vec3(0.6, -0.3, 0.5));
   const Frame frame(r);
   std::vector<Vec3> points;
@@ -174,7 +174,7 @@ TaskResult check_lobe_pdf_round_mirror(S& subject, double m = k_a6_lobe_m) {
 /// -expm1(log(u0)/(m + 1)) does not. Relative 1e-6: the careful form is within 1e-14, the
 /// cancelling one off by 1e-4 at u0 = 1 - 1e-9.
 template <class S>
-TaskResult check_sharp_lobe_digits(S& subject) {
+TaskResult check_sharp_lobe_digits(S&& subject) {
   constexpr double m = 1e4;
   const std::vector<Vec2> u{{1.0 - 1e-9, 0.3}, {0.999999, 0.7}, {0.9, 0.1}, {0.5, 0.55}};
   const std::vector<Vec3> w = subject.a6_lobe_samples(m, u);
@@ -217,7 +217,7 @@ inline constexpr std::array<WeightCase, 9> k_weight_cases{{
 /// a6.2: one heuristic against the table (relative 1e-15: a correct form rounds at most twice),
 /// and w(a, b) + w(b, a) = 1 for 400 pairs spread over 12 decades.
 template <class S>
-TaskResult check_heuristic(S& subject, A6Heuristic h) {
+TaskResult check_heuristic(S&& subject, A6Heuristic h) {
   const char* name = h == A6Heuristic::power ? "power_heuristic" : "balance_heuristic";
   std::vector<Vec2> pairs;
   for (const WeightCase& c : k_weight_cases) pairs.emplace_back(c.p_s, c.p_o);
@@ -327,18 +327,22 @@ inline std::string diagnose_mis_regions(const std::vector<RunningStats>& s) {
                                  what, light, bsdf));
   };
   if (!std::isfinite(light) || !std::isfinite(bsdf)) return diagnosis("a region's mean is not finite: a division by a pdf of 0?");
-  if (high > 8.0 || low < 0.05)
-    return text("some regions are off by a large factor: are both pdfs in a weight in the same measure? p_l must be "
-                "per steradian (p_A r^2 / cos(theta_y), with the 1/N of picking the light), as p_b is; a p_A per unit "
-                "area is ~1/r^2 smaller");
-  if (near(light, 2.0, 0.2) && bsdf < 0.5)
+  // Measured with the known-wrong variants of diagnosis_test.cpp (64 spp, the first failing
+  // seed): a BSDF sample weighted by w(p_l, p_b) gives 1.14-1.42x and 0.02x, one added with
+  // weight 1 1.14-1.42x and 1.00x, a light sample added with weight 1 1.01x and 1.92x, p_l per
+  // unit area 150x and 1.01x. Region 0's mean has a standard error of about 1.3%: 1.08 is six.
+  if (light > 1.08 && bsdf < 0.5)
     return text("the BSDF sample is weighted as if it were the light sample: its weight is w(p_b, p_l), not w(p_l, p_b)");
-  if (light < 0.5 && near(bsdf, 2.0, 0.2))
+  if (light < 0.5 && bsdf > 1.08)
     return text("the light sample is weighted as if it were the BSDF sample: its weight is w(p_l, p_b), not w(p_b, p_l)");
-  if (near(light, 2.0, 0.2) && near(bsdf, 1.0, 0.1))
+  if (high > 8.0 || low < 0.05)
+    return text("some regions are off by a large factor: are both pdfs of a weight in the same measure? p_l must be "
+                "per steradian (p_A r^2 / cos(theta_y), with the 1/N of picking the light), as p_b is; a p_A per unit "
+                "area is ~r^2 / cos(theta_y) times smaller");
+  if (light > 1.08 && near(bsdf, 1.0, 0.05))
     return text("light is counted twice where light sampling wins: the BSDF sample that hits a light is added with "
                 "weight 1; weight it by w_b = w(p_b, p_l), so that w_l + w_b = 1");
-  if (near(light, 1.0, 0.1) && near(bsdf, 2.0, 0.2))
+  if (near(light, 1.0, 0.05) && bsdf > 1.08)
     return text("light is counted twice where BSDF sampling wins: the light sample is added with weight 1; weight it "
                 "by w_l = w(p_l, p_b), so that w_l + w_b = 1");
   return text("the weights of a direction must sum to 1 (w_l(w) + w_b(w) = 1 for every w), each the heuristic of its "
@@ -364,7 +368,7 @@ inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_
 
 /// a6.3: MIS with `heuristic` agrees with the reference in every region, at the grading seeds.
 template <class S>
-TaskResult check_mis_regions(S& subject, A6Strategy heuristic) {
+TaskResult check_mis_regions(S&& subject, A6Strategy heuristic) {
   std::size_t worst = 0;
   double worst_z = 0.0;
   std::vector<RunningStats> failed;
@@ -397,7 +401,7 @@ inline constexpr double k_a6_variance_factor = 8.0;
 /// variance to the smaller of light sampling's and BSDF sampling's (each two samples a point,
 /// MIS one of each: the same rays), and where it is.
 template <class S>
-double mis_variance_ratio(S& subject, A6Strategy heuristic, std::uint64_t seed, std::size_t& where) {
+double mis_variance_ratio(S&& subject, A6Strategy heuristic, std::uint64_t seed, std::size_t& where) {
   const auto stats = [&](A6Strategy s) {
     return a6_region_stats(subject.a6_regions(s, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
   };
@@ -413,7 +417,7 @@ double mis_variance_ratio(S& subject, A6Strategy heuristic, std::uint64_t seed, 
 /// a6.3: at equal rays MIS's variance is within k_a6_variance_factor of the better single
 /// strategy's in every region, at 2 of the 3 grading seeds.
 template <class S>
-TaskResult check_mis_efficiency(S& subject, A6Strategy heuristic) {
+TaskResult check_mis_efficiency(S&& subject, A6Strategy heuristic) {
   std::array<double, k_seeds> ratios{};
   std::array<std::size_t, k_seeds> where{};
   int failures = 0;
