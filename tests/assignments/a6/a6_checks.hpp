@@ -264,8 +264,12 @@ TaskResult check_heuristic(S&& subject, A6Heuristic h) {
 
 // ---------------------------------------------------------------- a6.3 MIS on the plates
 
-/// spp of the student's renders: 64 per pixel puts 1000-2900 samples in each region.
-inline constexpr int k_a6_spp = 64;
+/// spp of the student's renders: 256 per pixel puts 4000-11500 samples in each region. At 64
+/// the sharpest plate's smallest light (plate 3, light 0: a relative variance of 45 per sample,
+/// heavy-tailed) made the z-test reject the solution at 5e-4 in 3 of 400 runs; at 256 none of
+/// 300 (measured, seeds 200001-200150, both heuristics: Sidak p below 0.05 in 4.0%, below 0.01
+/// in 0.7%).
+inline constexpr int k_a6_spp = 256;
 
 /// The reference: each region's mean and its standard error, from the instructor's MIS (power
 /// heuristic) at 16384 spp of a6_region_samples on 96 x 72 pixels, seed 0x5eed6 (none of the
@@ -390,25 +394,52 @@ TaskResult check_mis_regions(S&& subject, A6Strategy heuristic) {
   return {false, message};
 }
 
+/// The variance per camera sample of the two single strategies at equal rays (light or BSDF
+/// sampling, two samples a plate point: the rays of MIS's one of each), per region: the
+/// instructor's chapter 08 code at 16384 spp (seeds 0x5eed7, 0x5eed8). Stored, not measured at
+/// grading: a single strategy's sample variance at 256 spp is itself heavy-tailed (BSDF
+/// sampling on the rough plate finds the small light once in ~500 samples) and would make the
+/// ratio below noisy.
+struct StrategyVariances {
+  double light, bsdf;
+};
+inline constexpr std::array<StrategyVariances, 16> k_a6_single_strategy_variance{{
+    {0.000430171, 4.26238},     // plate 0, light 0
+    {0.000183507, 2.47716},     // plate 0, light 1
+    {0.000183436, 2.36412},     // plate 0, light 2
+    {0.000422745, 0.589545},    // plate 0, light 3
+    {0.0465052, 29.8985},       // plate 1, light 0
+    {0.0527801, 8.23177},       // plate 1, light 1
+    {0.0523722, 0.896313},      // plate 1, light 2
+    {0.0349262, 0.0497037},     // plate 1, light 3
+    {3.06042, 139.423},         // plate 2, light 0
+    {3.6809, 15.7575},          // plate 2, light 1
+    {2.95322, 1.51899},         // plate 2, light 2
+    {1.07994, 0.0261288},       // plate 2, light 3
+    {92.7774, 322.148},         // plate 3, light 0
+    {86.2116, 37.1409},         // plate 3, light 1
+    {64.0357, 3.218},           // plate 3, light 2
+    {21.918, 0.00751597},       // plate 3, light 3
+}};
+
 /// The factor by which MIS's variance may exceed the better single strategy's in a region at
-/// equal rays. Measured with the solution (96 x 72, 64 spp, seeds 1-200): at most 3.3x (plate 0,
-/// light 2: light sampling's two samples beat MIS's one light sample where BSDF sampling adds
-/// nothing); 8 leaves room for the sample variances' noise, while a single strategy passed
-/// off as MIS, or weights of 1/2 each, exceed it by 100x or more in some region.
-inline constexpr double k_a6_variance_factor = 8.0;
+/// equal rays. Measured with the solution (256 spp, seeds 300001-300150): the largest ratio
+/// over the 16 regions is 2.55 (median) to 2.69 (max) with the balance heuristic, 2.0-2.14
+/// with the power heuristic (plate 0, light 2: light sampling's two samples beat MIS's one
+/// where BSDF sampling adds nothing). 4 leaves room for the sample variance's noise, while
+/// light sampling passed off as MIS exceeds it ~5000x (plate 3, light 3: diagnosis_test.cpp).
+inline constexpr double k_a6_variance_factor = 4.0;
 
 /// One seed of the efficiency test: the largest ratio over the regions of MIS's sample
-/// variance to the smaller of light sampling's and BSDF sampling's (each two samples a point,
-/// MIS one of each: the same rays), and where it is.
+/// variance to the better single strategy's, and where it is.
 template <class S>
 double mis_variance_ratio(S&& subject, A6Strategy heuristic, std::uint64_t seed, std::size_t& where) {
-  const auto stats = [&](A6Strategy s) {
-    return a6_region_stats(subject.a6_regions(s, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
-  };
-  const std::vector<RunningStats> mis = stats(heuristic), light = stats(A6Strategy::light), bsdf = stats(A6Strategy::bsdf);
+  const std::vector<RunningStats> mis =
+      a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
   double worst = 0.0;
   for (std::size_t r = 0; r < mis.size(); ++r) {
-    const double ratio = mis[r].variance() / std::min(light[r].variance(), bsdf[r].variance());
+    const StrategyVariances& v = k_a6_single_strategy_variance[r];
+    const double ratio = mis[r].variance() / std::min(v.light, v.bsdf);
     if (!(ratio <= worst)) worst = ratio, where = r;
   }
   return worst;
