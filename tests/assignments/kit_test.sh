@@ -123,6 +123,7 @@ case "$a" in
     leak common/render/glossy_direct.hpp 's.pdf_light = plates_light_pdf(scene, hit.point, w, j);' "a6.3's light sample"
     leak tests 'mis_weight(MisHeuristic::balance, b.pdf_bsdf, n * b.pdf_light)' "glossy_direct_test.cpp's known-wrong MIS"
     leak docs 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "chapter 08's page quoting the plates' MIS"
+    leak tests 'inline Vec3 sample_phong_lobe_cos_u_to_one_over_m' "known_bugs/samplers.hpp (a naive a6.1 lobe sampler)"
     ;;
 esac
 
