@@ -134,7 +134,7 @@ TaskResult check_lobe_pdf_integral(S&& subject, double m = k_a6_lobe_m) {
   return {ok, message};
 }
 
-/// a6.1: the pdf is a function of the angle to `reflected`, whichever way it points: at 12
+/// a6.1: the pdf is a function of the angle to `reflected`, whichever way it points: at 10
 /// directions round a tilted mirror direction, (m + 1)/(2 pi) cos^m(alpha) (relative 1e-9:
 /// pow's round-off at m = 10 is 1e-15), 0 behind the lobe.
 template <class S>
@@ -166,7 +166,7 @@ TaskResult check_lobe_pdf_round_mirror(S&& subject, double m = k_a6_lobe_m) {
       return {false, message};
     }
   }
-  return {true, "phong_lobe_pdf follows cos(alpha) = w . reflected at 12 directions"};
+  return {true, "phong_lobe_pdf follows cos(alpha) = w . reflected at 10 directions"};
 }
 
 /// a6.1: at m = 1e4 (a near mirror) sin(alpha) keeps its digits. For u0 near 1, 1 - cos(alpha)
