@@ -10,6 +10,12 @@
 //   a6.3 the MIS estimator of Veach's plates, per plate x light region, against a reference
 //        rendered once by the instructor's solution, and its variance at equal rays against
 //        the single strategies (light sampling alone, BSDF sampling alone).
+// Measured on the solution (single-seed verdicts, seeds 100000 and up, throwaway programs):
+// the lobe's chi-square at m = 10 below 0.05 in 3.3%, below 0.01 in 0.7%, below 5e-4 in 0 of
+// 300 seeds (m = 3: 4.0%, 0.7%, 1 of 300); the region test (both heuristics, 300 runs) 4.0%,
+// 0.7%, 0; the efficiency ratio at most 2.69 (limit 4) over 150 seeds. Known bugs: the lobe
+// with u^(1/m) gives p < 1e-124 at each of 30 seeds; the MIS variants of diagnosis_test.cpp
+// p < 1e-8 at every seed tried, light sampling passed off as MIS a ratio over 5000.
 
 #include <algorithm>
 #include <array>
