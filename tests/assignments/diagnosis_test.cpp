@@ -1,6 +1,6 @@
 // The graders' diagnoses name the right bug: each known-wrong variant of tests/known_bugs/ run
 // through an assignment's grading procedure fails it, with the diagnosis written for that bug.
-// (CTest label assignments, and the default suite: about 3 s.)
+// (CTest label assignments, and the default suite: about 3 s of CPU, 7 s wall on 2 loaded cores.)
 
 #include <gtest/gtest.h>
 
