@@ -67,6 +67,7 @@ struct GlossySample {
 /// Light sampling: light j with probability 1/N, w uniform in its cone, a shadow ray along w.
 inline GlossySample draw_light_sample(const VeachPlates& scene, const Hit& hit, const Vec3& wo,
                                       Rng& rng, RayCount& count) {
+  // ASSIGNMENT a6.3 BEGIN stub: (void)scene; (void)hit; (void)wo; (void)rng; (void)count; NOT_IMPLEMENTED(draw_light_sample);
   const Phong& material = scene.materials[hit.material];
   const std::size_t j = rng.uniform_below(static_cast<std::uint32_t>(scene.light_count()));
   const Sphere& light = scene.lights[j];
@@ -80,6 +81,7 @@ inline GlossySample draw_light_sample(const VeachPlates& scene, const Hit& hit, 
   const double le = traced_emission(scene, spawn_ray(hit, w), count);
   s.f_le_cos = phong_brdf(material, w, wo, hit.normal) * le * std::max(0.0, glm::dot(w, hit.normal));
   return s;
+  // ASSIGNMENT a6.3 END
 }
 
 /// BSDF sampling: w from the Phong material (lobe round the mirror direction, or cosine for
@@ -135,10 +137,12 @@ inline double estimate_bsdf_sampling(const VeachPlates& scene, const Hit& hit, c
 /// power heuristic trades that bound for lower variance where one pdf dominates).
 inline double estimate_mis(const VeachPlates& scene, const Hit& hit, const Vec3& wo,
                            MisHeuristic heuristic, Rng& rng, RayCount& count) {
+  // ASSIGNMENT a6.3 BEGIN stub: (void)scene; (void)hit; (void)wo; (void)heuristic; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_mis);
   const GlossySample l = draw_light_sample(scene, hit, wo, rng, count);
   const GlossySample b = draw_bsdf_sample(scene, hit, wo, rng, count);
   return mis_weight(heuristic, l.pdf_light, l.pdf_bsdf) * sample_value(l.f_le_cos, l.pdf_light) +
          mis_weight(heuristic, b.pdf_bsdf, b.pdf_light) * sample_value(b.f_le_cos, b.pdf_bsdf);
+  // ASSIGNMENT a6.3 END
 }
 
 /// One pixel sample of the figure: the camera ray, then (on a plate) the reflected light by

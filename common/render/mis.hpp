@@ -40,15 +40,28 @@ namespace mcrt {
 
 enum class MisHeuristic { balance, power };
 
-/// w_s for the strategy of pdf p_s against the other's p_o: p/(p + p_o) or p^2/(p^2 + p_o^2);
-/// 0 when both are 0 (a direction neither strategy can draw carries no sample).
-inline double mis_weight(MisHeuristic heuristic, double p_s, double p_o) {
-  if (heuristic == MisHeuristic::power) {
-    p_s *= p_s;
-    p_o *= p_o;
-  }
+/// The balance heuristic w_s = p_s / (p_s + p_o) for the strategy of pdf p_s against the
+/// other's p_o (both per steradian); 0 when both are 0 (a direction neither strategy can draw
+/// carries no sample).
+inline double balance_heuristic(double p_s, double p_o) {
+  // ASSIGNMENT a6.2 BEGIN stub: (void)p_s; (void)p_o; NOT_IMPLEMENTED(balance_heuristic);
   const double sum = p_s + p_o;
   return sum > 0.0 ? p_s / sum : 0.0;
+  // ASSIGNMENT a6.2 END
+}
+
+/// The power heuristic (exponent 2) w_s = p_s^2 / (p_s^2 + p_o^2); 0 when both are 0.
+inline double power_heuristic(double p_s, double p_o) {
+  // ASSIGNMENT a6.2 BEGIN stub: (void)p_s; (void)p_o; NOT_IMPLEMENTED(power_heuristic);
+  const double p_s2 = p_s * p_s, p_o2 = p_o * p_o;
+  const double sum = p_s2 + p_o2;
+  return sum > 0.0 ? p_s2 / sum : 0.0;
+  // ASSIGNMENT a6.2 END
+}
+
+/// w_s by the heuristic named.
+inline double mis_weight(MisHeuristic heuristic, double p_s, double p_o) {
+  return heuristic == MisHeuristic::power ? power_heuristic(p_s, p_o) : balance_heuristic(p_s, p_o);
 }
 
 /// One path's MIS estimate of the radiance arriving along `ray`.

@@ -17,13 +17,7 @@
 /// hemisphere round r is 2 pi / (m + 1). (The BRDF has m + 2, not m + 1: the extra cos(theta_i)
 /// of the rendering equation, so that a white lobe at normal incidence reflects exactly 1.)
 ///
-/// The inversion. phi is uniform on [0, 2 pi): phi = 2 pi u1. c = cos(alpha) has density
-/// (m + 1) c^m on [0, 1], so its CDF is F(c) = c^(m + 1) and F(c) = u0 gives
-///   c = u0^(1 / (m + 1)) = exp(log(u0) / (m + 1)).
-/// For large m, c is within ~1/m of 1, and sin(alpha) = sqrt(1 - c^2) would lose most of its
-/// digits to cancellation (at m = 10^4 and u0 near 1, 1 - c^2 ~ 1e-14 and the round-off of c^2
-/// is 1e-16: a 1 % error). So 1 - c = -expm1(log(u0) / (m + 1)), computed without cancellation,
-/// and sin(alpha) = sqrt((1 - c)(1 + c)).
+/// The inversion: sample_phong_lobe_local says how (inside it: it is assignment a6.1).
 ///
 /// The frame round r. (sin alpha cos phi, sin alpha sin phi, cos alpha) is a direction with r
 /// as its +z axis; Frame(r) (sampling/frame.hpp) turns it into the world direction.
@@ -92,17 +86,24 @@ inline double phong_brdf(const Phong& material, const Vec3& wi, const Vec3& wo, 
   return material.rho_d * k_inv_pi + material.rho_s * lobe;
 }
 
-/// A direction round +z (the lobe's frame: z along r) with pdf (m + 1)/(2 pi) cos^m(alpha):
-/// cos alpha = u0^(1/(m + 1)), sin alpha from 1 - cos alpha without cancellation, phi = 2 pi u1.
+/// A direction round +z (the lobe's frame: z along r) with pdf (m + 1)/(2 pi) cos^m(alpha),
+/// sin(alpha) accurate up to m = 1e4.
 inline Vec3 sample_phong_lobe_local(Vec2 u, double m) {
-  // ASSIGNMENT a2.2 BEGIN needs=a2.1 withheld stub: (void)u; (void)m; NOT_IMPLEMENTED(sample_phong_lobe_local);
+  // ASSIGNMENT a6.1 BEGIN stub: (void)u; (void)m; NOT_IMPLEMENTED(sample_phong_lobe_local);
+  // The inversion. phi is uniform on [0, 2 pi): phi = 2 pi u1. c = cos(alpha) has density
+  // (m + 1) c^m on [0, 1], so its CDF is F(c) = c^(m + 1) and F(c) = u0 gives
+  //   c = u0^(1 / (m + 1)) = exp(log(u0) / (m + 1)).
+  // For large m, c is within ~1/m of 1, and sin(alpha) = sqrt(1 - c^2) would lose most of its
+  // digits to cancellation (at m = 10^4 and u0 near 1, 1 - c^2 ~ 1e-14 and the round-off of c^2
+  // is 1e-16: a 1 % error). So 1 - c = -expm1(log(u0) / (m + 1)), computed without
+  // cancellation, and sin(alpha) = sqrt((1 - c)(1 + c)).
   const double log_cos_alpha = std::log(u.x) / (m + 1.0);  // u0 = 0: -inf, the lobe's horizon
   const double cos_alpha = std::exp(log_cos_alpha);
   const double one_minus_cos = -std::expm1(log_cos_alpha);
   const double sin_alpha = std::sqrt(one_minus_cos * (1.0 + cos_alpha));
   const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
   return {sin_alpha * circle.x, sin_alpha * circle.y, cos_alpha};
-  // ASSIGNMENT a2.2 END
+  // ASSIGNMENT a6.1 END
 }
 
 /// A world direction from the lobe round the unit mirror direction `reflected`. It may be
@@ -114,7 +115,9 @@ inline Vec3 sample_phong_lobe(Vec2 u, const Vec3& reflected, double m) {
 /// p(wi) = (m + 1)/(2 pi) max(0, wi . r)^m per steradian, over the whole sphere of directions
 /// (wi below the surface included: the sampler draws those too).
 inline double phong_lobe_pdf(const Vec3& wi, const Vec3& reflected, double m) {
+  // ASSIGNMENT a6.1 BEGIN stub: (void)wi; (void)reflected; (void)m; NOT_IMPLEMENTED(phong_lobe_pdf);
   return (m + 1.0) * k_inv_two_pi * phong_cos_power(glm::dot(wi, reflected), m);
+  // ASSIGNMENT a6.1 END
 }
 
 /// P_s = rho_s / (rho_s + rho_d), the probability of sampling the lobe; 0 for a black surface

@@ -113,6 +113,20 @@ case "$a" in
     ;;
 esac
 
+case "$a" in
+  a1|a2|a3|a4|a5|a6)  # a6's lobe, heuristics and MIS (every kit stubs them: a6 is the last)
+    grep -q 'not implemented: a6.1 sample_phong_lobe_local' "$kit/common/sampling/phong.hpp" || fail "a6.1 is not stubbed"
+    leak common/sampling/phong.hpp 'const double one_minus_cos = -std::expm1(log_cos_alpha);' "a6.1's lobe sampler"
+    leak common/sampling/phong.hpp '(m + 1.0) * k_inv_two_pi * phong_cos_power(' "a6.1's lobe pdf"
+    leak common/render/mis.hpp 'return sum > 0.0 ? p_s2 / sum : 0.0;' "a6.2's power heuristic"
+    leak common/render/glossy_direct.hpp 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "a6.3's MIS"
+    leak common/render/glossy_direct.hpp 's.pdf_light = plates_light_pdf(scene, hit.point, w, j);' "a6.3's light sample"
+    leak tests 'mis_weight(MisHeuristic::balance, b.pdf_bsdf, n * b.pdf_light)' "glossy_direct_test.cpp's known-wrong MIS"
+    leak docs 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "chapter 08's page quoting the plates' MIS"
+    leak tests 'inline Vec3 sample_phong_lobe_cos_u_to_one_over_m' "known_bugs/samplers.hpp (a naive a6.1 lobe sampler)"
+    ;;
+esac
+
 # Every task's tests fail: the grader scores 0, with NOT IMPLEMENTED feedback for each task.
 if "$kit/scripts/grade" "$a" --build "$build" --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1; then
   cat "$tmp/grade.txt"; fail "the stub kit got full marks"

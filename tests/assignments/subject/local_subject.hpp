@@ -11,12 +11,16 @@
 #include "assignments/a3/a3_produce.hpp"
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/a5/a5_produce.hpp"
+#include "assignments/a6/a6_produce.hpp"
 #include "assignments/subject/requests.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/monte_carlo.hpp"
 #include "integration/quadrature.hpp"
+#include "render/glossy_direct.hpp"
+#include "render/mis.hpp"
 #include "render/path_tracer.hpp"
 #include "sampling/hemisphere.hpp"
+#include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
 #include "sampling/sphere.hpp"
 
@@ -127,6 +131,39 @@ struct LocalSubject {
     return student_a5().a5_regions(e, lamp_parts, size, spp, seed);
   }
   std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed) const { return student_a5().a5_wall(e, n, seed); }
+
+  /// a6.1: the lobe's local sampler at each u, its pdf round `reflected` at each point.
+  std::vector<Vec3> a6_lobe_samples(double m, const std::vector<Vec2>& u) const {
+    std::vector<Vec3> out;
+    out.reserve(u.size());
+    for (const Vec2& x : u) out.push_back(sample_phong_lobe_local(x, m));
+    return out;
+  }
+  std::vector<double> a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points) const {
+    std::vector<double> out;
+    out.reserve(points.size());
+    for (const Vec3& w : points) out.push_back(phong_lobe_pdf(w, reflected, m));
+    return out;
+  }
+
+  /// a6.2: the heuristic's weight w(p_s, p_o) of each pair.
+  std::vector<double> a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs) const {
+    std::vector<double> out;
+    out.reserve(pairs.size());
+    for (const Vec2& p : pairs)
+      out.push_back(h == A6Heuristic::power ? power_heuristic(p.x, p.y) : balance_heuristic(p.x, p.y));
+    return out;
+  }
+
+  /// a6.3: every sample of the plates' 16 regions by `strategy` (a6_region_samples), with the
+  /// student's estimate_mis.
+  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed) const {
+    return a6_region_samples(
+        [](const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng, RayCount& count) {
+          return estimate_mis(scene, hit, wo, h, rng, count);
+        },
+        strategy, width, height, spp, seed);
+  }
 
   void stop() {}  // nothing runs apart from this process
 };

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "render/veach_plates.hpp"  // the a6 regions' pixel counts
+
 namespace mcrt::testing::assignment {
 namespace {
 
@@ -262,6 +264,47 @@ std::vector<double> RemoteSubject::a5_wall(const A5Estimator& e, int n, std::uin
   std::vector<double> answer = call(k_request_a5_wall, params);
   if (answer.size() != static_cast<std::size_t>(n))
     broken(k_request_a5_wall, fmt::format("{} numbers for {} rays", answer.size(), n));
+  return answer;
+}
+
+std::vector<Vec3> RemoteSubject::a6_lobe_samples(double m, const std::vector<Vec2>& u) {
+  std::vector<double> params{m};
+  params.reserve(1 + 2 * u.size());
+  for (const Vec2& x : u) params.insert(params.end(), {x.x, x.y});
+  const std::vector<double> answer = call(k_request_a6_lobe_samples, params);
+  if (answer.size() != 3 * u.size())
+    broken(k_request_a6_lobe_samples, fmt::format("{} numbers for {} points", answer.size(), u.size()));
+  return unflatten3(answer.data(), answer.size());
+}
+
+std::vector<double> RemoteSubject::a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points) {
+  std::vector<double> params{m, reflected.x, reflected.y, reflected.z};
+  const std::vector<double> flat = flatten(points);
+  params.insert(params.end(), flat.begin(), flat.end());
+  std::vector<double> answer = call(k_request_a6_lobe_pdf, params);
+  if (answer.size() != points.size())
+    broken(k_request_a6_lobe_pdf, fmt::format("{} numbers for {} points", answer.size(), points.size()));
+  return answer;
+}
+
+std::vector<double> RemoteSubject::a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs) {
+  std::vector<double> params{static_cast<double>(h)};
+  for (const Vec2& p : pairs) params.insert(params.end(), {p.x, p.y});
+  std::vector<double> answer = call(k_request_a6_weights, params);
+  if (answer.size() != pairs.size())
+    broken(k_request_a6_weights, fmt::format("{} numbers for {} pairs", answer.size(), pairs.size()));
+  return answer;
+}
+
+std::vector<double> RemoteSubject::a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed) {
+  std::vector<double> answer = call(k_request_a6_regions, {static_cast<double>(strategy), static_cast<double>(width),
+                                                           static_cast<double>(height), static_cast<double>(spp),
+                                                           as_number(seed)});
+  std::size_t expected = 0;
+  for (const PlateRegion& r : plate_regions(make_veach_plates(), width, height))
+    expected += static_cast<std::size_t>(r.pixel_count()) * static_cast<std::size_t>(spp);
+  if (answer.size() != expected)
+    broken(k_request_a6_regions, fmt::format("{} numbers for {} samples", answer.size(), expected));
   return answer;
 }
 

@@ -57,6 +57,10 @@ class RemoteSubject {
                        std::uint64_t stream);
   std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed);
   std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed);
+  std::vector<Vec3> a6_lobe_samples(double m, const std::vector<Vec2>& u);
+  std::vector<double> a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points);
+  std::vector<double> a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs);
+  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

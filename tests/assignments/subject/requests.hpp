@@ -73,6 +73,19 @@ inline constexpr const char* k_request_a5_single = "a5_single";
 inline constexpr const char* k_request_a5_regions = "a5_regions";
 inline constexpr const char* k_request_a5_wall = "a5_wall";
 
+/// a6: the Phong lobe round +z (a6.1), a heuristic's weights (a6.2), the plates' regions (a6.3).
+enum class A6Heuristic { balance, power };
+/// What a6's region request renders: one of chapter 08's strategies at equal rays.
+enum class A6Strategy { light, bsdf, mis_balance, mis_power };
+/// The plates render of the a6 region tests: small enough that every sample of the 16 regions
+/// travels in one request, large enough that each region holds 16-45 pixels.
+inline constexpr int k_a6_width = 96;
+inline constexpr int k_a6_height = 72;
+inline constexpr const char* k_request_a6_lobe_samples = "a6_lobe_samples";
+inline constexpr const char* k_request_a6_lobe_pdf = "a6_lobe_pdf";
+inline constexpr const char* k_request_a6_weights = "a6_weights";
+inline constexpr const char* k_request_a6_regions = "a6_regions";
+
 /// A seed, block or count sent as a double: exact below 2^53, which every request stays under.
 inline double as_number(std::uint64_t x) { return static_cast<double>(x); }
 

@@ -154,6 +154,27 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     need_rest(count, 2, name);
     return s.a5_wall(e, whole(rest[0], 1 << 24), seed(rest[1]));
   }
+  if (name == k_request_a6_lobe_samples) {
+    if (params.empty() || params.size() % 2 != 1) throw std::invalid_argument("a6_lobe_samples takes m and pairs");
+    std::vector<Vec2> u;
+    for (std::size_t i = 1; i + 1 < params.size(); i += 2) u.emplace_back(params[i], params[i + 1]);
+    return flatten(s.a6_lobe_samples(params[0], u));
+  }
+  if (name == k_request_a6_lobe_pdf) {
+    if (params.size() < 4 || (params.size() - 4) % 3 != 0) throw std::invalid_argument("a6_lobe_pdf takes m, r and points");
+    return s.a6_lobe_pdf(params[0], {params[1], params[2], params[3]}, unflatten3(params.data() + 4, params.size() - 4));
+  }
+  if (name == k_request_a6_weights) {
+    if (params.empty() || params.size() % 2 != 1) throw std::invalid_argument("a6_weights takes a heuristic and pairs");
+    std::vector<Vec2> pairs;
+    for (std::size_t i = 1; i + 1 < params.size(); i += 2) pairs.emplace_back(params[i], params[i + 1]);
+    return s.a6_weights(static_cast<A6Heuristic>(whole(params[0], 1)), pairs);
+  }
+  if (name == k_request_a6_regions) {
+    need(params, 5, name);
+    return s.a6_regions(static_cast<A6Strategy>(whole(params[0], 3)), whole(params[1], 1024), whole(params[2], 1024),
+                        whole(params[3], 1 << 16), seed(params[4]));
+  }
   throw std::invalid_argument(fmt::format("unknown request {}", name));
 }
 
