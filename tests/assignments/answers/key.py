@@ -58,6 +58,11 @@ PARAMS = {
         "offset": (0.5, [round(0.1 + 0.01 * i, 2) for i in range(91)]),   # of y from above x
         "lights": (2, [2, 3, 4]),
     },
+    "a6": {
+        "m": (20000, [1000, 2000, 5000, 10000, 20000, 50000, 100000]),  # the lobe's exponent
+        "p_light": (2.4, [round(0.5 + 0.01 * i, 2) for i in range(451)]),  # per steradian
+        "p_bsdf": (0.7, [round(0.1 + 0.01 * i, 2) for i in range(191)]),   # per steradian
+    },
 }
 
 # The hidden tests' seeds and parameters: scripts/make-assignment --variant writes them into
@@ -256,8 +261,31 @@ def questions_a5(p):
     ]
 
 
+def questions_a6(p):
+    m, pl, pb = p["m"], p["p_light"], p["p_bsdf"]
+    return [
+        number("one_minus_cos", 1, "1 - cos(alpha) of the lobe's sample at m and u0 = 1 - 1e-9",
+               -math.expm1(math.log1p(-1e-9) / (m + 1)), "cos(alpha) = u0^(1/(m + 1)): invert the CDF c^(m+1)"),
+        number("balance_weight", 1, "The balance heuristic's weight of the light sample, p_l and p_b given",
+               pl / (pl + pb), "w_l = p_l / (p_l + p_b)"),
+        number("power_weight", 1, "The power heuristic's weight of the light sample, p_l and p_b given",
+               pl * pl / (pl * pl + pb * pb), "w_l = p_l^2 / (p_l^2 + p_b^2)"),
+        choice("weights_sum", 1,
+               "One sample of each strategy, weights with w_l + w_b = 1 wherever f Le cos > 0 and w_s = 0 wherever p_s = 0: the estimator is",
+               {"a": "unbiased, whatever such weights", "b": "unbiased only with the balance heuristic",
+                "c": "unbiased only if both pdfs are positive wherever f Le cos > 0"},
+               "a", "E[w_s f Le cos / p_s] is the integral of w_s f Le cos where p_s > 0; add the two"),
+        text("light_sampling_wins", 2,
+             "On which plate x light region does light sampling alone beat MIS at equal rays, and why can MIS not win there?",
+             ["1: a region where the light's pdf follows the integrand much better than the lobe's: "
+              "a rough plate under a small light",
+              "1: at equal rays MIS spends half its rays on BSDF samples that there almost never reach "
+              "the light: weighting keeps it unbiased and robust, but cannot make those rays useful"]),
+    ]
+
+
 QUESTIONS = {"a1": questions_a1, "a2": questions_a2, "a3": questions_a3, "a4": questions_a4,
-             "a5": questions_a5}
+             "a5": questions_a5, "a6": questions_a6}
 
 
 def questions(a, secret=None):

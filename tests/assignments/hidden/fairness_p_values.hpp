@@ -21,16 +21,16 @@ inline constexpr double k_hidden_alpha = 1e-6;
 template <class S>
 std::vector<MeasuredCheck> hidden_statistical_checks(S& s) {
   return {
-      // a4_hidden_test.cpp, FurnaceMeanAtAlbedoPointEight (seed 4242)
-      {"a4_hidden_furnace", "a4-hidden.A4Hidden.FurnaceMeanAtAlbedoPointEight", k_hidden_alpha, false, false,
+      // a4_hidden_test.cpp, FurnaceMeanAtAnotherAlbedo at its default k_hidden_* values (seed 4242)
+      {"a4_hidden_furnace", "a4-hidden.A4Hidden.FurnaceMeanAtAnotherAlbedo", k_hidden_alpha, false, false,
        [&s](std::uint64_t seed) {
          RunningStats r;
          for (double x : s.path_furnace(0.8, 5, 20000, seed, 3)) r.add(x);
          return z_test_p_value(r.mean(), furnace_radiance(0.8, 1.0, 5),
                                std::sqrt(furnace_radiance_variance(0.8, 1.0, 5) / 20000.0));
        }},
-      // a5_hidden_test.cpp, RouletteFromVertexZeroAtQPointNine (seed 4243)
-      {"a5_hidden_roulette", "a5-hidden.A5Hidden.RouletteFromVertexZeroAtQPointNine", k_hidden_alpha, false, false,
+      // a5_hidden_test.cpp, RouletteFromVertexZero at its default k_hidden_* values (seed 4243)
+      {"a5_hidden_roulette", "a5-hidden.A5Hidden.RouletteFromVertexZero", k_hidden_alpha, false, false,
        [&s](std::uint64_t seed) {
          const Roulette roulette{0, RoulettePolicy::fixed, 0.9, 0.05};
          RunningStats L;
