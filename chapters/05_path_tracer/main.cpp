@@ -39,10 +39,8 @@
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
-#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/plot.hpp"
-#include "io/ray_limit.hpp"
 #include "io/reference_cache.hpp"
 #include "io/render_summary.hpp"
 #include "io/summary.hpp"
@@ -54,6 +52,7 @@
 #include "render/render_totals.hpp"
 #include "render/scene.hpp"
 #include "render/two_render_error.hpp"
+#include "plan.hpp"
 #include "report.hpp"
 
 using namespace mcrt;
@@ -66,11 +65,6 @@ const Chapter k_chapter{"ch05_path_tracer",
                         "estimated from two independent renders and measured against a "
                         "converged reference (which also shows the depth cut's bias)."};
 
-// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
-constexpr double k_max_rays = 1e11;
-// A generous mean of rays per sample of the reference's estimator (MIS: 2 per vertex).
-constexpr double k_reference_rays_per_sample = 32.0;
-
 struct Options {
   CommonOptions common;
   SceneOptions scene;
@@ -82,36 +76,6 @@ struct Options {
   bool lanes = true;                        // --engine lanes (true) or loop
   std::filesystem::path reference_dir;      // default: --out's parent / reference
 };
-
-// The reference: the same scene and size, no depth cut, its own sample streams.
-ReferenceSpec reference_spec(const Options& o) {
-  ReferenceSpec spec;
-  spec.scene = o.scene;
-  spec.width = o.image.width;
-  spec.height = o.image.height;
-  spec.spp = o.reference_spp;
-  spec.max_depth = -1;
-  spec.seed = o.common.seed;
-  spec.threads = o.common.threads;
-  spec.quiet = o.common.quiet;
-  return spec;
-}
-
-// The most rays the run can trace: two renders per spp, at most depth + 1 rays per sample,
-// and the reference if it is not cached.
-RayWork predicted_work(const Options& o) {
-  double samples = 0.0;
-  for (int spp : o.spp) samples += 2.0 * spp;
-  double study_depths = 0.0;  // the bias study's rays per sample, summed over its depths
-  if (o.reference_spp > 0)
-    for (int depth : o.bias_depths) study_depths += depth + 1.0;
-  const double reference = o.reference_spp > 0 ? reference_predicted_rays(
-                                                      reference_spec(o), k_reference_rays_per_sample)
-                                                : 0.0;
-  return {samples * o.image.width * o.image.height * (o.depth + 1.0 + study_depths) + reference,
-          "2 renders x sum of spp x pixels x (depth + 1 + sum of (bias depth + 1)) + reference "
-          "spp x pixels x 32"};
-}
 
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
 // images of growing spp share their first samples, so they show one image converging.
@@ -132,26 +96,8 @@ std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Came
   return {std::move(a), std::move(b)};
 }
 
-// The reference folder: --reference-dir, else the reference folder beside --out.
-std::filesystem::path reference_dir(const Options& o) {
-  return o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
-}
-
 void run(const CLI::App& app, const Options& o) {
-  check_image_size(o.image);
-  // The furnace's reference has no depth cut: at albedo 1 its paths never end.
-  if (o.scene.scene == "furnace" && o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
-  if (o.reference_spp > 0) check_reference_folder(reference_dir(o));
-  check_ray_limit(predicted_work(o), k_max_rays, "--spp, --depth, --width, --height",
-                  o.common.threads, "lower one of them");
-  // A pair of renders, the reference's three and one kept per spp for the noise strip (measured:
-  // 134 bytes per pixel at --spp 1,2,4, counted 240).
-  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height,
-                                      7.0 + static_cast<double>(o.spp.size()), o.common.threads,
-                                      "7 + spp values images"),
-                     "--width, --height, --spp", "lower them");
+  refuse_impossible_work(o);
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   std::optional<Reference> reference;
