@@ -9,4 +9,5 @@ function(mcrt_chapter name)
   add_executable(${name} main.cpp ${ARGN})
   target_link_libraries(${name} PRIVATE mcrt_common)
   mcrt_warnings(${name})
+  add_dependencies(chapters ${name})  # chapters/CMakeLists.txt
 endfunction()

@@ -42,7 +42,9 @@ ensure_packages() {
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
-# configure_and_build PRESET [TARGET...]: configure once, then build with every core.
+# configure_and_build PRESET [TARGET...]: configure once, then build with every core. Give one
+# target: with Makefiles, several targets are built one after another, each on one core; the
+# aggregates `chapters` (every chapter program) and `unit_tests` build theirs in parallel.
 configure_and_build() {
   local preset="$1"
   shift
@@ -72,22 +74,3 @@ describe_processor() {
     "${extensions[*]:-no AVX2}"
 }
 
-# The chapter programs (chapters/NN_name/ -> chNN_name): all scripts/run-chapters needs, so a
-# first run does not wait for the test suite to build.
-chapter_targets() {
-  local folder
-  for folder in chapters/[0-9][0-9]_*/; do
-    folder="${folder%/}"
-    # chapters/CMakeLists.txt adds only the folders with a CMakeLists.txt
-    [ -f "$folder/CMakeLists.txt" ] && echo "ch$(basename "$folder")"
-  done
-  return 0
-}
-
-# The unit-test executables (tests/*_test.cpp): all a portability build needs to compile.
-unit_test_targets() {
-  local source
-  for source in tests/*_test.cpp; do
-    basename "$source" .cpp
-  done
-}
