@@ -162,17 +162,16 @@ int main(int argc, char** argv) {
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of the reference image, without a depth cut (cached under "
                     "--reference-dir; 0: no reference)", 0, 1 << 20);
-  app.add_option_function<std::string>(
-         "--engine", [&](const std::string& name) { o.lanes = name == "lanes"; },
-         "How the path loop runs: lanes (four paths at a time) or loop (one at a time, the "
-         "lecture's loop as written); the images are the same bit for bit")
-      ->check(CLI::IsMember({"lanes", "loop"}))
-      ->default_str("lanes");
+  add_choice_option(
+      app, "--engine", {"lanes", "loop"}, "lanes",
+      [&](const std::string& name) { o.lanes = name == "lanes"; },
+      "How the path loop runs: lanes (four paths at a time) or loop (one at a time, the "
+      "lecture's loop as written); the images are the same bit for bit");
   add_list_option(app, "--bias-depths", o.bias_depths,
                   "Depths rendered again at every --spp against the reference, for "
                   "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
                   "off at their bias (a list: 0,1,2; only with a reference)", 0, 1000);
-  app.add_option("--reference-dir", o.reference_dir,
-                 "Folder of the cached references (default: the reference folder beside --out)");
+  add_path_option(app, "--reference-dir", o.reference_dir,
+                  "Folder of the cached references (default: the reference folder beside --out)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -181,15 +181,13 @@ int main(int argc, char** argv) {
                     "Bounces of the depth cut (depth_cut.png; bias.csv's largest k)", 0, 1000);
   add_number_option(app, "--min-depth", o.roulette.min_depth, "Bounces before roulette starts", 0,
                     1000);
-  app.add_option_function<std::string>(
-         "--policy",
-         [&](const std::string& name) {
-           o.roulette.policy = name == "fixed" ? RoulettePolicy::fixed : RoulettePolicy::throughput;
-         },
-         "Roulette of the image and bias.csv: fixed (--fixed-q) or throughput (q = the path "
-         "weight's largest part, at least --floor)")
-      ->check(CLI::IsMember({"fixed", "throughput"}))
-      ->default_str("throughput");
+  add_choice_option(
+      app, "--policy", {"fixed", "throughput"}, "throughput",
+      [&](const std::string& name) {
+        o.roulette.policy = name == "fixed" ? RoulettePolicy::fixed : RoulettePolicy::throughput;
+      },
+      "Roulette of the image and bias.csv: fixed (--fixed-q) or throughput (q = the path "
+      "weight's largest part, at least --floor)");
   add_number_option(app, "--fixed-q", o.roulette.q, "q of --policy fixed and of path_length.csv",
                     k_lowest_q, k_highest_q);
   add_number_option(app, "--floor", o.roulette.floor, "Least q of the throughput policy",

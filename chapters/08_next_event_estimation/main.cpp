@@ -176,15 +176,17 @@ int main(int argc, char** argv) {
                     "cornell: the lamp's sides times this, its radiance over its square (the "
                     "same power): 0.1 tiny and bright, 3 large and dim", 0.01, k_max_light_scale);
   add_number_option(app, "--spp", o.spp, "Samples per pixel of nee.pfm and mis.pfm", 1, 1 << 16);
-  CLI::Option* depth = add_number_option(
-      app, "--depth", o.depth,
-      "Cut every path after this many bounces (default: no cut, Russian roulette only)", 0, 1000);
-  depth->default_str("none");
+  show_default_as(
+      add_number_option(
+          app, "--depth", o.depth,
+          "Cut every path after this many bounces (default: no cut, Russian roulette only)", 0,
+          1000),
+      "none");
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of each reference image (cached under --reference-dir)",
                     2, 1 << 20);
-  app.add_option("--reference-dir", o.reference_dir,
-                 "Folder of the cached references (default: the reference folder beside --out)");
+  add_path_option(app, "--reference-dir", o.reference_dir,
+                  "Folder of the cached references (default: the reference folder beside --out)");
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
                   "each scene (a list: 64,128,256,512)", 1, 1000000);

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <system_error>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -176,6 +177,22 @@ void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>
          description)
       ->default_str(fmt::format("{}", fmt::join(values, ",")));
 }
+
+void add_choice_option(CLI::App& app, const std::string& flag,
+                       const std::vector<std::string>& choices, const std::string& fallback,
+                       const std::function<void(const std::string&)>& set,
+                       const std::string& description) {
+  app.add_option_function<std::string>(flag, set, description)
+      ->check(CLI::IsMember(choices))
+      ->default_str(fallback);
+}
+
+void add_path_option(CLI::App& app, const std::string& flag, std::filesystem::path& value,
+                     const std::string& description) {
+  app.add_option(flag, value, description);
+}
+
+void show_default_as(CLI::Option* option, const std::string& text) { option->default_str(text); }
 
 void check_image_size(const ImageOptions& options) {
   const long long pixels = static_cast<long long>(options.width) * options.height;
@@ -355,18 +372,20 @@ int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>
 }
 
 ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)
-    : CLI::App(chapter.description, chapter.name), common_(common) {
-  add_common_options(*this, common, chapter);
-  add_flag("--print-flags", print_flags_,
-           "Print every flag a run records in summary.json (defaults included) as JSON, and "
-           "exit without running");
+    : app_(std::make_unique<CLI::App>(chapter.description, chapter.name)), common_(common) {
+  add_common_options(*app_, common, chapter);
+  app_->add_flag("--print-flags", print_flags_,
+                 "Print every flag a run records in summary.json (defaults included) as JSON, "
+                 "and exit without running");
 }
 
+ChapterApp::~ChapterApp() = default;
+
 int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
-  watch_interrupts(get_name());
-  return run_chapter(*this, argc, argv, [&] {
+  watch_interrupts(app_->get_name());
+  return run_chapter(*app_, argc, argv, [&] {
     if (print_flags_) {
-      std::cout << flags_json(*this).dump() << '\n';
+      std::cout << flags_json(*app_).dump() << '\n';
       return 0;
     }
     std::optional<RunFolder> folder;

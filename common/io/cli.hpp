@@ -2,19 +2,28 @@
 /// Command-line glue shared by every chapter: the common flags, validated image and scene
 /// flags, and one entry point that turns every failure into the right exit code:
 /// 0 success (and --help), 2 bad usage (one line naming the flag), 1 input/output failure.
+///
+/// CLI11 stays behind this header: a file that includes <CLI/CLI.hpp> compiles about 7 s of
+/// CLI11's own code (its formatter, validators and config parser), so chapter programs see
+/// CLI::App and CLI::Option only as names and add their flags through the functions below.
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "io/usage_error.hpp"
 #include "render/scene.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace mcrt {
 
@@ -76,6 +85,21 @@ void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& v
 void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
                      const std::string& description, double lowest, double highest);
 
+/// A flag whose value is one of `choices` (`fallback` when not given): `set` receives it
+/// after parsing. Anything else is a usage error listing the choices.
+void add_choice_option(CLI::App& app, const std::string& flag,
+                       const std::vector<std::string>& choices, const std::string& fallback,
+                       const std::function<void(const std::string&)>& set,
+                       const std::string& description);
+
+/// A folder or file flag such as --reference-dir.
+void add_path_option(CLI::App& app, const std::string& flag, std::filesystem::path& value,
+                     const std::string& description);
+
+/// What --help shows as the default of `option`, where the value itself would mislead (a
+/// depth of 0 that means "no cut": "none").
+void show_default_as(CLI::Option* option, const std::string& text);
+
 /// The parsers behind add_list_option: throw CLI::ValidationError naming `flag`.
 std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
                                 int highest);
@@ -99,15 +123,23 @@ nlohmann::ordered_json run_flags_json(const CLI::App& app);
 int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 
 /// A chapter program's command line: CLI11's App named and described by the chapter, with
-/// --out, --seed, --threads and --quiet already added.
+/// --out, --seed, --threads and --quiet already added. It converts to the CLI::App it holds,
+/// so every add_*_option above takes it.
 ///
 ///   Options o;
 ///   ChapterApp app(k_chapter, o.common);
 ///   add_render_options(app, o.scene, o.image);
 ///   return app.run(argc, argv, [&] { run(app, o); });
-class ChapterApp : public CLI::App {
+class ChapterApp {
  public:
   ChapterApp(const Chapter& chapter, CommonOptions& common);
+  ~ChapterApp();
+  ChapterApp(const ChapterApp&) = delete;
+  ChapterApp& operator=(const ChapterApp&) = delete;
+
+  operator CLI::App&() { return *app_; }
+  operator const CLI::App&() const { return *app_; }
+
   /// run_chapter on this app, with exit code 0 when `body` returns. Before any thread
   /// starts, SIGINT, SIGTERM and the other handled signals are set to end the run cleanly, and
   /// SIGPIPE to fail a write rather than end the run (io/interrupt.hpp). An empty value
@@ -121,6 +153,7 @@ class ChapterApp : public CLI::App {
   int run(int argc, char** argv, const std::function<void()>& body);
 
  private:
+  std::unique_ptr<CLI::App> app_;
   CommonOptions& common_;
   bool print_flags_ = false;
 };

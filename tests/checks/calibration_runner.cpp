@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "core/rng.hpp"
