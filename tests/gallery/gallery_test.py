@@ -13,7 +13,8 @@ DIR/out/, then checks:
     (docs/NN_name.html, not the raw .md);
   - render-docs refuses an OUT/docs/ it did not write (exit 2, one line, the folder untouched);
     render-docs and make-gallery refuse a bad flag and an empty --out (exit 2, one line naming
-    it, nothing written);
+    it, nothing written); stopped by SIGTERM (as scripts/run-chapters stops it when its
+    build fails) it exits 143 and leaves nothing behind;
   - in Chromium, driven over its DevTools pipe (--remote-debugging-pipe, one browser for every
     page), the gallery and every rendered page after its load event: every <img> loaded
     (naturalWidth > 0), no console message, no exception and no failed load at all (the pages
@@ -35,6 +36,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import struct
 import subprocess
 import sys
@@ -426,6 +428,25 @@ def check_foreign_docs(render_docs, tmp):
           [p.name for p in out.iterdir()] == ["docs"], "render-docs touched a foreign docs/")
 
 
+def check_interrupted_docs(render_docs, tmp):
+    """render-docs stopped by SIGTERM (scripts/run-chapters stops it so when its build fails)
+    exits 143 and leaves no staging folder and no docs/."""
+    out = tmp / "interrupted"
+    out.mkdir()
+    process = subprocess.Popen([sys.executable, render_docs, "--out", str(out)],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60  # the staging folder comes before the first pandoc
+    while not any(out.glob(".docs.staging-*")) and time.monotonic() < deadline:
+        time.sleep(0.01)
+    check(any(out.glob(".docs.staging-*")), "render-docs made no staging folder in 60 s")
+    process.send_signal(signal.SIGTERM)
+    _, stderr = process.communicate(timeout=120)  # the pages under way finish: seconds
+    check(process.returncode == 143, f"render-docs after SIGTERM: exit {process.returncode}, "
+          f"stderr {stderr!r}")
+    check(not any(out.iterdir()),
+          f"render-docs after SIGTERM left {sorted(p.name for p in out.iterdir())}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--tmp", required=True, type=Path)
@@ -466,6 +487,7 @@ def main():
     repo = Path(args.make_gallery).resolve().parent.parent
     check_page_source(page, source, list(chapters) + [ODD_FOLDER], repo)
     check_foreign_docs(render_docs, args.tmp)
+    check_interrupted_docs(render_docs, args.tmp)
     check_odd_shapes(args.make_gallery, args.tmp)
     check_bad_flags([render_docs, args.make_gallery], args.tmp)
     pages = sorted((out / "docs").rglob("*.html"))
