@@ -345,6 +345,10 @@ def cell(label, file, column, **where):
 # Chapter 01: the default run (cornell).
 number("ch01.rays", "ch01", summary_value("ch01", "rays"))
 number("ch01.mean_radiance", "ch01", summary_value("ch01", "mean_radiance"))
+number("ch01.falloff_below_lamp", "ch01", summary_value("ch01", "falloff", "measured_below_lamp"))
+number("ch01.falloff_points", "ch01", summary_value("ch01", "falloff", "points"))
+number("ch01.falloff_deviation", "ch01",
+       summary_value("ch01", "falloff", "largest_relative_deviation"))
 
 # Chapter 02: the default run.
 number("ch02.disk_slope", "ch02", summary_value("ch02", "disk", "fitted_slope"))

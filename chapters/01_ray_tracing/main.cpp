@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "falloff.hpp"
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/memory_limit.hpp"
@@ -69,12 +70,20 @@ Color trace(const Scene& scene, const Ray& ray, RayCount& count) {
   return hit ? shade(scene, *hit, count) : Color(0.0);
 }
 
-void write_summary(const CLI::App& app, const Options& o, const RenderResult& result) {
+void write_summary(const CLI::App& app, const Options& o, const RenderResult& result,
+                   const std::optional<Falloff>& falloff) {
   Json summary = start_summary(k_chapter, o.common);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   add_render_totals(summary, totals_of(result));
   summary["mean_radiance"] = mean_radiance(result.image);
+  if (falloff)  // the inverse-square and cos^4 laws below the lamp (falloff.hpp)
+    summary["falloff"] = {{"height", falloff->height},
+                          {"predicted_below_lamp", falloff->predicted_below},
+                          {"measured_below_lamp", falloff->measured_below},
+                          {"points", falloff->points},
+                          {"largest_angle_degrees", falloff->largest_angle},
+                          {"largest_relative_deviation", falloff->largest_deviation}};
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(k_chapter, o.common);
@@ -82,13 +91,19 @@ void write_summary(const CLI::App& app, const Options& o, const RenderResult& re
   write_timings(o.common.dir, timings, app);
 }
 
-void print_summary(const Options& o, const RenderResult& result) {
+void print_summary(const Options& o, const RenderResult& result,
+                   const std::optional<Falloff>& falloff) {
   fmt::print("{}  scene {}  {}x{}  {} spp  {} threads\n", k_chapter.name, o.scene.scene,
              o.image.width, o.image.height, o.spp, o.common.threads);
   fmt::print("  rays traced      {} (camera + shadow)\n", result.rays);
   fmt::print("  time             {:.3f} s\n", result.seconds);
   fmt::print("  rays per second  {:.3g}\n", result.rays_per_second());
   fmt::print("  mean radiance    {:.4f}\n", mean_radiance(result.image));
+  if (falloff)
+    fmt::print("  below the lamp   {:.6g} (predicted (rho/pi) Le A / h^2 = {:.6g}); cos^4 law at "
+               "{} floor points to {} degrees: largest deviation {:.1e}\n",
+               falloff->measured_below, falloff->predicted_below, falloff->points,
+               falloff->largest_angle, falloff->largest_deviation);
   fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json,timings.json}}\n", o.common.out.string());
 }
 
@@ -113,8 +128,9 @@ void run(const CLI::App& app, const Options& o) {
 
   write_png(o.common.dir / "image.png", result.image);
   write_pfm(o.common.dir / "image.pfm", result.image);
-  write_summary(app, o, result);
-  if (!o.common.quiet) print_summary(o, result);
+  const std::optional<Falloff> falloff = measure_falloff(scene, shade);
+  write_summary(app, o, result, falloff);
+  if (!o.common.quiet) print_summary(o, result, falloff);
 }
 
 }  // namespace

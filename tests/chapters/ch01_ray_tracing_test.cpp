@@ -2,6 +2,8 @@
 // counts, and every kind of bad input.
 
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "chapters/run_program.hpp"
@@ -36,6 +38,27 @@ TEST(Ch01Test, RendersTheCornellBoxAndWritesItsOutputs) {
   EXPECT_GT(read_json(dir / "timings.json")["rays_per_second"].get<double>(), 0.0);
   // image.png, image.pfm, summary.json, timings.json: no temporaries left
   EXPECT_EQ(file_count(dir), 5);  // the four files and the run's manifest
+}
+
+// The floor below the cornell lamp, shaded by the chapter itself: the inverse-square law
+// against the scene's numbers written out here (white rho 0.73, Le 15 over a 130 x 105 lamp
+// whose point light hangs 1e-3 below the ceiling's lamp at y = 554, so h = 553.999), and the
+// cos^4 law at the floor points the lamp sees. 1e-6: the shadow ray starts a spawn offset off
+// the floor, about 1e-7 of h; a missing cosine or a distance not squared is off by over 1e-2.
+TEST(Ch01Test, ShadingFollowsTheInverseSquareAndCosFourthLaws) {
+  const auto dir = fresh_dir("ch01_falloff");
+  ASSERT_EQ(run_program(k_program, "--width 8 --height 6 --quiet --out " + dir.string()).exit_code,
+            0);
+  const auto falloff = read_json(dir / "summary.json")["falloff"];
+  const double h = 553.999, closed_form = 0.73 / M_PI * 15.0 * 130.0 * 105.0 / (h * h);
+  EXPECT_NEAR(falloff["height"].get<double>(), h, 1e-9 * h);
+  EXPECT_NEAR(falloff["predicted_below_lamp"].get<double>(), closed_form, 1e-12 * closed_form);
+  EXPECT_NEAR(falloff["measured_below_lamp"].get<double>(), closed_form, 1e-6 * closed_form);
+  // The floor is 555 wide and the lamp above its middle: points up to 25 degrees, in 2.5 degree
+  // steps, in four directions, less those behind the two boxes.
+  EXPECT_GE(falloff["points"].get<int>(), 15);
+  EXPECT_EQ(falloff["largest_angle_degrees"].get<double>(), 25.0);
+  EXPECT_LT(falloff["largest_relative_deviation"].get<double>(), 1e-6);
 }
 
 TEST(Ch01Test, PrintsASummaryAndHelp) {
