@@ -14,8 +14,10 @@
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/a6/a6_checks.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
+#include "known_bugs/a6_mis.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
 #include "known_bugs/estimators.hpp"
@@ -192,6 +194,60 @@ inline std::vector<MeasuredBug> known_bugs() {
   nee_exact("a5_nee_emission_twice", "A5NeeEmissionTwice", nee_emission_twice);
   nee_exact("a5_nee_without_jacobian", "A5NeeWithoutTheJacobian", nee_without_jacobian);
   nee_exact("a5_nee_shadow_ray_hits_light", "A5NeeShadowRayHitsTheLight", nee_shadow_ray_hits_light);
+  // a6.1: a wrong lobe (or the right one against a wrong pdf) through the chi-square at m = 10
+  const auto lobe = [&](const char* name, const char* test, auto producer) {
+    add(name, test, "a6_phong_lobe", [producer](std::uint64_t seed) {
+      const std::vector<double> probability =
+          bulk_cell_probabilities(lobe_pdf_of(producer, k_a6_lobe_m), sampler_hemisphere_binning());
+      return chi_square_points_test(lobe_samples_at(producer, k_a6_lobe_m, seed), probability,
+                                    sampler_hemisphere_binning())
+          .p_value;
+    });
+  };
+  lobe("a6_lobe_cosine_to_one_over_m", "A6LobeCosineToOneOverM", with_lobe(lobe_cosine_to_one_over_m));
+  lobe("a6_lobe_half_the_azimuths", "A6LobeHalfTheAzimuths", with_lobe(lobe_half_the_azimuths));
+  lobe("a6_lobe_pdf_with_the_brdfs_normalisation_chi_square", "A6LobePdfWithTheBrdfsNormalisation",
+       with_lobe_pdf(lobe_pdf_with_the_brdfs_normalisation));
+  bugs.push_back(exact_bug("a6_lobe_pdf_with_the_brdfs_normalisation", "A6LobePdfWithTheBrdfsNormalisation",
+                           "a6_lobe_pdf_integral", [] {
+                             return check_lobe_pdf_integral(with_lobe_pdf(lobe_pdf_with_the_brdfs_normalisation));
+                           }));
+  bugs.push_back(exact_bug("a6_lobe_pdf_round_the_normal", "A6LobePdfRoundTheNormal", "a6_lobe_pdf_round_mirror",
+                           [] { return check_lobe_pdf_round_mirror(with_lobe_pdf(lobe_pdf_round_the_normal)); }));
+  bugs.push_back(exact_bug("a6_lobe_sine_from_one_minus_cos_squared", "A6LobeSineFromOneMinusCosSquared",
+                           "a6_sharp_lobe_digits",
+                           [] { return check_sharp_lobe_digits(with_lobe(lobe_sine_from_one_minus_cos_squared)); }));
+  // a6.2: exact weights
+  const auto heuristic = [&](const char* name, const char* test, auto weight, A6Heuristic h) {
+    bugs.push_back(exact_bug(name, test, "a6_heuristic", [weight, h] { return check_heuristic(with_weight(weight), h); }));
+  };
+  heuristic("a6_power_heuristic_not_squared", "A6PowerHeuristicNotSquared", power_heuristic_not_squared,
+            A6Heuristic::power);
+  heuristic("a6_heuristic_without_the_guard", "A6HeuristicWithoutTheGuard", heuristic_without_the_guard,
+            A6Heuristic::balance);
+  heuristic("a6_weights_that_do_not_sum_to_one", "A6WeightsThatDoNotSumToOne", weights_that_do_not_sum_to_one,
+            A6Heuristic::power);
+  // a6.3: a wrong MIS through the region test of the heuristic its diagnosis test uses
+  const auto mis = [&](const char* name, const char* test, auto producer, A6Strategy h, bool expected) {
+    add(name, test, h == A6Strategy::mis_balance ? "a6_balance_regions" : "a6_power_regions",
+        [producer, h](std::uint64_t seed) {
+          std::size_t worst = 0;
+          double z = 0.0;
+          return mis_regions_p_value(mis_region_stats_at(producer, h, seed), worst, z);
+        },
+        true, expected);
+  };
+  mis("a6_bsdf_hit_weighted_as_if_by_nee", "A6BsdfHitWeightedAsIfByNee", with_mis(mis_bsdf_hit_weighted_as_if_by_nee()),
+      A6Strategy::mis_balance, true);
+  mis("a6_bsdf_hit_not_weighted", "A6BsdfHitNotWeighted", with_mis(mis_bsdf_hit_not_weighted()),
+      A6Strategy::mis_power, true);
+  mis("a6_light_sample_not_weighted", "A6LightSampleNotWeighted", with_mis(mis_light_sample_not_weighted()),
+      A6Strategy::mis_power, true);
+  mis("a6_light_pdf_per_unit_area", "A6LightPdfPerUnitArea", with_mis(&mis_light_pdf_per_unit_area),
+      A6Strategy::mis_balance, true);
+  // unbiased: the region test must pass it (its efficiency test catches it: a threshold row)
+  mis("a6_light_sampling_passed_off_as_mis_regions", "A6LightSamplingPassedOffAsMis", light_sampling_as_mis(),
+      A6Strategy::mis_balance, false);
   return bugs;
 }
 

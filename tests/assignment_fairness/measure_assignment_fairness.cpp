@@ -13,12 +13,22 @@
 // seeds: the largest p-value, and how many seeds reject (detection). Bugs caught by an exact
 // check (ray counts, exact furnace paths, a pdf's integral) are run once.
 //
+// Course variants (make-assignment --variant) draw the statistical hidden tests' parameters from
+// key.py's lists: with --variants (the file `key.py --hidden-grid` writes) each of those tests is
+// measured again at every point of its grid (--variant-seeds seeds a point), so the figures
+// hold for every variant, not only the default one.
+//
+// a6's efficiency test is a threshold, not a p-value: MIS's variance at equal rays at most 4x
+// the better single strategy's in every region. Its largest ratio is measured per seed on the
+// solution (a margin) and on light sampling passed off as MIS (a detection).
+//
 // Writes fairness.csv (one row per check or bug), fairness.json (the same rows by name, and a
 // summary that docs/assignments/README.md quotes) and p_values.csv (every p-value). Seeds are keyed by row and index, never
 // by thread: the files are the same whatever --threads.
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -30,6 +40,7 @@
 #include "assignment_fairness/measured_check.hpp"
 #include "assignment_fairness/p_value_summary.hpp"
 #include "assignment_fairness/solution_checks.hpp"
+#include "assignments/hidden/fairness_p_values.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "io/cli.hpp"
@@ -53,7 +64,9 @@ struct Options {
   int seeds = 1000;        // per check: a rate of 0.05 is then measured to +-0.007 (one sd)
   int region_seeds = 400;  // per region check (a reference render a seed): 0.05 to +-0.011
   int bug_seeds = 20;      // per known bug: all 20 rejecting puts its single-seed rate above 0.83
-  bool quick = false;      // 20, 3 and 3 seeds: seconds, for the smoke test
+  int variant_seeds = 20;  // per point of a hidden test's variant grid (26 and 176 points)
+  std::filesystem::path variants;  // key.py --hidden-grid's file; empty: no variant rows
+  bool quick = false;      // 20, 3, 3 and 1 seeds: seconds, for the smoke test
 };
 
 // The first seed: far above the grading seeds (1009, 2029, 3037) and the hidden tests' own.
@@ -73,12 +86,38 @@ struct Row {
   std::vector<double> p_values;  // one per seed; an exact check's: 0 if it fails, 1 if not
 };
 
-std::vector<Row> rows_of(const Options& o) {
+/// The variant grid of key.py --hidden-grid: {"a4": {"albedo": [...]}, "a5": {"roulette_q":
+/// [...], "roulette_albedo": [...]}}. A missing or malformed file is a usage error.
+HiddenGrid read_hidden_grid(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError(fmt::format("--variants {}: cannot be read", path.string()));
+  const Json j = Json::parse(in, nullptr, false);
+  const auto list = [&](const char* a, const char* name) {
+    if (!j.is_object() || !j.contains(a) || !j[a].is_object() || !j[a].contains(name) || !j[a][name].is_array() ||
+        j[a][name].empty())
+      throw UsageError(fmt::format("--variants {}: needs a non-empty list {}.{} (the file key.py --hidden-grid writes)",
+                                   path.string(), a, name));
+    std::vector<double> values;
+    for (const Json& v : j[a][name]) {
+      if (!v.is_number() || !(v.get<double>() > 0.0 && v.get<double>() < 1.0))
+        throw UsageError(fmt::format("--variants {}: {}.{} holds {}, not a number in (0, 1)", path.string(), a, name,
+                                     v.dump()));
+      values.push_back(v.get<double>());
+    }
+    return values;
+  };
+  return {list("a4", "albedo"), list("a5", "roulette_q"), list("a5", "roulette_albedo")};
+}
+
+std::vector<Row> rows_of(const Options& o, const HiddenGrid& grid) {
   std::vector<Row> rows;
-  for (MeasuredCheck& c : solution_checks()) {
-    const int n = c.region ? o.region_seeds : o.seeds;
-    rows.push_back({false, c.name, c.test, c.name, c.alpha, c.majority, true, static_cast<std::size_t>(n), c.region,
-                    std::move(c.p_value), {}, {}});
+  std::vector<MeasuredCheck> checks = solution_checks();
+  for (MeasuredCheck& c : hidden_variant_checks(subject(), grid)) checks.push_back(std::move(c));
+  for (MeasuredCheck& c : checks) {
+    const std::size_t points = variant_points(c.name, grid);
+    const std::size_t n = points > 0 ? points * static_cast<std::size_t>(o.variant_seeds)
+                                     : static_cast<std::size_t>(c.region ? o.region_seeds : o.seeds);
+    rows.push_back({false, c.name, c.test, c.name, c.alpha, c.majority, true, n, c.region, std::move(c.p_value), {}, {}});
   }
   for (MeasuredBug& b : known_bugs()) {
     const std::size_t n = b.p_value ? static_cast<std::size_t>(o.bug_seeds) : 1;
@@ -88,23 +127,97 @@ std::vector<Row> rows_of(const Options& o) {
   return rows;
 }
 
+/// a6's efficiency test at one seed: the largest ratio over the regions of MIS's variance (the
+/// balance heuristic, as the test) to the better single strategy's; it fails above its limit.
+struct ThresholdRow {
+  std::string name, test;
+  bool bug = false;  // a known bug: every seed should exceed the limit
+  std::size_t seeds = 0;
+  std::function<double(std::uint64_t)> ratio;
+  std::vector<double> ratios;
+};
+
+std::vector<ThresholdRow> threshold_rows_of(const Options& o) {
+  const auto ratio_of = [](auto producer) {
+    return [producer](std::uint64_t seed) {
+      std::size_t where = 0;
+      return mis_variance_ratio(producer, A6Strategy::mis_balance, seed, where);
+    };
+  };
+  const auto n = static_cast<std::size_t>(o.region_seeds);
+  return {{"a6_efficiency", "a6.A6.Task3MisBeatsEachStrategyAtEqualRays", false, n,
+           [](std::uint64_t seed) {
+             std::size_t where = 0;
+             return mis_variance_ratio(subject(), A6Strategy::mis_balance, seed, where);
+           },
+           {}},
+          {"a6_light_sampling_passed_off_as_mis", diagnosis_test("A6LightSamplingPassedOffAsMis"), true,
+           static_cast<std::size_t>(o.bug_seeds), ratio_of(light_sampling_as_mis()), {}}};
+}
+
 /// Every (row, seed index) once, the region renders first (the longest jobs: started first,
 /// they do not leave one thread working alone at the end), in parallel over --threads.
-void measure(std::vector<Row>& rows, const Options& o) {
+void measure(std::vector<Row>& rows, std::vector<ThresholdRow>& thresholds, const Options& o) {
+  // (row, seed index); a threshold row is numbered after the p-value rows
   std::vector<std::pair<std::size_t, std::size_t>> jobs;
+  for (std::size_t t = 0; t < thresholds.size(); ++t)  // renders too: first
+    for (std::size_t i = 0; i < thresholds[t].seeds; ++i) jobs.emplace_back(rows.size() + t, i);
   for (bool region : {true, false})
     for (std::size_t r = 0; r < rows.size(); ++r)
       if (rows[r].region == region)
         for (std::size_t i = 0; i < rows[r].seeds; ++i) jobs.emplace_back(r, i);
   for (Row& row : rows) row.p_values.assign(row.seeds, 1.0);
+  for (ThresholdRow& t : thresholds) t.ratios.assign(t.seeds, 0.0);
   ProgressBar progress("fairness", jobs.size(), o.common.quiet);
   parallel_for(jobs.size(), o.common.threads, [&](std::size_t j) {
     const auto [r, i] = jobs[j];
-    Row& row = rows[r];
-    row.p_values[i] = row.p_value ? row.p_value(o.common.seed + i) : (row.fails() ? 0.0 : 1.0);
+    if (r >= rows.size()) {
+      ThresholdRow& t = thresholds[r - rows.size()];
+      t.ratios[i] = t.ratio(o.common.seed + i);
+    } else {
+      Row& row = rows[r];
+      row.p_values[i] = row.p_value ? row.p_value(o.common.seed + i) : (row.fails() ? 0.0 : 1.0);
+    }
     progress.advance();
   });
   progress.finish();
+}
+
+/// A threshold row in fairness.json: its ratios' spread and how many seeds exceed the limit (a
+/// single seed; the test fails when 2 of its 3 do).
+Json threshold_json(const ThresholdRow& t) {
+  std::vector<double> sorted = t.ratios;
+  std::sort(sorted.begin(), sorted.end());
+  const auto above = static_cast<std::size_t>(
+      std::count_if(sorted.begin(), sorted.end(), [](double r) { return !(r <= k_a6_variance_factor); }));
+  return {{"test", t.test},
+          {"known_bug", t.bug},
+          {"limit", k_a6_variance_factor},
+          {"seeds", t.seeds},
+          {"min_ratio", sorted.front()},
+          {"median_ratio", sorted[sorted.size() / 2]},
+          {"max_ratio", sorted.back()},
+          {"seeds_above_limit", above}};
+}
+
+/// A variant row's grid, point by point: how its seeds' p-values spread (each point holds
+/// every points-th seed), for the README's "at every variant".
+Json variant_json(const Row& row, std::size_t points, std::uint64_t first_seed) {
+  std::vector<std::size_t> seeds(points, 0), below5(points, 0);
+  for (std::size_t i = 0; i < row.p_values.size(); ++i) {
+    const std::size_t point = grid_point(first_seed + i, points);
+    ++seeds[point];
+    below5[point] += row.p_values[i] < 0.05;
+  }
+  double low = 1.0, high = 0.0;
+  for (std::size_t k = 0; k < points; ++k) {
+    const double f = static_cast<double>(below5[k]) / static_cast<double>(std::max<std::size_t>(seeds[k], 1));
+    low = std::min(low, f), high = std::max(high, f);
+  }
+  return {{"points", points},
+          {"seeds_per_point", row.p_values.size() / points},
+          {"fraction_below_5_percent_lowest_point", low},
+          {"fraction_below_5_percent_highest_point", high}};
 }
 
 Table fairness_table(const std::vector<Row>& rows) {
@@ -257,15 +370,24 @@ std::string p_values_csv(const std::vector<Row>& rows, std::uint64_t first_seed)
 }
 
 /// fairness.json: the flags, the grading rule, the summary, and every row by name.
-Json json_of(const CLI::App& app, const Options& o, const Table& table, const std::vector<Row>& rows) {
+Json json_of(const CLI::App& app, const Options& o, const Table& table, const std::vector<Row>& rows,
+             const std::vector<ThresholdRow>& thresholds, const HiddenGrid& grid) {
   Json j;
   j["program"] = k_program.name;
   j["first_seed"] = o.common.seed;
   j["flags"] = flags_json(app);
   // the counts run (--quick replaces the flags' values)
-  j["seeds"] = {{"check", o.seeds}, {"region_check", o.region_seeds}, {"bug", o.bug_seeds}};
+  j["seeds"] = {{"check", o.seeds}, {"region_check", o.region_seeds}, {"bug", o.bug_seeds},
+                {"variant_point", o.variant_seeds}};
   j["grading"] = {{"seeds", k_seeds}, {"alpha", k_seed_alpha}};
   j["summary"] = summary_of(rows);
+  Json variants = Json::object(), limits = Json::object();
+  for (const Row& row : rows)
+    if (const std::size_t points = variant_points(row.name, grid); points > 0)
+      variants[row.name] = variant_json(row, points, o.common.seed);
+  for (const ThresholdRow& t : thresholds) limits[t.name] = threshold_json(t);
+  j["variants"] = variants;
+  j["thresholds"] = limits;
   Json checks = Json::object(), bugs = Json::object();
   for (const Json& row : table.json()) {
     Json fields = Json::object();
@@ -279,8 +401,11 @@ Json json_of(const CLI::App& app, const Options& o, const Table& table, const st
 }
 
 void run(const CLI::App& app, Options o) {
-  if (o.quick) o.seeds = 20, o.region_seeds = 3, o.bug_seeds = 3;
-  const auto most = static_cast<std::uint64_t>(std::max({o.seeds, o.region_seeds, o.bug_seeds}));
+  if (o.quick) o.seeds = 20, o.region_seeds = 3, o.bug_seeds = 3, o.variant_seeds = 1;
+  const HiddenGrid grid = o.variants.empty() ? HiddenGrid{} : read_hidden_grid(o.variants);
+  const std::size_t largest_grid = std::max(grid.a4_albedo.size(), grid.a5_points());
+  const auto most = std::max(static_cast<std::uint64_t>(std::max({o.seeds, o.region_seeds, o.bug_seeds})),
+                             static_cast<std::uint64_t>(largest_grid) * static_cast<std::uint64_t>(o.variant_seeds));
   if (o.common.seed > UINT64_MAX - most)
     throw UsageError(fmt::format("--seed: {} + {} seeds passes 2^64", o.common.seed, most));
   for (std::uint64_t g : k_grading_seeds)
@@ -289,19 +414,21 @@ void run(const CLI::App& app, Options o) {
                                    "seeds the tests do not use (the default starts at {})",
                                    o.common.seed, o.common.seed + most - 1, g, k_first_seed));
   set_failure_reports(false);  // the bugs fail by design: their heat maps would only be noise
-  std::vector<Row> rows = rows_of(o);
-  measure(rows, o);
+  std::vector<Row> rows = rows_of(o, grid);
+  std::vector<ThresholdRow> thresholds = threshold_rows_of(o);
+  measure(rows, thresholds, o);
   const Table table = fairness_table(rows);
   write_csv(o.common.dir / "fairness.csv", table);
   write_file_atomic(o.common.dir / "p_values.csv", p_values_csv(rows, o.common.seed));
-  const Json json = json_of(app, o, table, rows);
+  const Json json = json_of(app, o, table, rows, thresholds, grid);
   write_json(o.common.dir / "fairness.json", json);
   if (!o.common.quiet) {
     std::fputs(table.console({"name", "seeds", "fraction_below_5_percent", "fraction_below_1_percent", "below_alpha",
                               "min_p", "ks_p", "rejected_seeds", "max_p"})
                    .c_str(),
                stdout);
-    std::printf("%s\n", json["summary"].dump(1).c_str());
+    std::printf("%s\n%s\n%s\n", json["summary"].dump(1).c_str(), json["variants"].dump(1).c_str(),
+                json["thresholds"].dump(1).c_str());
   }
 }
 
@@ -315,7 +442,13 @@ int main(int argc, char** argv) {
   add_number_option(app, "--region-seeds", o.region_seeds,
                     "Seeds per region check (a reference render per seed, about a second each)", 3, 100000);
   add_number_option(app, "--bug-seeds", o.bug_seeds, "Seeds per known bug", 1, 1000);
+  add_number_option(app, "--variant-seeds", o.variant_seeds,
+                    "Seeds per point of a hidden test's variant grid (with --variants)", 1, 1000);
+  add_path_option(app, "--variants", o.variants,
+                  "The hidden tests' variant grid: the file `tests/assignments/answers/key.py --hidden-grid` "
+                  "writes (default: none, the default variant only)");
   CLI::App& cli = app;  // the flag has no add_*_option of io/cli.hpp
-  cli.add_flag("--quick", o.quick, "20 seeds per check, 3 per region check and per bug (seconds)");
+  cli.add_flag("--quick", o.quick,
+               "20 seeds per check, 3 per region check and per bug, 1 per variant point (seconds)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

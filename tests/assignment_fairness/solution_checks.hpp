@@ -1,5 +1,5 @@
 #pragma once
-// Every p-value-based check of the assignments a1-a5 on the solution (LocalSubject: the
+// Every p-value-based check of the assignments a1-a6 on the solution (LocalSubject: the
 // tree's own functions, in this process), each through the per-seed function its test calls
 // at the grading seeds (tests/assignments/aN/aN_checks.hpp), so that what is measured is what
 // grades. The hidden tests that are statistical come from tests/assignments/hidden/ when the
@@ -14,6 +14,7 @@
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
+#include "assignments/a6/a6_checks.hpp"
 #include "assignments/subject/subject.hpp"
 #include "sampling/cosine_power.hpp"
 
@@ -83,6 +84,24 @@ inline std::vector<MeasuredCheck> solution_checks() {
                       }});
   checks.push_back({"a5_nee_beyond_cap", "a5.A5.Task3LightBeyondTheCapAgreesWithThePathTracer", k_seed_alpha, true,
                     false, [&s](std::uint64_t seed) { double r = 1.0; return nee_beyond_cap_p_value(s, seed, r); }});
+  // a6.1: the lobe's chi-square at m = 10, against the subject's pdf (computed once)
+  checks.push_back({"a6_phong_lobe", "a6.A6.Task1LobeFollowsItsPdf", k_seed_alpha, true, false,
+                    [&s, probability = bulk_cell_probabilities(lobe_pdf_of(s, k_a6_lobe_m), sampler_hemisphere_binning())](
+                        std::uint64_t seed) {
+                      return chi_square_points_test(lobe_samples_at(s, k_a6_lobe_m, seed), probability,
+                                                    sampler_hemisphere_binning())
+                          .p_value;
+                    }});
+  // a6.3: MIS's 16 plate x light regions against the stored reference, either heuristic
+  for (A6Strategy h : {A6Strategy::mis_balance, A6Strategy::mis_power})
+    checks.push_back({h == A6Strategy::mis_balance ? "a6_balance_regions" : "a6_power_regions",
+                      h == A6Strategy::mis_balance ? "a6.A6.Task3BalanceRegionsAgreeWithTheReference"
+                                                   : "a6.A6.Task3PowerRegionsAgreeWithTheReference",
+                      k_seed_alpha, true, true, [&s, h](std::uint64_t seed) {
+                        std::size_t worst = 0;
+                        double z = 0.0;
+                        return mis_regions_p_value(mis_region_stats_at(s, h, seed), worst, z);
+                      }});
 #ifdef MCRT_FAIRNESS_HIDDEN
   for (MeasuredCheck& c : hidden_statistical_checks(s)) checks.push_back(std::move(c));
 #endif

@@ -13,6 +13,7 @@
 #include "assignments/a6/a6_produce.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
+#include "known_bugs/a6_mis.hpp"
 #include "known_bugs/assignments.hpp"
 #include "known_bugs/disk_area.hpp"
 #include "known_bugs/estimators.hpp"
@@ -201,64 +202,7 @@ TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
 
 
 // ---------------------------------------------------------------- a6
-// The known-wrong variants of a6 live here, not in known_bugs/: each is an a6 solution but for
-// one line, and this file never enters a kit.
-
-/// The student's a6 functions, any of them replaced.
-inline Vec3 student_lobe(Vec2 u, double m) { return sample_phong_lobe_local(u, m); }
-inline double student_lobe_pdf(const Vec3& w, const Vec3& r, double m) { return phong_lobe_pdf(w, r, m); }
-inline double student_weight(A6Heuristic h, double p_s, double p_o) {
-  return h == A6Heuristic::power ? power_heuristic(p_s, p_o) : balance_heuristic(p_s, p_o);
-}
-inline double student_mis(const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng,
-                          RayCount& count) {
-  return estimate_mis(scene, hit, wo, h, rng, count);
-}
-
-template <class Lobe = decltype(&student_lobe), class Pdf = decltype(&student_lobe_pdf),
-          class Weight = decltype(&student_weight), class Mis = decltype(&student_mis)>
-struct A6Variant {
-  Lobe lobe = &student_lobe;
-  Pdf pdf = &student_lobe_pdf;
-  Weight weight = &student_weight;
-  Mis mis = &student_mis;
-  std::vector<Vec3> a6_lobe_samples(double m, const std::vector<Vec2>& u) const {
-    std::vector<Vec3> out;
-    for (const Vec2& x : u) out.push_back(lobe(x, m));
-    return out;
-  }
-  std::vector<double> a6_lobe_pdf(double m, Vec3 r, const std::vector<Vec3>& points) const {
-    std::vector<double> out;
-    for (const Vec3& w : points) out.push_back(pdf(w, r, m));
-    return out;
-  }
-  std::vector<double> a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs) const {
-    std::vector<double> out;
-    for (const Vec2& p : pairs) out.push_back(weight(h, p.x, p.y));
-    return out;
-  }
-  std::vector<double> a6_regions(A6Strategy s, int width, int height, int spp, std::uint64_t seed) const {
-    return a6_region_samples(mis, s, width, height, spp, seed);
-  }
-};
-template <class L>
-A6Variant<L> with_lobe(L l) { return {l}; }
-template <class P>
-A6Variant<decltype(&student_lobe), P> with_lobe_pdf(P p) { return {&student_lobe, p}; }
-template <class W>
-A6Variant<decltype(&student_lobe), decltype(&student_lobe_pdf), W> with_weight(W w) {
-  return {&student_lobe, &student_lobe_pdf, w};
-}
-template <class M>
-A6Variant<decltype(&student_lobe), decltype(&student_lobe_pdf), decltype(&student_weight), M> with_mis(M m) {
-  return {&student_lobe, &student_lobe_pdf, &student_weight, m};
-}
-
-/// The lobe's direction from cos(alpha) = c and phi = 2 pi u1 (sin from (1 - c)(1 + c)).
-inline Vec3 lobe_direction(double c, double phi) {
-  const double s = std::sqrt((1.0 - c) * (1.0 + c));
-  return {s * std::cos(phi), s * std::sin(phi), c};
-}
+// The known-wrong variants are in known_bugs/a6_mis.hpp.
 
 TEST_F(Diagnoses, A6SolutionPasses) {
   const A6Variant<> solution;
@@ -269,123 +213,70 @@ TEST_F(Diagnoses, A6SolutionPasses) {
 }
 
 TEST_F(Diagnoses, A6LobeCosineToOneOverM) {
-  expect_diagnosis(check_lobe_sampler(with_lobe([](Vec2 u, double m) {
-                     return lobe_direction(std::pow(u.x, 1.0 / m), k_two_pi * u.y);
-                   })),
-                   "the mean cos(alpha) is");
+  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_cosine_to_one_over_m)), "the mean cos(alpha) is");
 }
 
 TEST_F(Diagnoses, A6LobeHalfTheAzimuths) {
-  expect_diagnosis(check_lobe_sampler(with_lobe([](Vec2 u, double m) {
-                     return lobe_direction(std::pow(u.x, 1.0 / (m + 1.0)), k_pi * u.y);
-                   })),
-                   "almost no direction has y < 0");
+  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_half_the_azimuths)), "almost no direction has y < 0");
 }
 
 TEST_F(Diagnoses, A6LobeSineFromOneMinusCosSquared) {
-  const auto cancelling = [](Vec2 u, double m) {
-    const double c = std::pow(u.x, 1.0 / (m + 1.0)), s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    return Vec3(s * std::cos(k_two_pi * u.y), s * std::sin(k_two_pi * u.y), c);
-  };
+  const auto cancelling = lobe_sine_from_one_minus_cos_squared;
   EXPECT_TRUE(check_lobe_sampler(with_lobe(cancelling)).passed) << "the distribution is right at m = 10";
   expect_diagnosis(check_sharp_lobe_digits(with_lobe(cancelling)), "sin(alpha) lost its digits");
 }
 
 TEST_F(Diagnoses, A6LobePdfWithTheBrdfsNormalisation) {
-  const auto m_plus_2 = [](const Vec3& w, const Vec3& r, double m) { return (m + 2.0) / (m + 1.0) * phong_lobe_pdf(w, r, m); };
+  const auto m_plus_2 = lobe_pdf_with_the_brdfs_normalisation;
   expect_diagnosis(check_lobe_pdf_integral(with_lobe_pdf(m_plus_2)), "your pdf is (m + 2)/(m + 1) too large");
   // the correct sampler fails against the wrong pdf, and is told to fix the pdf first
   expect_diagnosis(check_lobe_sampler(with_lobe_pdf(m_plus_2)), "your pdf integrates to 1.091, not 1");
 }
 
 TEST_F(Diagnoses, A6LobePdfRoundTheNormal) {
-  expect_diagnosis(check_lobe_pdf_round_mirror(with_lobe_pdf([](const Vec3& w, const Vec3&, double m) {
-                     return phong_lobe_pdf(w, Vec3(0.0, 0.0, 1.0), m);
-                   })),
-                   "your pdf uses w.z");
+  expect_diagnosis(check_lobe_pdf_round_mirror(with_lobe_pdf(lobe_pdf_round_the_normal)), "your pdf uses w.z");
 }
 
 TEST_F(Diagnoses, A6PowerHeuristicNotSquared) {
-  expect_diagnosis(check_heuristic(with_weight([](A6Heuristic, double p_s, double p_o) { return balance_heuristic(p_s, p_o); }),
-                                   A6Heuristic::power),
+  expect_diagnosis(check_heuristic(with_weight(power_heuristic_not_squared), A6Heuristic::power),
                    "your power heuristic gives the balance heuristic's weights");
 }
 
 TEST_F(Diagnoses, A6HeuristicWithoutTheGuard) {
-  expect_diagnosis(check_heuristic(with_weight([](A6Heuristic, double p_s, double p_o) { return p_s / (p_s + p_o); }),
-                                   A6Heuristic::balance),
+  expect_diagnosis(check_heuristic(with_weight(heuristic_without_the_guard), A6Heuristic::balance),
                    "a weight is NaN");
 }
 
 TEST_F(Diagnoses, A6WeightsThatDoNotSumToOne) {
-  // p_s^2 / (p_s + p_o): the numerator squared, the denominator not
-  expect_diagnosis(check_heuristic(with_weight([](A6Heuristic, double p_s, double p_o) {
-                     return p_s + p_o > 0.0 ? p_s * p_s / (p_s + p_o) : 0.0;
-                   }),
-                                   A6Heuristic::power),
+  expect_diagnosis(check_heuristic(with_weight(weights_that_do_not_sum_to_one), A6Heuristic::power),
                    "the weights of one direction must sum to 1");
 }
 
-/// MIS with the weights (w_l, w_b) that `weights(heuristic, light, bsdf)` gives.
-template <class Weights>
-auto mis_weighted_by(Weights weights) {
-  return [weights](const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng, RayCount& count) {
-    const GlossySample l = draw_light_sample(scene, hit, wo, rng, count);
-    const GlossySample b = draw_bsdf_sample(scene, hit, wo, rng, count);
-    const auto [w_l, w_b] = weights(h, l, b);
-    return w_l * sample_value(l.f_le_cos, l.pdf_light) + w_b * sample_value(b.f_le_cos, b.pdf_bsdf);
-  };
-}
-
 TEST_F(Diagnoses, A6BsdfHitWeightedAsIfByNee) {
-  const auto mis = mis_weighted_by([](MisHeuristic h, const GlossySample& l, const GlossySample& b) {
-    return std::pair{mis_weight(h, l.pdf_light, l.pdf_bsdf), mis_weight(h, b.pdf_light, b.pdf_bsdf)};
-  });
-  expect_diagnosis(check_mis_regions(with_mis(mis), A6Strategy::mis_balance),
+  expect_diagnosis(check_mis_regions(with_mis(mis_bsdf_hit_weighted_as_if_by_nee()), A6Strategy::mis_balance),
                    "the BSDF sample is weighted as if it were the light sample");
 }
 
 TEST_F(Diagnoses, A6BsdfHitNotWeighted) {
-  const auto mis = mis_weighted_by([](MisHeuristic h, const GlossySample& l, const GlossySample&) {
-    return std::pair{mis_weight(h, l.pdf_light, l.pdf_bsdf), 1.0};
-  });
-  expect_diagnosis(check_mis_regions(with_mis(mis), A6Strategy::mis_power),
+  expect_diagnosis(check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power),
                    "light is counted twice where light sampling wins: the BSDF sample that hits a light is added with weight 1");
 }
 
 TEST_F(Diagnoses, A6LightSampleNotWeighted) {
-  const auto mis = mis_weighted_by([](MisHeuristic h, const GlossySample&, const GlossySample& b) {
-    return std::pair{1.0, mis_weight(h, b.pdf_bsdf, b.pdf_light)};
-  });
-  expect_diagnosis(check_mis_regions(with_mis(mis), A6Strategy::mis_power),
+  expect_diagnosis(check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power),
                    "light is counted twice where BSDF sampling wins");
 }
 
 TEST_F(Diagnoses, A6LightPdfPerUnitArea) {
-  // draw_light_sample with p_l = p_A / N (sample_sphere_cone's area pdf), not per steradian
-  const auto mis = [](const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng, RayCount& count) {
-    const Phong& material = scene.materials[hit.material];
-    const std::size_t j = rng.uniform_below(static_cast<std::uint32_t>(scene.light_count()));
-    const LightPoint y = sample_sphere_cone(scene.lights[j].center, scene.lights[j].radius, hit.point, rng.uniform2());
-    const Vec3 w = glm::normalize(y.point - hit.point);
-    GlossySample l;
-    l.pdf_light = y.pdf_area / static_cast<double>(scene.light_count());
-    l.pdf_bsdf = phong_pdf(material, w, hit.normal, wo);
-    l.f_le_cos = phong_brdf(material, w, wo, hit.normal) * traced_emission(scene, spawn_ray(hit, w), count) *
-                 std::max(0.0, glm::dot(w, hit.normal));
-    const GlossySample b = draw_bsdf_sample(scene, hit, wo, rng, count);
-    return mis_weight(h, l.pdf_light, l.pdf_bsdf) * sample_value(l.f_le_cos, l.pdf_light) +
-           mis_weight(h, b.pdf_bsdf, b.pdf_light) * sample_value(b.f_le_cos, b.pdf_bsdf);
-  };
-  expect_diagnosis(check_mis_regions(with_mis(mis), A6Strategy::mis_balance),
+  expect_diagnosis(check_mis_regions(with_mis(&mis_light_pdf_per_unit_area), A6Strategy::mis_balance),
                    "some regions are off by a large factor: are both pdfs of a weight in the same measure?");
 }
 
 TEST_F(Diagnoses, A6LightSamplingPassedOffAsMis) {
   // unbiased (the region tests pass), but no better than light sampling alone
-  const auto mis = mis_weighted_by([](MisHeuristic, const GlossySample&, const GlossySample&) { return std::pair{1.0, 0.0}; });
-  EXPECT_TRUE(check_mis_regions(with_mis(mis), A6Strategy::mis_balance).passed);
-  expect_diagnosis(check_mis_efficiency(with_mis(mis), A6Strategy::mis_balance), "in region plate 3 x light 3 MIS is");
+  EXPECT_TRUE(check_mis_regions(light_sampling_as_mis(), A6Strategy::mis_balance).passed);
+  expect_diagnosis(check_mis_efficiency(light_sampling_as_mis(), A6Strategy::mis_balance),
+                   "in region plate 3 x light 3 MIS is");
 }
 
 // The a6 reference table (k_a6_reference): run by hand with --gtest_also_run_disabled_tests.

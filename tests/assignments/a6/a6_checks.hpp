@@ -87,6 +87,15 @@ inline std::string diagnose_lobe_samples(const std::vector<Vec3>& points, double
   return "";
 }
 
+/// The lobe's samples at one seed of its chi-square: u from Rng(seed, 61).
+template <class S>
+std::vector<Vec3> lobe_samples_at(S& subject, double m, std::uint64_t seed) {
+  Rng rng(seed, 61);
+  std::vector<Vec2> u(k_sampler_samples);
+  for (Vec2& x : u) x = rng.uniform2();
+  return subject.a6_lobe_samples(m, u);
+}
+
 /// a6.1: the lobe's sampler against its pdf (chi-square at the grading seeds, u from
 /// Rng(seed, 61)); on failure the heat map and a diagnosis.
 template <class S>
@@ -97,10 +106,7 @@ TaskResult check_lobe_sampler(S&& subject, double m = k_a6_lobe_m) {
   std::string diagnosis_text;
   bool reported = false;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    Rng rng(seed, 61);
-    std::vector<Vec2> u(k_sampler_samples);
-    for (Vec2& x : u) x = rng.uniform2();
-    const std::vector<Vec3> points = subject.a6_lobe_samples(m, u);
+    const std::vector<Vec3> points = lobe_samples_at(subject, m, seed);
     const ChiSquareResult r = chi_square_points_test(points, probability, binning);
     if (r.p_value < k_seed_alpha && !reported) {
       reported = true;
@@ -378,6 +384,12 @@ inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_
   return sidak_p_value(p_min, static_cast<int>(s.size()));
 }
 
+/// The 16 regions' statistics of one seed's render by MIS with `heuristic`.
+template <class S>
+std::vector<RunningStats> mis_region_stats_at(S& subject, A6Strategy heuristic, std::uint64_t seed) {
+  return a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
+}
+
 /// a6.3: MIS with `heuristic` agrees with the reference in every region, at the grading seeds.
 template <class S>
 TaskResult check_mis_regions(S&& subject, A6Strategy heuristic) {
@@ -385,8 +397,7 @@ TaskResult check_mis_regions(S&& subject, A6Strategy heuristic) {
   double worst_z = 0.0;
   std::vector<RunningStats> failed;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    const std::vector<RunningStats> s =
-        a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
+    const std::vector<RunningStats> s = mis_region_stats_at(subject, heuristic, seed);
     const double p = mis_regions_p_value(s, worst, worst_z);
     if (p < k_seed_alpha && failed.empty()) failed = s;
     return p;
@@ -442,8 +453,7 @@ inline constexpr double k_a6_variance_factor = 4.0;
 /// variance to the better single strategy's, and where it is.
 template <class S>
 double mis_variance_ratio(S&& subject, A6Strategy heuristic, std::uint64_t seed, std::size_t& where) {
-  const std::vector<RunningStats> mis =
-      a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
+  const std::vector<RunningStats> mis = mis_region_stats_at(subject, heuristic, seed);
   double worst = 0.0;
   for (std::size_t r = 0; r < mis.size(); ++r) {
     const StrategyVariances& v = k_a6_single_strategy_variance[r];

@@ -314,3 +314,18 @@ def solution_answers(a, secret=None):
     for q in questions(a, secret):
         out[q["id"]] = q["answer"] if q["kind"] != "text" else " ".join(q["rubric"])
     return json.dumps(out, indent=2) + "\n"
+
+
+def hidden_grid():
+    """Every value a variant may draw for the hidden tests' varied parameters (no seeds): what
+    measure_assignment_fairness --variants measures at every point of."""
+    return {a: {name: choices for name, (_, choices) in table.items() if choices is not None}
+            for a, table in HIDDEN.items()}
+
+
+if __name__ == "__main__":
+    import sys
+    if sys.argv[1:] != ["--hidden-grid"]:
+        print("usage: key.py --hidden-grid   (the hidden tests' variant grid as JSON)", file=sys.stderr)
+        sys.exit(2)
+    print(json.dumps(hidden_grid(), indent=1))
