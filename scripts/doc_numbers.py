@@ -20,7 +20,8 @@ maths, where the check does not look.
 
 The assignments page (docs/assignments/README.md) quotes the fairness measurement instead, as
 `fairness.<part>.<name>.<column>` (fairness.summary.<key>, fairness.checks.<check>.<column>,
-fairness.bugs.<bug>.<column>): the numbers of docs/assignments/fairness.json, the file
+fairness.bugs.<bug>.<column>, fairness.variants.<row>.<column>,
+fairness.thresholds.<row>.<column>): the numbers of docs/assignments/fairness.json, the file
 measure_assignment_fairness writes. That file holds many more numbers than the page quotes, so
 none of them has to be quoted; its own program writes it, so it is not in numbers.json's
 sources. In that page only the Fairness section must tag its measured-looking numbers (the
@@ -218,14 +219,15 @@ def flatten(value, prefix):
 
 def fairness_numbers(repo):
     """The names the assignments page may quote: fairness.summary.*, fairness.checks.*,
-    fairness.bugs.* of docs/assignments/fairness.json ({} when the tree has none: a kit)."""
+    fairness.bugs.*, fairness.variants.*, fairness.thresholds.* of
+    docs/assignments/fairness.json ({} when the tree has none: a kit)."""
     try:
         with open(os.path.join(repo, FAIRNESS_JSON), encoding="utf-8") as file:
             measured = json.load(file)
     except FileNotFoundError:
         return {}
-    return flatten({part: measured.get(part, {}) for part in ("summary", "checks", "bugs")},
-                   "fairness")
+    return flatten({part: measured.get(part, {})
+                    for part in ("summary", "checks", "bugs", "variants", "thresholds")}, "fairness")
 
 
 def read_pages(repo):
