@@ -55,6 +55,7 @@ grep -rq "// ASSIGNMENT" "$kit/common" "$kit/chapters" "$kit/tests" && fail "a m
 [ -e "$kit/docs/assignments/$a.md" ] || fail "the handout is missing"
 [ "$(ls "$kit/docs/assignments")" = "$a.md" ] || fail "another handout is in the kit: $(ls "$kit/docs/assignments")"
 [ -e "$kit/tests/known_bugs/assignments.hpp" ] && fail "a3's known-wrong recursions are in the kit"
+[ -e "$kit/tests/known_bugs/a6_mis.hpp" ] && fail "a6's known-wrong variants are in the kit"
 
 # The token-level check: no window of the answers of aN and later (names and comments aside)
 python3 "$root/scripts/leak_check.py" "$a" "$kit" || fail "the token-level leak check found a copy"
