@@ -206,6 +206,11 @@ TEST_F(Diagnoses, A4ErrorMapPngShowsTooBrightInRed) {
   ASSERT_GE(png.width, layout.left + 4 * k_error_map_cell);
   ASSERT_GT(png.height, layout.bar_top + layout.bar_height);
   EXPECT_GE(layout.top, 0);
+  // upscaled: each region a k_error_map_cell square framed in grey (sRGB code of linear 0.5)
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_EQ(png.at(layout.left + c * k_error_map_cell, layout.top + 10, 1), 188) << "left edge of column " << c;
+    EXPECT_EQ(png.at(layout.left + (c + 1) * k_error_map_cell - 1, layout.top + 10, 1), 188) << "right edge of column " << c;
+  }
   // 6 pixels into a region: inside its grey edge, clear of the number printed at its centre
   const auto pixel = [&](int column, int row) {
     const int x = layout.left + column * k_error_map_cell + 6, y = layout.top + row * k_error_map_cell + 6;
