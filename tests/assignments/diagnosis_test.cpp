@@ -3,6 +3,11 @@
 // (CTest label assignments, and the default suite: about 3 s of CPU, 7 s wall on 2 loaded cores.)
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/a2/a2_checks.hpp"
@@ -23,6 +28,7 @@
 #include "known_bugs/russian_roulette.hpp"
 #include "known_bugs/samplers.hpp"
 #include "stats/report.hpp"
+#include "support/image_decoding.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
@@ -147,6 +153,98 @@ TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
   EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
+/// Whether every camera ray of the sky render's region (column, row) sees the sky itself: 8 x 8
+/// positions per pixel, found by the scene's own closest-hit query (not by any tracer).
+bool sky_region_sees_only_sky(int column, int row) {
+  const Scene scene = make_sky_scene();
+  const Camera camera(scene.camera, 16, 16);
+  for (int y = 4 * row; y < 4 * row + 4; ++y)
+    for (int x = 4 * column; x < 4 * column + 4; ++x)
+      for (int i = 0; i < 64; ++i) {
+        const auto hit = scene.closest_hit(camera.generate_ray(x, y, Vec2((i % 8 + 0.5) / 8.0, (i / 8 + 0.5) / 8.0)));
+        if (!hit || average(scene.materials[hit->material].emission) == 0.0) return false;
+      }
+  return true;
+}
+
+TEST_F(Diagnoses, A4SolutionsErrorMapFlagsNoRegion) {
+  const RegionResult r = check_reference_regions(sky_of(estimate_path_radiance));
+  ASSERT_TRUE(r.passed) << r.message;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column)
+      EXPECT_FALSE(r.map.flagged(column, row)) << "region " << column << ", " << row << "\n" << error_map_text(r.map);
+}
+
+TEST_F(Diagnoses, A4ErrorMapFlagsWhereTheBounceIsWrong) {
+  // A pdf off by 2 doubles every bounce's weight: the regions that see a surface are too bright,
+  // the regions that see only the sky (no bounce) agree exactly.
+  const RegionResult r = check_reference_regions(sky_of(path_radiance_with_sphere_pdf));
+  EXPECT_FALSE(r.passed);
+  int sky_only = 0;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) {
+      const bool sky = sky_region_sees_only_sky(column, row);
+      sky_only += sky;
+      EXPECT_EQ(r.map.flagged(column, row), !sky) << "region " << column << ", " << row << "\n" << error_map_text(r.map);
+      if (!sky) {
+        EXPECT_GT(r.map.at(column, row), 0.0) << "too bright, so z > 0";
+      }
+    }
+  EXPECT_GT(sky_only, 0) << "the scene's top corners see only the sky";
+  const std::string text = error_map_text(r.map);
+  EXPECT_EQ(text.rfind("region error map", 0), 0u) << "scripts/grade finds the map by its first words";
+  EXPECT_NE(text.find("!"), std::string::npos);
+}
+
+TEST_F(Diagnoses, A4ErrorMapPngShowsTooBrightInRed) {
+  // What the student opens: the PNG decoded by stb_image, a region of the known-wrong tracer
+  // that is too bright (z near +80) red, a sky-only region white, the scale blue to red.
+  const RegionResult r = check_reference_regions(sky_of(path_radiance_with_sphere_pdf));
+  RegionErrorMap map = r.map;
+  map.z[static_cast<std::size_t>(3 * 4 + 3)] = -100.0;  // one region too dark, for the blue end
+  const DecodedPng png = decode_png(encode_png(error_map_image(map)));
+  const ErrorMapLayout layout = error_map_layout(map);
+  ASSERT_GE(png.width, layout.left + 4 * k_error_map_cell);
+  ASSERT_GT(png.height, layout.bar_top + layout.bar_height);
+  EXPECT_GE(layout.top, 0);
+  // upscaled: each region a k_error_map_cell square framed in grey (sRGB code of linear 0.5)
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_EQ(png.at(layout.left + c * k_error_map_cell, layout.top + 10, 1), 188) << "left edge of column " << c;
+    EXPECT_EQ(png.at(layout.left + (c + 1) * k_error_map_cell - 1, layout.top + 10, 1), 188) << "right edge of column " << c;
+  }
+  // 6 pixels into a region: inside its grey edge, clear of the number printed at its centre
+  const auto pixel = [&](int column, int row) {
+    const int x = layout.left + column * k_error_map_cell + 6, y = layout.top + row * k_error_map_cell + 6;
+    return std::array<int, 3>{png.at(x, y, 0), png.at(x, y, 1), png.at(x, y, 2)};
+  };
+  EXPECT_EQ(pixel(1, 1), (std::array<int, 3>{255, 0, 0})) << "too bright: saturated red";
+  EXPECT_EQ(pixel(0, 0), (std::array<int, 3>{255, 255, 255})) << "sky only, agrees: white";
+  EXPECT_EQ(pixel(3, 3), (std::array<int, 3>{0, 0, 255})) << "too dark: saturated blue";
+  const int y = layout.bar_top + layout.bar_height / 2, w = 4 * k_error_map_cell;
+  EXPECT_EQ(png.at(layout.left, y, 2), 255);
+  // the scale's end pixels sit half a pixel inside |z| = 8: sRGB code 13, not 0
+  EXPECT_LT(png.at(layout.left, y, 0), 20) << "the scale starts blue (too dark)";
+  EXPECT_EQ(png.at(layout.left + w - 1, y, 0), 255);
+  EXPECT_LT(png.at(layout.left + w - 1, y, 2), 20) << "and ends red (too bright)";
+  EXPECT_GT(png.at(layout.left + w / 2, y, 1), 240) << "white in the middle (z = 0)";
+}
+
+TEST_F(Diagnoses, A4ErrorMapIsWrittenBesideTheReports) {
+  const auto folder = std::filesystem::temp_directory_path() / fmt::format("mcrt-error-map-{}", ::getpid());
+  ::setenv("MCRT_TEST_REPORT_DIR", folder.c_str(), 1);
+  ::testing::internal::CaptureStdout();
+  report_error_map(check_reference_regions(sky_of(path_radiance_with_sphere_pdf)).map, "a4_regions");
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  ::unsetenv("MCRT_TEST_REPORT_DIR");
+  const auto png = folder / "a4_regions" / "error_map.png";
+  EXPECT_NE(out.find("error map image: " + png.string()), std::string::npos) << out;
+  EXPECT_NE(out.find("region error map"), std::string::npos) << out;
+  std::ifstream in(png, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_GT(decode_png(bytes).width, 4 * k_error_map_cell);
+  std::filesystem::remove_all(folder);
+}
+
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
   expect_diagnosis(check_roulette_furnace(with_roulette(roulette_without_division)), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
 }
@@ -265,6 +363,51 @@ TEST_F(Diagnoses, A6BsdfHitNotWeighted) {
 TEST_F(Diagnoses, A6LightSampleNotWeighted) {
   expect_diagnosis(check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power),
                    "light is counted twice where BSDF sampling wins");
+}
+
+TEST_F(Diagnoses, A6SolutionsErrorMapFlagsNoRegion) {
+  const A6Variant<> solution;
+  for (A6Strategy h : {A6Strategy::mis_balance, A6Strategy::mis_power}) {
+    const RegionResult r = check_mis_regions(solution, h);
+    ASSERT_TRUE(r.passed) << r.message;
+    for (int row = 0; row < 4; ++row)
+      for (int column = 0; column < 4; ++column)
+        EXPECT_FALSE(r.map.flagged(column, row)) << error_map_text(r.map);
+  }
+}
+
+/// Every flagged region of the map is too bright; the regions listed flagged, those listed not.
+void expect_flags(const RegionErrorMap& map, std::initializer_list<std::size_t> flagged,
+                  std::initializer_list<std::size_t> clear) {
+  for (std::size_t r = 0; r < map.z.size(); ++r)
+    if (map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) {
+      EXPECT_GT(map.z[r], 0.0) << "counted twice: too bright\n" << error_map_text(map);
+    }
+  for (std::size_t r : flagged) EXPECT_TRUE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) << r << "\n" << error_map_text(map);
+  for (std::size_t r : clear) EXPECT_FALSE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) << r << "\n" << error_map_text(map);
+}
+
+TEST_F(Diagnoses, A6ErrorMapFlagsWhereTheMissingWeightMatters) {
+  // The light sample added with weight 1 counts light twice where BSDF sampling would carry it
+  // (the sharp plate, the large light: region 15), not where light sampling wins (region 0),
+  // since there w_l is about 1 anyway; the BSDF hit added with weight 1 the other way round.
+  const RegionResult light = check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power);
+  EXPECT_FALSE(light.passed);
+  expect_flags(light.map, {k_a6_bsdf_region}, {k_a6_light_region});
+  const RegionResult bsdf = check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power);
+  EXPECT_FALSE(bsdf.passed);
+  expect_flags(bsdf.map, {}, {k_a6_bsdf_region});
+  // What the student opens: the PNG, decoded, shows region 15 of the first red (z about +7:
+  // past the threshold, not yet saturated), region 0 near white.
+  const DecodedPng png = decode_png(encode_png(error_map_image(light.map)));
+  const ErrorMapLayout layout = error_map_layout(light.map);
+  const auto at = [&](std::size_t r, int c) {
+    return png.at(layout.left + static_cast<int>(r % 4) * k_error_map_cell + 6,
+                  layout.top + static_cast<int>(r / 4) * k_error_map_cell + 6, c);
+  };
+  EXPECT_EQ(at(k_a6_bsdf_region, 0), 255);
+  EXPECT_LT(at(k_a6_bsdf_region, 1), 160) << "red: green and blue well below red";
+  EXPECT_GT(at(k_a6_light_region, 1), 200) << "near white: |z| < 1";
 }
 
 TEST_F(Diagnoses, A6LightPdfPerUnitArea) {

@@ -11,6 +11,7 @@
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/a4/a4_produce.hpp"
+#include "assignments/error_map.hpp"
 #include "assignments/grading.hpp"
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
@@ -92,9 +93,11 @@ TaskResult check_path_furnace(Furnace&& furnace) {
 /// every kit of a4, where the tracers of chapters 06-08 are withheld), the standard error of
 /// the difference taken from both sample variances; the 16 p-values are Sidak-combined, at the three seeds.
 /// One seed of check_reference_regions: the Sidak-combined p-value of the 16 regions (and the
-/// worst region: its index and z, when it is worse than `worst_z`).
+/// worst region: its index and z, when it is worse than `worst_z`; each region's signed z in
+/// `z`, row by row, when given).
 template <class Sky>
-double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, double& worst_z) {
+double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, double& worst_z,
+                                 std::vector<double>* z = nullptr) {
   constexpr int size = 16, region = 4, regions = size / region, k = 4, spp = 256;
   const Scene scene = make_sky_scene();
   const Camera camera(scene.camera, size, size);
@@ -110,6 +113,7 @@ double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, doub
     const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
     const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
     const double p = z_test_p_value(s.mean(), t.mean(), se);
+    if (z != nullptr) z->push_back(region_z(s.mean(), t.mean(), se));
     if (!(p >= p_min)) {
       p_min = p;
       if (std::abs(s.mean() - t.mean()) / se > worst_z) worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
@@ -118,17 +122,35 @@ double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, doub
   return sidak_p_value(p_min, regions * regions);
 }
 
+/// The error map of the sky render: 4 x 4 regions, labelled by their pixels.
+inline RegionErrorMap make_sky_error_map() {
+  std::vector<std::string> columns, rows;
+  for (int i = 0; i < 4; ++i) {
+    columns.push_back(fmt::format("x {}-{}", 4 * i, 4 * i + 3));
+    rows.push_back(fmt::format("y {}-{}", 4 * i, 4 * i + 3));
+  }
+  return make_error_map(4, 4, columns, rows);
+}
+
 template <class Sky>
-TaskResult check_reference_regions(Sky&& sky) {
+RegionResult check_reference_regions(Sky&& sky) {
   constexpr int regions = 4;
   int worst = 0;
   double worst_z = 0.0;
+  RegionErrorMap map = make_sky_error_map();
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return reference_regions_p_value(sky, seed, worst, worst_z);
+    std::vector<double> z;
+    const double p = reference_regions_p_value(sky, seed, worst, worst_z, &z);
+    add_seed(map, z);
+    return p;
   });
-  return {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
-                                  v.passed() ? "" : fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the reference",
-                                                                worst % regions, worst / regions, worst_z))};
+  RegionResult result;
+  result.map = map;
+  static_cast<TaskResult&>(result) = {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
+                                  v.passed() ? "" : fmt::format("\nthe worst region (pixels {}, {}) is {:.1f} standard errors from the reference at one seed",
+                                                                map.column_labels[static_cast<std::size_t>(worst % regions)],
+                                                                map.row_labels[static_cast<std::size_t>(worst / regions)], worst_z))};
+  return result;
 }
 
 /// The bulk producers of check_path_furnace and check_reference_regions for a tracer run in

@@ -29,6 +29,7 @@
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/a2/a2_checks.hpp"
+#include "assignments/error_map.hpp"
 #include "assignments/grading.hpp"
 #include "assignments/subject/requests.hpp"
 #include "integration/statistics.hpp"
@@ -368,13 +369,16 @@ inline std::string diagnose_mis_regions(const std::vector<RunningStats>& s) {
 }
 
 /// One seed of the region test: the Sidak-combined p-value of the 16 regions' z-tests against
-/// the reference (standard error from the region's samples and the reference's own).
-inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_t& worst, double& worst_z) {
+/// the reference (standard error from the region's samples and the reference's own); each
+/// region's signed z in `z`, in plate_regions's order, when given.
+inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_t& worst, double& worst_z,
+                                  std::vector<double>* signed_z = nullptr) {
   double p_min = 1.0;
   for (std::size_t r = 0; r < s.size(); ++r) {
     const double n = static_cast<double>(s[r].count());
     const double se = std::sqrt(s[r].variance() / n + k_a6_reference[r].standard_error * k_a6_reference[r].standard_error);
     const double p = z_test_p_value(s[r].mean(), k_a6_reference[r].mean, se);
+    if (signed_z != nullptr) signed_z->push_back(region_z(s[r].mean(), k_a6_reference[r].mean, se));
     if (!(p >= p_min)) {
       p_min = p;
       const double z = std::abs(s[r].mean() - k_a6_reference[r].mean) / se;
@@ -390,27 +394,46 @@ std::vector<RunningStats> mis_region_stats_at(S& subject, A6Strategy heuristic, 
   return a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
 }
 
+/// The error map of the plates: a row per plate (sharpest last), a column per light (largest
+/// last), as plate_regions lists them.
+inline RegionErrorMap make_plates_error_map() {
+  std::vector<std::string> columns, rows;
+  for (int i = 0; i < 4; ++i) {
+    columns.push_back(fmt::format("light r={}", k_plate_light_radii[static_cast<std::size_t>(i)]));
+    rows.push_back(fmt::format("plate m={}", k_plate_exponents[static_cast<std::size_t>(i)]));
+  }
+  return make_error_map(4, 4, columns, rows);
+}
+
 /// a6.3: MIS with `heuristic` agrees with the reference in every region, at the grading seeds.
 template <class S>
-TaskResult check_mis_regions(S&& subject, A6Strategy heuristic) {
+RegionResult check_mis_regions(S&& subject, A6Strategy heuristic) {
   std::size_t worst = 0;
   double worst_z = 0.0;
   std::vector<RunningStats> failed;
+  RegionResult result;
+  result.map = make_plates_error_map();
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
     const std::vector<RunningStats> s = mis_region_stats_at(subject, heuristic, seed);
-    const double p = mis_regions_p_value(s, worst, worst_z);
+    std::vector<double> z;
+    const double p = mis_regions_p_value(s, worst, worst_z, &z);
+    add_seed(result.map, z);
     if (p < k_seed_alpha && failed.empty()) failed = s;
     return p;
   });
   const char* name = heuristic == A6Strategy::mis_power ? "power" : "balance";
   std::string message = fmt::format("MIS ({} heuristic) on Veach's plates, {} x {}, {} spp, 16 plate x light regions: {}",
                                     name, k_a6_width, k_a6_height, k_a6_spp, v.describe());
-  if (v.passed()) return {true, message};
+  const auto done = [&](bool passed) {
+    static_cast<TaskResult&>(result) = {passed, message};
+    return result;
+  };
+  if (v.passed()) return done(true);
   const PlateRegion r = plate_regions(make_veach_plates(), k_a6_width, k_a6_height)[worst];
   message += fmt::format("\nthe worst region, plate {} (m = {}) x light {} (radius {}), is {:.1f} standard errors from the "
                          "reference\n{}", r.plate, k_plate_exponents[r.plate], r.light, k_plate_light_radii[r.light],
                          worst_z, diagnose_mis_regions(failed));
-  return {false, message};
+  return done(false);
 }
 
 /// The variance per camera sample of the two single strategies at equal rays (light or BSDF

@@ -52,6 +52,10 @@ file(READ ${MODE} mode)
 if(mode MATCHES "fail" AND WHICH STREQUAL "First")
   message(FATAL_ERROR "DIAGNOSIS: is your pdf off by a factor of 2?")
 endif()
+if(mode MATCHES "map" AND WHICH STREQUAL "Second")
+  # a region test's output, as a4's and a6's print it whether they pass or fail
+  message("other output\nregion error map: z = (your mean - reference) / standard error per region\n  y 0-3   +0.0  +30.4!\n  error map image: /tmp/fake-reports/a9/error_map.png\nlater output")
+endif()
 if(mode MATCHES "hang" AND WHICH STREQUAL "Second")
   execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 30)
 endif()
@@ -156,6 +160,22 @@ class ResultsJson(unittest.TestCase):
         self.assertEqual(run.returncode, 1)
         self.assertEqual(scores, {"a9.A9.First": 0, "a9.A9.Second": 3, "a9-hidden.A9Hidden.Secret": 4})
         self.assertIn("ended before this test finished", r["tests"][0]["output"])
+
+    def test_error_map_of_a_passing_test(self):
+        # a passing region test keeps its error map (the text: always), and the map's image is
+        # named on the console of a grading folder that stays, never in results.json (a student
+        # on Gradescope cannot open the grader's files)
+        run, r, scores = self.grade("map")
+        self.assertEqual(scores["a9.A9.Second"], 3)
+        second = next(t for t in r["tests"] if t["name"] == "a9.A9.Second")
+        self.assertIn("region error map: z =", second["output"])
+        self.assertIn("+30.4!", second["output"])
+        self.assertNotIn("other output", second["output"])
+        self.assertNotIn("later output", second["output"])
+        self.assertNotIn("/tmp/fake-reports", json.dumps(r))
+        self.assertIn("error map image: /tmp/fake-reports/a9/error_map.png", run.stdout)
+        first = next(t for t in r["tests"] if t["name"] == "a9.A9.First")
+        self.assertEqual(first["output"], "")  # a passing test without a map says nothing
 
     def test_timed_out(self):
         run, r, scores = self.grade("hang")
