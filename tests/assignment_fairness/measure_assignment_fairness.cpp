@@ -66,6 +66,7 @@ struct Options {
   int bug_seeds = 20;      // per known bug: all 20 rejecting puts its single-seed rate above 0.83
   int variant_seeds = 20;  // per point of a hidden test's variant grid (26 and 176 points)
   std::filesystem::path variants;  // key.py --hidden-grid's file; empty: no variant rows
+  std::string filter;      // only the rows whose name contains this (a longer look at one check)
   bool quick = false;      // 20, 3, 3 and 1 seeds: seconds, for the smoke test
 };
 
@@ -117,9 +118,11 @@ std::vector<Row> rows_of(const Options& o, const HiddenGrid& grid) {
     const std::size_t points = variant_points(c.name, grid);
     const std::size_t n = points > 0 ? points * static_cast<std::size_t>(o.variant_seeds)
                                      : static_cast<std::size_t>(c.region ? o.region_seeds : o.seeds);
+    if (c.name.find(o.filter) == std::string::npos) continue;
     rows.push_back({false, c.name, c.test, c.name, c.alpha, c.majority, true, n, c.region, std::move(c.p_value), {}, {}});
   }
   for (MeasuredBug& b : known_bugs()) {
+    if (b.name.find(o.filter) == std::string::npos) continue;
     const std::size_t n = b.p_value ? static_cast<std::size_t>(o.bug_seeds) : 1;
     rows.push_back({true, b.name, b.test, b.check, k_seed_alpha, true, b.expected, n, b.region, std::move(b.p_value),
                     std::move(b.fails), {}});
@@ -145,7 +148,7 @@ std::vector<ThresholdRow> threshold_rows_of(const Options& o) {
     };
   };
   const auto n = static_cast<std::size_t>(o.region_seeds);
-  return {{"a6_efficiency", "a6.A6.Task3MisBeatsEachStrategyAtEqualRays", false, n,
+  std::vector<ThresholdRow> rows{{"a6_efficiency", "a6.A6.Task3MisBeatsEachStrategyAtEqualRays", false, n,
            [](std::uint64_t seed) {
              std::size_t where = 0;
              return mis_variance_ratio(subject(), A6Strategy::mis_balance, seed, where);
@@ -153,6 +156,8 @@ std::vector<ThresholdRow> threshold_rows_of(const Options& o) {
            {}},
           {"a6_light_sampling_passed_off_as_mis", diagnosis_test("A6LightSamplingPassedOffAsMis"), true,
            static_cast<std::size_t>(o.bug_seeds), ratio_of(light_sampling_as_mis()), {}}};
+  std::erase_if(rows, [&](const ThresholdRow& t) { return t.name.find(o.filter) == std::string::npos; });
+  return rows;
 }
 
 /// Every (row, seed index) once, the region renders first (the longest jobs: started first,
@@ -444,11 +449,12 @@ int main(int argc, char** argv) {
   add_number_option(app, "--bug-seeds", o.bug_seeds, "Seeds per known bug", 1, 1000);
   add_number_option(app, "--variant-seeds", o.variant_seeds,
                     "Seeds per point of a hidden test's variant grid (with --variants)", 1, 1000);
+  CLI::App& flags = app;  // a text flag: no add_*_option of io/cli.hpp reads one
+  flags.add_option("--filter", o.filter, "Only the rows (checks, bugs, thresholds) whose name contains this text");
   add_path_option(app, "--variants", o.variants,
                   "The hidden tests' variant grid: the file `tests/assignments/answers/key.py --hidden-grid` "
                   "writes (default: none, the default variant only)");
-  CLI::App& cli = app;  // the flag has no add_*_option of io/cli.hpp
-  cli.add_flag("--quick", o.quick,
+  flags.add_flag("--quick", o.quick,
                "20 seeds per check, 3 per region check and per bug, 1 per variant point (seconds)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -10,14 +10,10 @@
 //   a6.3 the MIS estimator of Veach's plates, per plate x light region, against a reference
 //        rendered once by the instructor's solution, and its variance at equal rays against
 //        the single strategies (light sampling alone, BSDF sampling alone).
-// Measured on the solution (single-seed verdicts, seeds 100000 and up, throwaway programs):
-// the lobe's chi-square at m = 10 below 0.05 in 3.3%, below 0.01 in 0.7%, below 5e-4 in 0 of
-// 300 seeds (m = 3: 4.0%, 0.7%, 1 of 300); the region test (both heuristics, 300 runs) 4.0%,
-// 0.7%, 0; the efficiency ratio at most 2.69 (limit 4) over 150 seeds. Known bugs: the lobe
-// with u^(1/m) gives p < 1e-124 at each of 30 seeds; the biased MIS variants of
-// diagnosis_test.cpp (and balance for the light sample with power for the BSDF's) p < 1e-16 in
-// each of 20 runs (10 seeds, both heuristics); light sampling passed off as MIS, and weights of
-// 1/2 each, fail the efficiency test at each of 10 seeds (ratios 9000 and 66000).
+// Measured by measure_assignment_fairness (docs/assignments/fairness.json; README "Fairness"):
+// the single-seed p-values of the lobe's chi-square (m = 10 and m = 3) and of both region
+// tests on the solution, every known bug of known_bugs/a6_mis.hpp through the check that
+// catches it, and the efficiency ratio on the solution and on light sampling passed off as MIS.
 
 #include <algorithm>
 #include <array>
