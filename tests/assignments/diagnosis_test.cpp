@@ -6,6 +6,7 @@
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/a2/a2_checks.hpp"
+#include "assignments/a2/warp.hpp"
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
@@ -21,7 +22,9 @@
 #include "known_bugs/path_tracers.hpp"
 #include "known_bugs/russian_roulette.hpp"
 #include "known_bugs/samplers.hpp"
+#include "io/image_file.hpp"
 #include "stats/report.hpp"
+#include "support/image_decoding.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
@@ -112,6 +115,101 @@ TEST_F(Diagnoses, A2PdfsOffByTwo) {
                    "a pdf integrates to 1: yours is 2.000x too large (is it off by a factor of 2");
   expect_diagnosis(check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(), "2 cos/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large");
+}
+
+double cone_density(const Vec3& w) { return uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max); }
+Vec3 cone_cos_u_times_max(Vec2 u) { return cone_with_cos_u_times_max(u, k_a2_cone_cos_theta_max); }
+Vec3 cone_in_angle(Vec2 u) { return cone_uniform_in_angle(u, k_a2_cone_cos_theta_max); }
+Vec3 cone_one_minus_u(Vec2 u) { return sample_uniform_cone({1.0 - u.x, u.y}, k_a2_cone_cos_theta_max); }
+
+TEST_F(Diagnoses, A2ConeWithCosUTimesMax) {
+  expect_diagnosis(check_sampler(each(cone_cos_u_times_max), each(cone_density), sampler_cone_binning(),
+                                 SamplerKind::uniform_cone, "diagnosis_cone_cos_u_times_max"),
+                   "100000 directions fell outside the cone");
+}
+
+TEST_F(Diagnoses, A2ConeUniformInAngle) {
+  expect_diagnosis(check_sampler(each(cone_in_angle), each(cone_density), sampler_cone_binning(), SamplerKind::uniform_cone,
+                                 "diagnosis_cone_in_angle"),
+                   "too many directions near the axis: is theta drawn uniform in angle");
+}
+
+TEST_F(Diagnoses, A2ConePdfWithoutTwoPi) {
+  expect_diagnosis(check_pdf_integral(each([](const Vec3& w) { return cone_pdf_without_two_pi(w.z, k_a2_cone_cos_theta_max); }),
+                                      sampler_cone_binning(), "1/(1 - cos)"),
+                   "a pdf integrates to 1: yours is 6.283x too large (is the 2 pi of the full turn in phi missing?)");
+}
+
+// 1 - u0 is as uniform as u0: the mirrored inversion is not a mistake and keeps full marks.
+TEST_F(Diagnoses, A2ConeWithOneMinusUPasses) {
+  const TaskResult r = check_sampler(each(cone_one_minus_u), each(cone_density), sampler_cone_binning(),
+                                     SamplerKind::uniform_cone, "diagnosis_cone_one_minus_u");
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+// The warp test's heat map (a2_warp), as the student sees it: the PNG decoded, each cell's
+// colour read back as observed / expected at the cell's centre pixel.
+std::vector<std::vector<double>> heat_map_ratios(const ChiSquareResult& r, const Grid& grid) {
+  constexpr int k_cell = 8;
+  const DecodedPng png = decode_png(encode_png(ratio_heat_map(r, grid, k_cell)));
+  EXPECT_EQ(png.width, grid.u_cells * k_cell);
+  EXPECT_EQ(png.height, grid.v_cells * k_cell);
+  std::vector<std::vector<double>> ratio(static_cast<std::size_t>(grid.v_cells), std::vector<double>(static_cast<std::size_t>(grid.u_cells)));
+  for (int j = 0; j < grid.v_cells; ++j)
+    for (int i = 0; i < grid.u_cells; ++i) {
+      const auto [x, y] = heat_map_pixel(grid, k_cell, i, j);
+      Color c;
+      for (int k = 0; k < 3; ++k) c[k] = srgb_decode(png.at(x, y, k) / 255.0);
+      ratio[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] = ratio_of_colour(c);
+    }
+  return ratio;
+}
+
+// How far from 1 a cell of a right sampler may stray: 5 standard deviations of its ratio
+// (1 / sqrt(E) for E expected points: Poisson), about 1e-4 chance over 231 cells, plus 0.02
+// for reading the ratio back from 8-bit sRGB (a step of 1% of the ratio near white).
+double ratio_allowance(double expected) { return 5.0 / std::sqrt(expected) + 0.02; }
+
+// Uniform directions tested as the cosine sampler: observed / expected = 1 / (2 cos(theta)),
+// 0.52 in the top row and 11 (drawn as the scale's 4) in the horizon's. The heat map must show
+// it in every cell of those rows, far beyond a right sampler's allowance; the right sampler's
+// map must stay within the allowance in every cell.
+TEST_F(Diagnoses, A2WarpHeatMapShowsWhereTheSamplerIsWrong) {
+  const Binning<Vec3> binning = sampler_hemisphere_binning();
+  const ChiSquareResult wrong_test =
+      run_warp(each(sample_uniform_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
+  const ChiSquareResult right_test =
+      run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
+  const auto wrong = heat_map_ratios(wrong_test, binning), right = heat_map_ratios(right_test, binning);
+  const auto expected = [&](int i, int j) { return right_test.cells[static_cast<std::size_t>(j * binning.u_cells + i)].expected; };
+  const int top = binning.v_cells - 1;
+  for (int i = 0; i < binning.u_cells; ++i) {
+    EXPECT_GT(wrong[0][static_cast<std::size_t>(i)], 1.0 + 3.0 * ratio_allowance(expected(i, 0)))
+        << "horizon cell " << i << ": the wrong sampler puts ~11x the expected points there";
+    EXPECT_LT(wrong[static_cast<std::size_t>(top)][static_cast<std::size_t>(i)], 1.0 - ratio_allowance(expected(i, top)))
+        << "pole cell " << i << ": the wrong sampler puts ~0.52x the expected points there";
+  }
+  for (int j = 0; j < binning.v_cells; ++j)
+    for (int i = 0; i < binning.u_cells; ++i)
+      EXPECT_NEAR(right[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)], 1.0, ratio_allowance(expected(i, j)))
+          << "the right sampler's heat map, cell (" << i << ", " << j << ")";
+}
+
+// The disk sampled with r = u: observed / expected = 1 / (2 r), above 2 in the inner ring (r^2 <
+// 1/11), where the heat map must be red; the point cloud crowds the centre.
+TEST_F(Diagnoses, A2WarpDiskWithRadiusUIsRedAtTheCentre) {
+  const Binning<Vec2> binning = sampler_disk_binning();
+  const auto w = run_warp(each(disk_with_radius_u), each(disk_density), binning, 2029, k_sampler_samples);
+  const auto ratio = heat_map_ratios(w.chi_square, binning);
+  for (const auto& row : ratio) EXPECT_GT(row[0], 2.0) << "the inner ring of r = u gets 1 / (2 r) > 2.5x its points";
+  // the cloud: the centre's pixels brighter than the rim's (the shade grows with the count)
+  const DecodedPng cloud = decode_png(encode_png(point_cloud(w.points, binning, 100, 100)));
+  double centre = 0.0, rim = 0.0;
+  for (int d = -5; d < 5; ++d) {
+    centre += cloud.at(50 + d, 50, 0);
+    rim += cloud.at(50 + d, 5, 0);  // near y = 0.9: r ~ 0.9
+  }
+  EXPECT_GT(centre, 1.5 * rim) << "the point cloud of r = u should crowd the centre";
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceLate) {

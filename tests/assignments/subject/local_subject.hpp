@@ -19,6 +19,7 @@
 #include "render/glossy_direct.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
+#include "sampling/cone.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
@@ -70,6 +71,7 @@ struct LocalSubject {
         case SamplerKind::cosine_hemisphere: out.push_back(sample_cosine_hemisphere(x)); break;
         case SamplerKind::uniform_sphere: out.push_back(sample_uniform_sphere(x)); break;
         case SamplerKind::unit_disk: { const Vec2 d = sample_uniform_disk(x); out.emplace_back(d.x, d.y, 0.0); break; }
+        case SamplerKind::uniform_cone: out.push_back(sample_uniform_cone(x, k_a2_cone_cos_theta_max)); break;
       }
     }
     return out;
@@ -85,6 +87,7 @@ struct LocalSubject {
         case SamplerKind::cosine_hemisphere: out.push_back(cosine_hemisphere_pdf(w.z)); break;
         case SamplerKind::uniform_sphere: out.push_back(uniform_sphere_pdf()); break;
         case SamplerKind::unit_disk: out.push_back(uniform_disk_pdf()); break;
+        case SamplerKind::uniform_cone: out.push_back(uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max)); break;
       }
     }
     return out;

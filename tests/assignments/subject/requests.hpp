@@ -11,8 +11,11 @@
 
 namespace mcrt::testing::assignment {
 
-/// a2's four samplers (each with its pdf).
-enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk };
+/// a2's five samplers (each with its pdf).
+enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk, uniform_cone };
+/// The cone a2.5's sampler is graded on: half-angle acos(0.75) = 41.4 degrees, wide enough that
+/// its 21 x 11 cells are not slivers, narrow enough that a hemisphere sampler fails it.
+inline constexpr double k_a2_cone_cos_theta_max = 0.75;
 
 /// Request names, as they travel in frames.
 inline constexpr const char* k_request_a2_samples = "a2_samples";

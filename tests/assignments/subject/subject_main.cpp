@@ -21,7 +21,7 @@ namespace {
 
 /// The kind of a request: its first parameter, checked against the enum's range.
 SamplerKind sampler_kind(const std::vector<double>& params) {
-  if (params.empty() || !(params[0] >= 0.0 && params[0] <= 3.0) || params[0] != static_cast<int>(params[0]))
+  if (params.empty() || !(params[0] >= 0.0 && params[0] <= static_cast<double>(SamplerKind::uniform_cone)) || params[0] != static_cast<int>(params[0]))
     throw std::invalid_argument("request without a valid sampler kind");
   return static_cast<SamplerKind>(static_cast<int>(params[0]));
 }

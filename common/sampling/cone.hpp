@@ -1,0 +1,39 @@
+#pragma once
+/// Directions uniform in a cone round +z, beside its pdf per steradian: the directions from a
+/// point that meet a sphere light (half-angle theta_max with sin(theta_max) = R / d). The
+/// light sampler of sampling/light.hpp (sample_sphere_cone) draws the same directions round
+/// the axis towards the sphere's centre.
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/cos_sin.hpp"
+#include "core/math.hpp"
+
+namespace mcrt {
+
+/// Uniform in solid angle over the cone cos(theta) >= cos_theta_max round +z. The cone's cap of
+/// directions has solid angle 2 pi (1 - cos(theta_max)), so
+///   p(w) = 1 / (2 pi (1 - cos(theta_max))),
+/// and its cdf in cos(theta), F = (1 - cos(theta)) / (1 - cos(theta_max)), inverted at u0:
+///   cos(theta) = 1 - u0 (1 - cos(theta_max)),   phi = 2 pi u1.
+/// (1 - u0 is uniform too: cos(theta) = cos(theta_max) + u0 (1 - cos(theta_max)) is as good.)
+inline Vec3 sample_uniform_cone(Vec2 u, double cos_theta_max) {
+  // ASSIGNMENT a2.5 BEGIN stub: (void)u; (void)cos_theta_max; NOT_IMPLEMENTED(sample_uniform_cone);
+  const double cos_theta = 1.0 - u.x * (1.0 - cos_theta_max);
+  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
+  return {sin_theta * circle.x, sin_theta * circle.y, cos_theta};
+  // ASSIGNMENT a2.5 END
+}
+
+/// The pdf of sample_uniform_cone per steradian at a direction with this cos(theta): constant
+/// inside the cone, 0 outside it.
+inline double uniform_cone_pdf(double cos_theta, double cos_theta_max) {
+  // ASSIGNMENT a2.5 BEGIN stub: (void)cos_theta; (void)cos_theta_max; NOT_IMPLEMENTED(uniform_cone_pdf);
+  if (cos_theta < cos_theta_max) return 0.0;
+  return 1.0 / (k_two_pi * (1.0 - cos_theta_max));
+  // ASSIGNMENT a2.5 END
+}
+
+}  // namespace mcrt
