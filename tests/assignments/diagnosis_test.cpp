@@ -222,6 +222,78 @@ TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
   EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
 }
 
+// A known-wrong ray-count prediction (a3.2) beside the solution's recursion.
+template <class Predict>
+struct PredictionProducer {
+  Predict predict;
+  std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls) const {
+    std::vector<std::uint64_t> out;
+    for (const auto& [n, k] : calls) out.push_back(predict(static_cast<std::uint64_t>(n), k));
+    return out;
+  }
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
+                              std::uint64_t stream) const {
+    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  }
+};
+template <class Predict>
+PredictionProducer<Predict> with_prediction(Predict p) {
+  return {p};
+}
+
+std::uint64_t power_wrapping(std::uint64_t n, int k) {  // N^k as a student's loop computes it
+  std::uint64_t r = 1;
+  for (int i = 0; i < k; ++i) r *= n;
+  return r;
+}
+
+TEST_F(Diagnoses, A3PredictionOneLevelTooMany) {
+  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k + 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k + 1");
+  expect_diagnosis(check_prediction_counts_your_recursion(p), "your prediction and your recursion disagree");
+}
+
+TEST_F(Diagnoses, A3PredictionOneLevelTooFew) {
+  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k - 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k - 1");
+}
+
+TEST_F(Diagnoses, A3PredictionLastLevelOnly) {
+  expect_diagnosis(check_predicted_rays(with_prediction(power_wrapping), k_a3_prediction_cases),
+                   "your prediction is N^k, the last level only");
+}
+
+TEST_F(Diagnoses, A3PredictionClosedFormAtNEqualOne) {
+  // (N^(k+1) - 1) / (N - 1) in integers, N = 1 taken care of by nothing: a division by zero,
+  // so the known-wrong variant answers 0 there, as a guard "if (n == 1) return 0" would
+  const auto closed_form = [](std::uint64_t n, int k) -> std::uint64_t {
+    return n == 1 ? 0 : (power_wrapping(n, k + 1) - 1) / (n - 1);
+  };
+  expect_diagnosis(check_predicted_rays(with_prediction(closed_form), k_a3_prediction_cases), "for N = 1 a sample traces k + 1");
+}
+
+TEST_F(Diagnoses, A3PredictionThatOverflows) {
+  const auto wrapping_sum = [](std::uint64_t n, int k) {
+    std::uint64_t total = 0;
+    for (int j = 0; j <= k; ++j) total += power_wrapping(n, j);
+    return total;
+  };
+  // exact below 2^64: the closed-form test passes, the saturation test catches the wrap-round
+  EXPECT_TRUE(check_predicted_rays(with_prediction(wrapping_sum), k_a3_prediction_cases).passed);
+  expect_diagnosis(check_prediction_saturates(with_prediction(wrapping_sum)), "past 2^64 - 1 rays your prediction must stay");
+}
+
+TEST_F(Diagnoses, A3RightPredictionWrongRecursion) {
+  const auto p = [](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k); };
+  struct Late : PredictionProducer<decltype(p)> {
+    PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
+                                std::uint64_t stream) const {
+      return a3_producer(incident_radiance_one_bounce_late).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+    }
+  };
+  expect_diagnosis(check_prediction_counts_your_recursion(Late{{p}}), "your prediction is right and your recursion is not");
+}
+
 TEST_F(Diagnoses, A3WithoutOneOverN) {
   expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_without_one_over_n)), "each level weighs N a instead of a");
 }

@@ -105,6 +105,14 @@ struct LocalSubject {
     return a3_producer(incident_radiance).recursive_furnace(albedo, n, k, samples, seed, block);
   }
 
+  /// a3.2: max_rays_per_sample(N, k) for each (N, k).
+  std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls) const {
+    std::vector<std::uint64_t> out;
+    out.reserve(calls.size());
+    for (const auto& [n, k] : calls) out.push_back(max_rays_per_sample(n, k));
+    return out;
+  }
+
   /// a4: n furnace paths of estimate_path_radiance (furnace_values).
   std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) const {
     return furnace_values(estimate_path_radiance, albedo, depth, n, seed, block);

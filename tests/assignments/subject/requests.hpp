@@ -22,6 +22,14 @@ inline constexpr const char* k_request_a2_samples = "a2_samples";
 inline constexpr const char* k_request_a2_pdf = "a2_pdf";
 inline constexpr const char* k_request_a3_single = "a3_single";
 inline constexpr const char* k_request_a3_furnace = "a3_furnace";
+inline constexpr const char* k_request_a3_predicted_rays = "a3_predicted_rays";
+
+/// A count of up to 64 bits as two doubles (its high and low 32 bits): a double holds whole
+/// numbers exactly only below 2^53, and a3's predictions reach 2^64 - 1.
+inline void append_count(std::vector<double>& out, std::uint64_t x) {
+  out.push_back(static_cast<double>(x >> 32));
+  out.push_back(static_cast<double>(x & 0xffffffffULL));
+}
 inline constexpr const char* k_request_a4_furnace = "a4_furnace";
 inline constexpr const char* k_request_a4_sky = "a4_sky";
 inline constexpr const char* k_request_a4_single = "a4_single";
