@@ -21,7 +21,8 @@ namespace mcrt {
 inline Vec3 sample_uniform_cone(Vec2 u, double cos_theta_max) {
   // ASSIGNMENT a2.5 BEGIN stub: (void)u; (void)cos_theta_max; NOT_IMPLEMENTED(sample_uniform_cone);
   const double cos_theta = 1.0 - u.x * (1.0 - cos_theta_max);
-  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  // 1 - cos^2 as (1 - cos)(1 + cos): a narrow cone (cos near 1) keeps the digits of sin
+  const double sin_theta = std::sqrt(std::max(0.0, (1.0 - cos_theta) * (1.0 + cos_theta)));
   const Vec2 circle = cos_sin_two_pi(u.y);  // (cos phi, sin phi) at phi = 2 pi u1
   return {sin_theta * circle.x, sin_theta * circle.y, cos_theta};
   // ASSIGNMENT a2.5 END
