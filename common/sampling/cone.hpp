@@ -1,8 +1,7 @@
 #pragma once
 /// Directions uniform in a cone round +z, beside its pdf per steradian: the directions from a
-/// point that meet a sphere light (half-angle theta_max with sin(theta_max) = R / d). The
-/// light sampler of sampling/light.hpp (sample_sphere_cone) draws the same directions round
-/// the axis towards the sphere's centre.
+/// point that meet a sphere light (half-angle theta_max with sin(theta_max) = R / d): a2.5, a
+/// sampler the student derives from its pdf by inversion.
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +13,13 @@ namespace mcrt {
 
 /// Uniform in solid angle over the cone cos(theta) >= cos_theta_max round +z. The cone's cap of
 /// directions has solid angle 2 pi (1 - cos(theta_max)), so
-///   p(w) = 1 / (2 pi (1 - cos(theta_max))),
-/// and its cdf in cos(theta), F = (1 - cos(theta)) / (1 - cos(theta_max)), inverted at u0:
-///   cos(theta) = 1 - u0 (1 - cos(theta_max)),   phi = 2 pi u1.
-/// (1 - u0 is uniform too: cos(theta) = cos(theta_max) + u0 (1 - cos(theta_max)) is as good.)
+///   p(w) = 1 / (2 pi (1 - cos(theta_max))).
 inline Vec3 sample_uniform_cone(Vec2 u, double cos_theta_max) {
   // ASSIGNMENT a2.5 BEGIN stub: (void)u; (void)cos_theta_max; NOT_IMPLEMENTED(sample_uniform_cone);
+  // The inversion (inside the region: a kit asks for it). d omega = d phi d cos(theta), so cos(theta)
+  // is uniform on [cos(theta_max), 1], its cdf F = (1 - cos(theta)) / (1 - cos(theta_max)),
+  // inverted at u0: cos(theta) = 1 - u0 (1 - cos(theta_max)); phi = 2 pi u1 independently.
+  // (1 - u0 is uniform too: cos(theta) = cos(theta_max) + u0 (1 - cos(theta_max)) is as good.)
   const double cos_theta = 1.0 - u.x * (1.0 - cos_theta_max);
   // 1 - cos^2 as (1 - cos)(1 + cos): a narrow cone (cos near 1) keeps the digits of sin
   const double sin_theta = std::sqrt(std::max(0.0, (1.0 - cos_theta) * (1.0 + cos_theta)));

@@ -72,8 +72,8 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
   const bool disk = kind == SamplerKind::unit_disk;
   const std::vector<double> ratio = band_ratios(r, disk ? grid.u_cells : grid.v_cells, disk);
   if (kind == SamplerKind::uniform_cone && r.outside > 0)
-    return diagnosis(fmt::format("{} directions fell outside the cone: cos(theta) must run from 1 down to cos(theta_max), "
-                                 "not from 0 (is it u0 cos(theta_max) instead of 1 - u0 (1 - cos(theta_max))?)", r.outside));
+    return diagnosis(fmt::format("{} directions fell outside the cone: cos(theta) must stay within [cos(theta_max), 1] "
+                                 "(u0 cos(theta_max), say, runs from 0 to cos(theta_max): below the cone)", r.outside));
   if (r.outside > 0)
     return diagnosis(fmt::format("{} samples fell outside the domain (not unit length, below the horizon, or outside the disk)", r.outside));
   switch (kind) {
