@@ -195,6 +195,20 @@ TEST_F(Diagnoses, A2WarpHeatMapShowsWhereTheSamplerIsWrong) {
           << "the right sampler's heat map, cell (" << i << ", " << j << ")";
 }
 
+// The handout's promise: a2_warp at a grading seed prints the p-value the graded test computes
+// at that seed (the same points, cells and expected counts).
+TEST_F(Diagnoses, A2WarpPValueIsTheGradedTestsAtItsSeed) {
+  const Binning<Vec3> binning = sampler_hemisphere_binning();
+  for (std::uint64_t seed : k_grading_seeds) {
+    const double warp = run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, seed, k_sampler_samples)
+                            .chi_square.p_value;
+    const double graded = sampler_chi_square(each(sample_cosine_hemisphere),
+                                             bulk_cell_probabilities(each(cosine_density), binning), binning, seed)
+                              .p_value;
+    EXPECT_EQ(warp, graded) << "seed " << seed;
+  }
+}
+
 // The disk sampled with r = u: observed / expected = 1 / (2 r), above 2 in the inner ring (r^2 <
 // 1/11), where the heat map must be red; the point cloud crowds the centre.
 TEST_F(Diagnoses, A2WarpDiskWithRadiusUIsRedAtTheCentre) {
