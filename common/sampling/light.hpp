@@ -63,9 +63,11 @@ inline double sphere_cap_pdf_area(double radius, double height) {
 
 /// The cone of directions from x (outside the sphere) that meet the sphere: half-angle
 /// theta_max with sin(theta_max) = R / d, d = |c - x|. Uniform in solid angle over it:
-///   p_w = 1 / (2 pi (1 - cos(theta_max))),   cos(theta) = 1 - u0 (1 - cos(theta_max)),
-///   phi = 2 pi u1 about the axis x -> c (the cap of directions has area 2 pi (1 - cos), and
-///   that area is linear in cos(theta): Archimedes again).
+///   p_w = 1 / (2 pi (1 - cos(theta_max))),
+// ASSIGNMENT a2.5 BEGIN withheld stub: /// drawn by inverting its cdf (a2.5's task: sampling/cone.hpp).
+///   cos(theta) = 1 - u0 (1 - cos(theta_max)), phi = 2 pi u1 about the axis x -> c (the cap of
+///   directions has area 2 pi (1 - cos), and that area is linear in cos(theta): Archimedes again).
+// ASSIGNMENT a2.5 END
 /// 1 - cos(theta_max) is written as (R/d)^2 / (1 + cos(theta_max)): for a large sphere close by
 /// (cos near 0.1) either form is fine, for a small far one (cos near 1) this one keeps its digits.
 inline double sphere_cone_one_minus_cos(const Vec3& centre, double radius, const Vec3& x) {
@@ -82,10 +84,12 @@ inline double sphere_cone_pdf_solid_angle(const Vec3& centre, double radius, con
 inline LightPoint sample_sphere_cone(const Vec3& centre, double radius, const Vec3& x, Vec2 u) {
   const Vec3 axis = glm::normalize(centre - x);
   const double one_minus_cos_max = sphere_cone_one_minus_cos(centre, radius, x);
+  // ASSIGNMENT a2.5 BEGIN withheld stub: (void)axis; (void)u; NOT_IMPLEMENTED(sample_sphere_cone); const Vec3 w(0.0);
   const double cos_theta = 1.0 - u.x * one_minus_cos_max;
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   const Vec2 circle = cos_sin_two_pi(u.y);
   const Vec3 w = Frame(axis).to_world({sin_theta * circle.x, sin_theta * circle.y, cos_theta});
+  // ASSIGNMENT a2.5 END
   // The near root of |x + t w - c| = R (the far one is hidden behind it); at the cone's rim
   // the two meet and round-off can make the discriminant slightly negative.
   const Vec3 xc = centre - x;

@@ -9,8 +9,10 @@
 ///   sampling/phong.hpp       a glossy lobe round the mirror direction (normalised modified
 ///                            Phong), with its diffuse mix (chapter 08)
 ///   sampling/sphere.hpp      uniform directions on the whole sphere
+///   sampling/cone.hpp        uniform directions in a cone (the solid angle of a sphere light)
 ///   sampling/frame.hpp       local directions (normal = +z) to world directions
 
+#include "sampling/cone.hpp"
 #include "sampling/cosine_power.hpp"
 #include "sampling/frame.hpp"
 #include "sampling/hemisphere.hpp"

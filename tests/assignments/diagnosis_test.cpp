@@ -11,6 +11,7 @@
 
 #include "assignments/a1/a1_checks.hpp"
 #include "assignments/a2/a2_checks.hpp"
+#include "assignments/a2/warp.hpp"
 #include "assignments/a3/a3_checks.hpp"
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
@@ -27,6 +28,7 @@
 #include "known_bugs/path_tracers.hpp"
 #include "known_bugs/russian_roulette.hpp"
 #include "known_bugs/samplers.hpp"
+#include "io/image_file.hpp"
 #include "stats/report.hpp"
 #include "support/image_decoding.hpp"
 
@@ -121,6 +123,115 @@ TEST_F(Diagnoses, A2PdfsOffByTwo) {
                    "a pdf integrates to 1: yours is 2.000x too large");
 }
 
+double cone_density(const Vec3& w) { return uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max); }
+Vec3 cone_cos_u_times_max(Vec2 u) { return cone_with_cos_u_times_max(u, k_a2_cone_cos_theta_max); }
+Vec3 cone_in_angle(Vec2 u) { return cone_uniform_in_angle(u, k_a2_cone_cos_theta_max); }
+Vec3 cone_one_minus_u(Vec2 u) { return sample_uniform_cone({1.0 - u.x, u.y}, k_a2_cone_cos_theta_max); }
+
+TEST_F(Diagnoses, A2ConeWithCosUTimesMax) {
+  expect_diagnosis(check_sampler(each(cone_cos_u_times_max), each(cone_density), sampler_cone_binning(),
+                                 SamplerKind::uniform_cone, "diagnosis_cone_cos_u_times_max"),
+                   "100000 directions fell outside the cone");
+}
+
+TEST_F(Diagnoses, A2ConeUniformInAngle) {
+  expect_diagnosis(check_sampler(each(cone_in_angle), each(cone_density), sampler_cone_binning(), SamplerKind::uniform_cone,
+                                 "diagnosis_cone_in_angle"),
+                   "too many directions near the axis: is theta drawn uniform in angle");
+}
+
+TEST_F(Diagnoses, A2ConePdfWithoutTwoPi) {
+  expect_diagnosis(check_pdf_integral(each([](const Vec3& w) { return cone_pdf_without_two_pi(w.z, k_a2_cone_cos_theta_max); }),
+                                      sampler_cone_binning(), "1/(1 - cos)"),
+                   "a pdf integrates to 1: yours is 6.283x too large (is the 2 pi of the full turn in phi missing?)");
+}
+
+// 1 - u0 is as uniform as u0: the mirrored inversion is not a mistake and keeps full marks.
+TEST_F(Diagnoses, A2ConeWithOneMinusUPasses) {
+  const TaskResult r = check_sampler(each(cone_one_minus_u), each(cone_density), sampler_cone_binning(),
+                                     SamplerKind::uniform_cone, "diagnosis_cone_one_minus_u");
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+// The warp test's heat map (a2_warp), as the student sees it: the PNG decoded, each cell's
+// colour read back as observed / expected at the cell's centre pixel.
+std::vector<std::vector<double>> heat_map_ratios(const ChiSquareResult& r, const Grid& grid) {
+  constexpr int k_cell = 8;
+  const DecodedPng png = decode_png(encode_png(ratio_heat_map(r, grid, k_cell)));
+  EXPECT_EQ(png.width, grid.u_cells * k_cell);
+  EXPECT_EQ(png.height, grid.v_cells * k_cell);
+  std::vector<std::vector<double>> ratio(static_cast<std::size_t>(grid.v_cells), std::vector<double>(static_cast<std::size_t>(grid.u_cells)));
+  for (int j = 0; j < grid.v_cells; ++j)
+    for (int i = 0; i < grid.u_cells; ++i) {
+      const auto [x, y] = heat_map_pixel(grid, k_cell, i, j);
+      Color c;
+      for (int k = 0; k < 3; ++k) c[k] = srgb_decode(png.at(x, y, k) / 255.0);
+      ratio[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] = ratio_of_colour(c);
+    }
+  return ratio;
+}
+
+// How far from 1 a cell of a right sampler may stray: 5 standard deviations of its ratio
+// (1 / sqrt(E) for E expected points: Poisson), about 1e-4 chance over 231 cells, plus 0.02
+// for reading the ratio back from 8-bit sRGB (a step of 1% of the ratio near white).
+double ratio_allowance(double expected) { return 5.0 / std::sqrt(expected) + 0.02; }
+
+// Uniform directions tested as the cosine sampler: observed / expected = 1 / (2 cos(theta)),
+// 0.52 in the top row and 11 (drawn as the scale's 4) in the horizon's. The heat map must show
+// it in every cell of those rows, far beyond a right sampler's allowance; the right sampler's
+// map must stay within the allowance in every cell.
+TEST_F(Diagnoses, A2WarpHeatMapShowsWhereTheSamplerIsWrong) {
+  const Binning<Vec3> binning = sampler_hemisphere_binning();
+  const ChiSquareResult wrong_test =
+      run_warp(each(sample_uniform_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
+  const ChiSquareResult right_test =
+      run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
+  const auto wrong = heat_map_ratios(wrong_test, binning), right = heat_map_ratios(right_test, binning);
+  const auto expected = [&](int i, int j) { return right_test.cells[static_cast<std::size_t>(j * binning.u_cells + i)].expected; };
+  const int top = binning.v_cells - 1;
+  for (int i = 0; i < binning.u_cells; ++i) {
+    EXPECT_GT(wrong[0][static_cast<std::size_t>(i)], 1.0 + 3.0 * ratio_allowance(expected(i, 0)))
+        << "horizon cell " << i << ": the wrong sampler puts ~11x the expected points there";
+    EXPECT_LT(wrong[static_cast<std::size_t>(top)][static_cast<std::size_t>(i)], 1.0 - ratio_allowance(expected(i, top)))
+        << "pole cell " << i << ": the wrong sampler puts ~0.52x the expected points there";
+  }
+  for (int j = 0; j < binning.v_cells; ++j)
+    for (int i = 0; i < binning.u_cells; ++i)
+      EXPECT_NEAR(right[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)], 1.0, ratio_allowance(expected(i, j)))
+          << "the right sampler's heat map, cell (" << i << ", " << j << ")";
+}
+
+// The handout's promise: a2_warp at a grading seed prints the p-value the graded test computes
+// at that seed (the same points, cells and expected counts).
+TEST_F(Diagnoses, A2WarpPValueIsTheGradedTestsAtItsSeed) {
+  const Binning<Vec3> binning = sampler_hemisphere_binning();
+  for (std::uint64_t seed : k_grading_seeds) {
+    const double warp = run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, seed, k_sampler_samples)
+                            .chi_square.p_value;
+    const double graded = sampler_chi_square(each(sample_cosine_hemisphere),
+                                             bulk_cell_probabilities(each(cosine_density), binning), binning, seed)
+                              .p_value;
+    EXPECT_EQ(warp, graded) << "seed " << seed;
+  }
+}
+
+// The disk sampled with r = u: observed / expected = 1 / (2 r), above 2 in the inner ring (r^2 <
+// 1/11), where the heat map must be red; the point cloud crowds the centre.
+TEST_F(Diagnoses, A2WarpDiskWithRadiusUIsRedAtTheCentre) {
+  const Binning<Vec2> binning = sampler_disk_binning();
+  const auto w = run_warp(each(disk_with_radius_u), each(disk_density), binning, 2029, k_sampler_samples);
+  const auto ratio = heat_map_ratios(w.chi_square, binning);
+  for (const auto& row : ratio) EXPECT_GT(row[0], 2.0) << "the inner ring of r = u gets 1 / (2 r) > 2.5x its points";
+  // the cloud: the centre's pixels brighter than the rim's (the shade grows with the count)
+  const DecodedPng cloud = decode_png(encode_png(point_cloud(w.points, binning, 100, 100)));
+  double centre = 0.0, rim = 0.0;
+  for (int d = -5; d < 5; ++d) {
+    centre += cloud.at(50 + d, 50, 0);
+    rim += cloud.at(50 + d, 5, 0);  // near y = 0.9: r ~ 0.9
+  }
+  EXPECT_GT(centre, 1.5 * rim) << "the point cloud of r = u should crowd the centre";
+}
+
 TEST_F(Diagnoses, A3RecursionOneBounceLate) {
   expect_diagnosis(check_ray_counts(a3_producer(incident_radiance_one_bounce_late)), "ray count is N^(k+1)");
   expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_bounce_late)), "your mean is that of depth k + 1");
@@ -129,6 +240,78 @@ TEST_F(Diagnoses, A3RecursionOneBounceLate) {
 TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
   const TaskResult r = check_ray_counts(a3_producer(incident_radiance_one_bounce_early));
   EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
+}
+
+// A known-wrong ray-count prediction (a3.2) beside the solution's recursion.
+template <class Predict>
+struct PredictionProducer {
+  Predict predict;
+  std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls) const {
+    std::vector<std::uint64_t> out;
+    for (const auto& [n, k] : calls) out.push_back(predict(static_cast<std::uint64_t>(n), k));
+    return out;
+  }
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
+                              std::uint64_t stream) const {
+    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  }
+};
+template <class Predict>
+PredictionProducer<Predict> with_prediction(Predict p) {
+  return {p};
+}
+
+std::uint64_t power_wrapping(std::uint64_t n, int k) {  // N^k as a student's loop computes it
+  std::uint64_t r = 1;
+  for (int i = 0; i < k; ++i) r *= n;
+  return r;
+}
+
+TEST_F(Diagnoses, A3PredictionOneLevelTooMany) {
+  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k + 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k + 1");
+  expect_diagnosis(check_prediction_counts_your_recursion(p), "your prediction and your recursion disagree");
+}
+
+TEST_F(Diagnoses, A3PredictionOneLevelTooFew) {
+  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k - 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k - 1");
+}
+
+TEST_F(Diagnoses, A3PredictionLastLevelOnly) {
+  expect_diagnosis(check_predicted_rays(with_prediction(power_wrapping), k_a3_prediction_cases),
+                   "your prediction is N^k, the last level only");
+}
+
+TEST_F(Diagnoses, A3PredictionClosedFormAtNEqualOne) {
+  // (N^(k+1) - 1) / (N - 1) in integers, N = 1 taken care of by nothing: a division by zero,
+  // so the known-wrong variant answers 0 there, as a guard "if (n == 1) return 0" would
+  const auto closed_form = [](std::uint64_t n, int k) -> std::uint64_t {
+    return n == 1 ? 0 : (power_wrapping(n, k + 1) - 1) / (n - 1);
+  };
+  expect_diagnosis(check_predicted_rays(with_prediction(closed_form), k_a3_prediction_cases), "for N = 1 a sample traces k + 1");
+}
+
+TEST_F(Diagnoses, A3PredictionThatOverflows) {
+  const auto wrapping_sum = [](std::uint64_t n, int k) {
+    std::uint64_t total = 0;
+    for (int j = 0; j <= k; ++j) total += power_wrapping(n, j);
+    return total;
+  };
+  // exact below 2^64: the closed-form test passes, the saturation test catches the wrap-round
+  EXPECT_TRUE(check_predicted_rays(with_prediction(wrapping_sum), k_a3_prediction_cases).passed);
+  expect_diagnosis(check_prediction_saturates(with_prediction(wrapping_sum)), "past 2^64 - 1 rays your prediction must stay");
+}
+
+TEST_F(Diagnoses, A3RightPredictionWrongRecursion) {
+  const auto p = [](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k); };
+  struct Late : PredictionProducer<decltype(p)> {
+    PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
+                                std::uint64_t stream) const {
+      return a3_producer(incident_radiance_one_bounce_late).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+    }
+  };
+  expect_diagnosis(check_prediction_counts_your_recursion(Late{{p}}), "your prediction is right and your recursion is not");
 }
 
 TEST_F(Diagnoses, A3WithoutOneOverN) {

@@ -74,6 +74,9 @@ case "$a" in
     leak common/sampling/cosine_power.hpp 'std::pow(u.x, 1.0 / (m + 1.0))' "the cosine-power sampler"
     leak common/sampling/cosine_power.hpp '(m + 1.0) * k_inv_two_pi' "the cosine-power pdf"
     leak tests 'inline Vec2 disk_with_radius_u' "known_bugs/samplers.hpp (a2.4 but for one line)"
+    # a2.5's inversion, in its own file and in the sphere light's cone sampler
+    leak common/sampling/cone.hpp 'u.x * (1.0 - cos_theta_max)' "a2.5's sampler"
+    leak common/sampling/light.hpp 'const double cos_theta = 1.0 - u.x * one_minus_cos_max;' "the sphere light's cone (a2.5)"
     # every later assignment is stubbed; an earlier one keeps its solution
     grep -q 'not implemented: a4.1 estimate_path_radiance' "$kit/common/render/path_tracer.hpp" || fail "a4.1 is not stubbed"
     if [ "$a" = a2 ] && grep -q 'not implemented: a1' "$kit/common/integration/disk_area.hpp"; then
@@ -84,6 +87,7 @@ esac
 case "$a" in
   a1|a2|a3)
     leak common/render/recursive_estimator.hpp 'incident_radiance(scene, spawn_ray(' "a3.1's recursion"
+    leak common/render/recursive_estimator.hpp 'if (total > k_max - level) return k_max;' "a3.2's prediction"
     ;;
 esac
 case "$a" in

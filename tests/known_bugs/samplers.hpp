@@ -58,4 +58,24 @@ inline double phong_pdf_mixed_half_and_half(const Phong& material, const Vec3& w
          0.5 * std::max(0.0, glm::dot(wi, n)) * k_inv_pi;
 }
 
+/// Wrong: the cone sampled with cos(theta) = u0 cos(theta_max), which runs from 0 to
+/// cos(theta_max): every direction lies outside the cone (between it and the horizon).
+inline Vec3 cone_with_cos_u_times_max(Vec2 u, double cos_theta_max) {
+  const double z = u.x * cos_theta_max, s = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = k_two_pi * u.y;
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+/// Wrong: the cone sampled uniform in angle, theta = u0 theta_max: the density per steradian
+/// goes as 1 / sin(theta), ever more directions towards the axis.
+inline Vec3 cone_uniform_in_angle(Vec2 u, double cos_theta_max) {
+  const double theta = u.x * std::acos(cos_theta_max), phi = k_two_pi * u.y;
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+/// Wrong: the cone's pdf without the 2 pi of the turn in phi, 1 / (1 - cos(theta_max)).
+inline double cone_pdf_without_two_pi(double cos_theta, double cos_theta_max) {
+  return cos_theta < cos_theta_max ? 0.0 : 1.0 / (1.0 - cos_theta_max);
+}
+
 }  // namespace mcrt::testing

@@ -25,6 +25,24 @@
 
 namespace mcrt::testing::assignment {
 
+namespace detail {
+// The cone of a2.5 (k_a2_cone_cos_theta_max) on (phi, cos theta) cells, as the hemisphere's: a
+// direction below the cone's rim, by more than round-off, is outside the domain.
+inline std::optional<Vec2> cone_parameters(const Vec3& w) {
+  const std::optional<Vec2> uv = testing::detail::hemisphere_parameters(w);
+  if (!uv || uv->y < k_a2_cone_cos_theta_max - testing::detail::k_domain_slack) return std::nullopt;
+  return uv;
+}
+}  // namespace detail
+
+/// a2.5's cone, 21 phi by 11 cos(theta) cells of equal solid angle (odd counts, as the
+/// hemisphere's: sampler_hemisphere_binning).
+inline Binning<Vec3> sampler_cone_binning() {
+  return {{"cone (phi, cos theta)", "phi (rad)", "cos(theta)", 0.0, k_two_pi, k_a2_cone_cos_theta_max, 1.0, 21, 11, 1.0},
+          &testing::detail::hemisphere_point,
+          &detail::cone_parameters};
+}
+
 /// Observed / expected per band of the radial parameter (cos theta or z: the v cells of the
 /// hemisphere and sphere binnings; r^2: the u cells of the disk binning), summed over phi.
 inline std::vector<double> band_ratios(const ChiSquareResult& r, int bands, bool radial_is_u) {
@@ -53,6 +71,9 @@ bool bands_follow(const std::vector<double>& ratio, double low, double high, Sha
 inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, const Grid& grid) {
   const bool disk = kind == SamplerKind::unit_disk;
   const std::vector<double> ratio = band_ratios(r, disk ? grid.u_cells : grid.v_cells, disk);
+  if (kind == SamplerKind::uniform_cone && r.outside > 0)
+    return diagnosis(fmt::format("{} directions fell outside the cone: cos(theta) must stay within [cos(theta_max), 1] "
+                                 "(u0 cos(theta_max), say, runs from 0 to cos(theta_max): below the cone)", r.outside));
   if (r.outside > 0)
     return diagnosis(fmt::format("{} samples fell outside the domain (not unit length, below the horizon, or outside the disk)", r.outside));
   switch (kind) {
@@ -77,6 +98,12 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
     case SamplerKind::unit_disk:
       if (ratio.front() > 1.5 && ratio.back() < 0.8)
         return diagnosis("points crowd the centre: is r = u instead of sqrt(u)?");
+      break;
+    case SamplerKind::uniform_cone:
+      // theta = u0 theta_max: the density per steradian grows as 1 / sin(theta) towards the axis
+      if (ratio.back() > 1.3 && ratio.front() < 0.95)
+        return diagnosis("too many directions near the axis: is theta drawn uniform in angle (theta = u0 theta_max)? "
+                         "Uniform in solid angle means uniform in cos(theta)");
       break;
   }
   return "";
@@ -233,8 +260,10 @@ TaskResult check_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning, con
   std::string message = fmt::format("{} integrates to {:.6f} over its domain", name, total);
   if (!ok) {
     message += '\n';  // appended alone: "\n" + a temporary trips a false -Wrestrict in g++ 12
-    message += diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total,
-                                     near(total, 2.0, 0.01) ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)" : ""));
+    const char* hint = near(total, 2.0, 0.01)                 ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)"
+                       : near(total, k_two_pi, 0.01)     ? " (is the 2 pi of the full turn in phi missing?)"
+                                                           : "";
+    message += diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total, hint));
   }
   return {ok, message};
 }

@@ -1,5 +1,6 @@
 // Assignment a3, the recursive estimator: the public tests (CTest label a3), graded on exact
-// ray counts and on the furnace's mean and variance (a3_checks.hpp).
+// ray counts and on the furnace's mean and variance (a3.1), and on the ray-count prediction
+// max_rays_per_sample (a3.2), exactly (a3_checks.hpp).
 
 #include <gtest/gtest.h>
 
@@ -28,6 +29,21 @@ TEST(A3, Task1DepthZeroReturnsTheEmission) {
 TEST(A3, Task1EscapingRayBringsNoLight) {
   const PathSample p = subject().recursive_single(0.7, 2.5, {0.0, 0.0, 1e9}, {0.0, 0.0, 1.0}, 2, 2, 5, 6);
   EXPECT_EQ(p.radiance, 0.0) << "a ray that leaves the scene brings no light";
+}
+
+TEST(A3, Task2PredictionMatchesTheClosedForm) {
+  const TaskResult r = check_predicted_rays(subject(), k_a3_prediction_cases);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A3, Task2PredictionCountsYourRecursion) {
+  const TaskResult r = check_prediction_counts_your_recursion(subject());
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A3, Task2PredictionSaturatesInsteadOfOverflowing) {
+  const TaskResult r = check_prediction_saturates(subject());
+  EXPECT_TRUE(r.passed) << r.message;
 }
 
 }  // namespace

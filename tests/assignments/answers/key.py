@@ -33,6 +33,7 @@ PARAMS = {
     "a2": {
         "r0": (0.35, [round(0.15 + 0.001 * i, 3) for i in range(701)]),  # a radius in the disk
         "theta0": (35, [round(10 + 0.1 * i, 1) for i in range(701)]),     # degrees
+        "cone_deg": (20, [round(5 + 0.1 * i, 1) for i in range(551)]),    # a cone's half-angle, degrees
     },
     "a3": {
         "branches": (6, [3, 4, 5, 6, 7, 8, 9]),
@@ -163,6 +164,7 @@ def questions_a1(p):
 
 def questions_a2(p):
     r0, theta0 = p["r0"], p["theta0"]
+    one_minus_cos = 1 - math.cos(math.radians(p["cone_deg"]))
     return [
         number("density_ratio", 1, "With r = u0, the density at radius r0 divided by the correct 1/pi",
                1 / (2 * r0), "r = u0 puts probability dr on each ring of area 2 pi r dr"),
@@ -182,6 +184,15 @@ def questions_a2(p):
                {"a": "the chi-square test at more samples", "b": "the test that the pdf integrates to 1",
                 "c": "the unit-vector test", "d": "none"},
                "b", "the chi-square test of the sampler never sees the pdf's constant"),
+        number("cone_pdf", 1, "The pdf per steradian of directions uniform in a cone of half-angle theta_max",
+               1 / (2 * math.pi * one_minus_cos), "p = 1 / (2 pi (1 - cos(theta_max))): one over the cap's solid angle"),
+        text("cone_derivation", 3,
+             "Derive sample_uniform_cone by the inversion method from p(w) = 1 / (2 pi (1 - cos(theta_max))).",
+             ["1: the marginal of cos(theta) is uniform on [cos(theta_max), 1] (d omega = d phi d cos(theta), "
+              "and phi is uniform on [0, 2 pi) independently)",
+              "1: its CDF F(cos theta) = (1 - cos(theta)) / (1 - cos(theta_max)) (or the same from the rim)",
+              "1: inverted at u0: cos(theta) = 1 - u0 (1 - cos(theta_max)); phi = 2 pi u1; 1 - u0 in place of u0 "
+              "is as good"]),
     ]
 
 

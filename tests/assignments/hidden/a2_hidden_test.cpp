@@ -19,12 +19,16 @@ TEST(A2Hidden, CornersOfTheUnitSquare) {
   const std::vector<Vec3> c = subject().samples(SamplerKind::cosine_hemisphere, u);
   const std::vector<Vec3> d = subject().samples(SamplerKind::unit_disk, u);
   const std::vector<Vec3> s = subject().samples(SamplerKind::uniform_sphere, u);
+  const std::vector<Vec3> k = subject().samples(SamplerKind::uniform_cone, u);
   for (std::size_t i = 0; i < u.size(); ++i) {
     EXPECT_GE(h[i].z, 0.0);
     EXPECT_GE(c[i].z, 0.0);
     EXPECT_TRUE(std::isfinite(h[i].x + h[i].y + h[i].z + c[i].x + c[i].y + c[i].z));
     EXPECT_LE(glm::length(d[i]), 1.0 + 1e-12);
     EXPECT_NEAR(glm::length(s[i]), 1.0, 1e-12);
+    // the cone's rim and axis: in the cone up to round-off, a unit vector
+    EXPECT_GE(k[i].z, k_a2_cone_cos_theta_max - 1e-12);
+    EXPECT_NEAR(glm::length(k[i]), 1.0, 1e-12);
   }
 }
 

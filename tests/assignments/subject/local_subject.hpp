@@ -19,6 +19,7 @@
 #include "render/glossy_direct.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
+#include "sampling/cone.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
@@ -70,6 +71,7 @@ struct LocalSubject {
         case SamplerKind::cosine_hemisphere: out.push_back(sample_cosine_hemisphere(x)); break;
         case SamplerKind::uniform_sphere: out.push_back(sample_uniform_sphere(x)); break;
         case SamplerKind::unit_disk: { const Vec2 d = sample_uniform_disk(x); out.emplace_back(d.x, d.y, 0.0); break; }
+        case SamplerKind::uniform_cone: out.push_back(sample_uniform_cone(x, k_a2_cone_cos_theta_max)); break;
       }
     }
     return out;
@@ -85,6 +87,7 @@ struct LocalSubject {
         case SamplerKind::cosine_hemisphere: out.push_back(cosine_hemisphere_pdf(w.z)); break;
         case SamplerKind::uniform_sphere: out.push_back(uniform_sphere_pdf()); break;
         case SamplerKind::unit_disk: out.push_back(uniform_disk_pdf()); break;
+        case SamplerKind::uniform_cone: out.push_back(uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max)); break;
       }
     }
     return out;
@@ -100,6 +103,14 @@ struct LocalSubject {
   std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
                                         std::uint64_t block) const {
     return a3_producer(incident_radiance).recursive_furnace(albedo, n, k, samples, seed, block);
+  }
+
+  /// a3.2: max_rays_per_sample(N, k) for each (N, k).
+  std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls) const {
+    std::vector<std::uint64_t> out;
+    out.reserve(calls.size());
+    for (const auto& [n, k] : calls) out.push_back(max_rays_per_sample(n, k));
+    return out;
   }
 
   /// a4: n furnace paths of estimate_path_radiance (furnace_values).

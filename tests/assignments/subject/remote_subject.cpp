@@ -136,6 +136,22 @@ std::vector<std::uint64_t> RemoteSubject::a1_ball_counts(const std::vector<std::
   return counts;
 }
 
+std::vector<std::uint64_t> RemoteSubject::predicted_rays(const std::vector<std::array<int, 2>>& calls) {
+  std::vector<double> params;
+  for (const auto& [n, k] : calls) params.insert(params.end(), {static_cast<double>(n), static_cast<double>(k)});
+  const std::vector<double> answer = call(k_request_a3_predicted_rays, params);
+  if (answer.size() != 2 * calls.size()) broken(k_request_a3_predicted_rays, "not one count (two halves) per call");
+  std::vector<std::uint64_t> counts;
+  for (std::size_t i = 0; i < answer.size(); i += 2) {
+    const double high = answer[i], low = answer[i + 1];
+    if (!(high >= 0.0 && high < 0x1p32 && low >= 0.0 && low < 0x1p32) || high != static_cast<double>(static_cast<std::uint32_t>(high)) ||
+        low != static_cast<double>(static_cast<std::uint32_t>(low)))
+      broken(k_request_a3_predicted_rays, "a half of a count that is not a whole number below 2^32");
+    counts.push_back((static_cast<std::uint64_t>(high) << 32) | static_cast<std::uint64_t>(low));
+  }
+  return counts;
+}
+
 EstimateAndError RemoteSubject::a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
                                                std::uint64_t seed, std::uint64_t stream) {
   const std::vector<double> answer = call(k_request_a1_monte_carlo, {static_cast<double>(f), param, s.lower, s.upper, as_number(n),

@@ -48,6 +48,7 @@ class RemoteSubject {
                               std::uint64_t seed, std::uint64_t stream);
   std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
                                         std::uint64_t block);
+  std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls);
   std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block);
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,

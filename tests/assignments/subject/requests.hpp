@@ -11,14 +11,25 @@
 
 namespace mcrt::testing::assignment {
 
-/// a2's four samplers (each with its pdf).
-enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk };
+/// a2's five samplers (each with its pdf).
+enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk, uniform_cone };
+/// The cone a2.5's sampler is graded on: half-angle acos(0.75) = 41.4 degrees, wide enough that
+/// its 21 x 11 cells are not slivers, narrow enough that a hemisphere sampler fails it.
+inline constexpr double k_a2_cone_cos_theta_max = 0.75;
 
 /// Request names, as they travel in frames.
 inline constexpr const char* k_request_a2_samples = "a2_samples";
 inline constexpr const char* k_request_a2_pdf = "a2_pdf";
 inline constexpr const char* k_request_a3_single = "a3_single";
 inline constexpr const char* k_request_a3_furnace = "a3_furnace";
+inline constexpr const char* k_request_a3_predicted_rays = "a3_predicted_rays";
+
+/// A count of up to 64 bits as two doubles (its high and low 32 bits): a double holds whole
+/// numbers exactly only below 2^53, and a3's predictions reach 2^64 - 1.
+inline void append_count(std::vector<double>& out, std::uint64_t x) {
+  out.push_back(static_cast<double>(x >> 32));
+  out.push_back(static_cast<double>(x & 0xffffffffULL));
+}
 inline constexpr const char* k_request_a4_furnace = "a4_furnace";
 inline constexpr const char* k_request_a4_sky = "a4_sky";
 inline constexpr const char* k_request_a4_single = "a4_single";

@@ -21,7 +21,7 @@ namespace {
 
 /// The kind of a request: its first parameter, checked against the enum's range.
 SamplerKind sampler_kind(const std::vector<double>& params) {
-  if (params.empty() || !(params[0] >= 0.0 && params[0] <= 3.0) || params[0] != static_cast<int>(params[0]))
+  if (params.empty() || !(params[0] >= 0.0 && params[0] <= static_cast<double>(SamplerKind::uniform_cone)) || params[0] != static_cast<int>(params[0]))
     throw std::invalid_argument("request without a valid sampler kind");
   return static_cast<SamplerKind>(static_cast<int>(params[0]));
 }
@@ -115,6 +115,14 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     need(params, 6, name);
     return s.recursive_furnace(params[0], whole(params[1], 64), whole(params[2], 16), whole(params[3], 1 << 24),
                                seed(params[4]), seed(params[5]));
+  }
+  if (name == k_request_a3_predicted_rays) {
+    if (params.size() % 2 != 0) throw std::invalid_argument("a3_predicted_rays takes pairs");
+    std::vector<std::array<int, 2>> calls;
+    for (std::size_t i = 0; i < params.size(); i += 2) calls.push_back({whole(params[i], 1 << 20), whole(params[i + 1], 1 << 10)});
+    std::vector<double> out;
+    for (std::uint64_t r : s.predicted_rays(calls)) append_count(out, r);
+    return out;
   }
   if (name == k_request_a4_furnace) {
     need(params, 5, name);
