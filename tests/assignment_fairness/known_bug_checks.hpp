@@ -46,6 +46,7 @@ inline std::string diagnosis_test(const char* name) { return std::string("assign
 inline double cosine_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
 inline double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 inline double disk_density(const Vec2&) { return uniform_disk_pdf(); }
+inline double cone_density(const Vec3& w) { return uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max); }
 
 /// A wrong sampler (or a right one with a wrong pdf) through a2's chi-square.
 template <class Point, class Sampler, class Pdf>
@@ -109,6 +110,17 @@ inline std::vector<MeasuredBug> known_bugs() {
                              sample_cosine_hemisphere, cosine_pdf_times_two, sampler_hemisphere_binning()));
   bugs.push_back(sampler_bug("a2_disk_radius_u", "A2DiskWithRadiusU", "a2_unit_disk", disk_with_radius_u,
                              disk_density, sampler_disk_binning()));
+  // a2.5: the cone of k_a2_cone_cos_theta_max
+  bugs.push_back(sampler_bug("a2_cone_cos_u_times_max", "A2ConeWithCosUTimesMax", "a2_uniform_cone",
+                             [](Vec2 u) { return cone_with_cos_u_times_max(u, k_a2_cone_cos_theta_max); }, cone_density,
+                             sampler_cone_binning()));
+  bugs.push_back(sampler_bug("a2_cone_uniform_in_angle", "A2ConeUniformInAngle", "a2_uniform_cone",
+                             [](Vec2 u) { return cone_uniform_in_angle(u, k_a2_cone_cos_theta_max); }, cone_density,
+                             sampler_cone_binning()));
+  bugs.push_back(exact_bug("a2_cone_pdf_without_two_pi", "A2ConePdfWithoutTwoPi", "a2_pdf_integral", [] {
+    return check_pdf_integral(each([](const Vec3& w) { return cone_pdf_without_two_pi(w.z, k_a2_cone_cos_theta_max); }),
+                              sampler_cone_binning(), "1/(1 - cos)");
+  }));
   bugs.push_back(exact_bug("a2_hemisphere_pdf_one_over_pi", "A2PdfsOffByTwo", "a2_pdf_integral", [] {
     return check_pdf_integral(each(hemisphere_pdf_one_over_pi), sampler_hemisphere_binning(), "1/pi");
   }));

@@ -55,6 +55,8 @@ inline std::vector<MeasuredCheck> solution_checks() {
                                  SamplerKind::uniform_sphere, sphere_binning(21, 21)));
   checks.push_back(sampler_check("a2_unit_disk", "a2.A2.Task4UnitDiskFollowsItsPdf", SamplerKind::unit_disk,
                                  sampler_disk_binning()));
+  checks.push_back(sampler_check("a2_uniform_cone", "a2.A2.Task5UniformConeFollowsItsPdf", SamplerKind::uniform_cone,
+                                 sampler_cone_binning()));
   checks.push_back({"a3_furnace", "a3.A3.Task1FurnaceMeanAndVarianceMatchTheClosedForms", k_seed_alpha, true, false,
                     [&s](std::uint64_t seed) { RunningStats r; return recursive_furnace_p_value(s, seed, r); }});
   checks.push_back({"a4_furnace", "a4.A4.Task1FurnaceMeanAndVarianceMatchTheClosedForms", k_seed_alpha, true, false,
