@@ -387,8 +387,8 @@ TEST_F(Diagnoses, A4PixelSigmaInsteadOfStandardError) {
   expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sigma))), "the z-scores vary spp times too little");
 }
 
-// The biased variance (/spp) is seen by the exact test only: at the calibration test's 128
-// paths a pixel it raises Var[z] by 128/127, 0.8%, far inside that test's noise (about 5% at
+// The biased variance (/spp) is seen by the exact test only: at the calibration test's 512
+// paths a pixel it raises Var[z] by 512/511, 0.2%, far inside that test's noise (about 5% at
 // 1024 pixels), so the calibration test passes it.
 TEST_F(Diagnoses, A4PixelBiasedVariance) {
   expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::biased_variance))), "your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide");
