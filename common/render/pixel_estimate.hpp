@@ -33,16 +33,16 @@ struct PixelEstimate {
 template <class Radiance>
 PixelEstimate estimate_pixel(const Camera& camera, int x, int y, int spp, Radiance&& radiance, Rng& rng) {
   // ASSIGNMENT a4.2 BEGIN stub: (void)camera; (void)x; (void)y; (void)spp; (void)radiance; (void)rng; NOT_IMPLEMENTED(estimate_pixel);
-  Color sum(0.0);
-  // Welford's running mean and sum of squared deviations: no cancellation when the mean is
-  // large against the spread.
+  // Welford's running mean and sum of squared deviations of the channel mean: no
+  // cancellation when the mean is large against the spread.
   double mean = 0.0, squares = 0.0;
-  for (int i = 0; i < spp; ++i) {
-    const Ray ray = camera.generate_ray(x, y, rng.uniform2());  // a jittered point of the pixel
-    const Color L = radiance(ray, rng);
+  Color sum(0.0);
+  for (int sample = 1; sample <= spp; ++sample) {
+    const Vec2 u = rng.uniform2();  // a jittered point of the pixel
+    const Color L = radiance(camera.generate_ray(x, y, u), rng);
     sum += L;
     const double value = average(L), delta = value - mean;
-    mean += delta / (i + 1);
+    mean += delta / sample;
     squares += delta * (value - mean);
   }
   const double n = spp;
