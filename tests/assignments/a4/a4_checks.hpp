@@ -306,7 +306,7 @@ TaskResult check_pixel_jitter(Rays&& rays) {
 }
 
 /// The calibrated standard error at one seed: a 32 x 32 furnace render (a = 0.5, k = 3, 512
-/// paths a pixel), the 1024 pixels' z = (mean - truth) / se, their variance z-tested
+/// paths a pixel, furnace_path_law), the 1024 pixels' z = (mean - truth) / se, their variance z-tested
 /// (variance_z_test_p_value, with the z's own kurtosis) against (spp - 1)/(spp - 3), Student's
 /// t variance: the se is itself estimated, so Var[z] is 1 only as spp grows. Measured on the
 /// furnace's skewed paths: 1.0036 at 512 (1.021 at 128, where the test rejected 3 in 1000
@@ -360,7 +360,7 @@ auto pixel_rays_of(Estimate estimate) {
 template <class Estimate>
 auto pixel_furnace_of(Estimate estimate) {
   return [estimate](double albedo, int depth, int size, int spp, std::uint64_t seed) {
-    return pixel_furnace_values(estimate, estimate_path_radiance, albedo, depth, size, spp, seed);
+    return pixel_furnace_values(estimate, albedo, depth, size, spp, seed);
   };
 }
 

@@ -140,9 +140,9 @@ struct LocalSubject {
   std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) const {
     return pixel_ray_directions(student_pixel(), x, y, spp, seed, stream);
   }
-  /// a4.2 on the furnace, each path the student's estimate_path_radiance.
+  /// a4.2 on the furnace's path law (not the student's a4.1: a4.2 is graded on its own).
   std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed) const {
-    return pixel_furnace_values(student_pixel(), estimate_path_radiance, albedo, depth, size, spp, seed);
+    return pixel_furnace_values(student_pixel(), albedo, depth, size, spp, seed);
   }
 
   /// a5: the estimator `e` names, run by A5Producer with the student's three estimators.
