@@ -336,6 +336,64 @@ TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
   EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
+/// a4.2's known-wrong pixel estimates, each estimate_pixel but for one thing: no jitter (every
+/// ray through the centre), the sum for the mean, sigma for sigma/sqrt(spp), the variance
+/// divided by spp for spp - 1.
+enum class PixelBug { no_jitter, sum, sigma, biased_variance };
+
+auto wrong_pixel(PixelBug bug) {
+  return [bug](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
+    Color sum(0.0);
+    RunningStats s;
+    for (int i = 0; i < spp; ++i) {
+      const Vec2 u = bug == PixelBug::no_jitter ? Vec2(0.5) : rng.uniform2();
+      const Color L = radiance(camera.generate_ray(x, y, u), rng);
+      sum += L;
+      s.add(average(L));
+    }
+    const double n = spp;
+    const double variance = bug == PixelBug::biased_variance ? s.variance() * (n - 1.0) / n : s.variance();
+    return PixelEstimate{bug == PixelBug::sum ? sum : sum / n, bug == PixelBug::sigma ? std::sqrt(variance) : std::sqrt(variance / n)};
+  };
+}
+
+auto right_pixel() {
+  return [](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
+    return estimate_pixel(camera, x, y, spp, radiance, rng);
+  };
+}
+
+TEST_F(Diagnoses, A4PixelSolutionPassesAllThree) {
+  const TaskResult exact = check_pixel_exact(pixel_exact_of(right_pixel()));
+  EXPECT_TRUE(exact.passed) << exact.message;
+  const TaskResult jitter = check_pixel_jitter(pixel_rays_of(right_pixel()));
+  EXPECT_TRUE(jitter.passed) << jitter.message;
+  const TaskResult calibration = check_pixel_calibration(pixel_furnace_of(right_pixel()));
+  EXPECT_TRUE(calibration.passed) << calibration.message;
+}
+
+TEST_F(Diagnoses, A4PixelWithoutJitter) {
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::no_jitter))), "every pixel's mean is the radiance at its centre");
+  expect_diagnosis(check_pixel_jitter(pixel_rays_of(wrong_pixel(PixelBug::no_jitter))), "every ray goes through the pixel's centre");
+}
+
+TEST_F(Diagnoses, A4PixelSumInsteadOfMean) {
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sum))), "your mean is spp times the expected one");
+  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sum))), "the z-scores are far from 0");
+}
+
+TEST_F(Diagnoses, A4PixelSigmaInsteadOfStandardError) {
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sigma))), "your standard error is sqrt(spp) times too large");
+  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sigma))), "the z-scores vary spp times too little");
+}
+
+// The biased variance (/spp) is seen by the exact test only: at the calibration test's 512
+// paths a pixel it raises Var[z] by 512/511, 0.2%, far inside that test's noise (about 5% at
+// 1024 pixels), so the calibration test passes it.
+TEST_F(Diagnoses, A4PixelBiasedVariance) {
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::biased_variance))), "your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide");
+}
+
 /// Whether every camera ray of the sky render's region (column, row) sees the sky itself: 8 x 8
 /// positions per pixel, found by the scene's own closest-hit query (not by any tracer).
 bool sky_region_sees_only_sky(int column, int row) {

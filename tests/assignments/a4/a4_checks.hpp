@@ -19,6 +19,7 @@
 #include "render/recursive_estimator.hpp"
 #include "render/scene.hpp"
 #include "sampling/sphere.hpp"
+#include "stats/chi_square.hpp"
 #include "stats/hypothesis.hpp"
 
 namespace mcrt::testing::assignment {
@@ -178,6 +179,207 @@ auto furnace_of_subject(S& subject) {
 template <class S>
 auto sky_of_subject(S& subject) {
   return [&subject](int k, int spp, std::uint64_t seed) { return subject.path_sky(16, k, spp, seed); };
+}
+
+// a4.2, the pixel's estimate. The checks judge bulk answers: `exact(spp, seed)` (pixel_exact_values),
+// `rays(x, y, spp, seed, stream)` (pixel_ray_directions) and `furnace(albedo, depth, size, spp,
+// seed)` (pixel_furnace_values); from subject() or from a known-wrong estimate_pixel (pixel_of).
+
+/// The checker's own estimate of pixel (x, y) of pixel_camera() with direction_radiance: the
+/// same u's from the same stream, the mean per channel and sqrt(s^2 / spp) of the channel mean.
+inline PixelEstimate reference_pixel_estimate(int x, int y, int spp, std::uint64_t seed) {
+  const Camera camera = pixel_camera();
+  Rng rng(seed, pixel_stream(x, y, camera.width()));
+  Color sum(0.0);
+  RunningStats channel_mean;
+  for (int i = 0; i < spp; ++i) {
+    const Color L = direction_radiance(camera.generate_ray(x, y, rng.uniform2()));
+    sum += L;
+    channel_mean.add(average(L));
+  }
+  return {sum / static_cast<double>(spp), std::sqrt(channel_mean.variance() / spp)};
+}
+
+/// Exact agreement: every pixel of pixel_camera() at spp = 2 and 16, mean and standard error
+/// against reference_pixel_estimate from the same u's. Tolerance 1e-9 relative: a different
+/// order of summation or a one- or two-pass variance changes the last few bits (1e-14), a
+/// missing factor changes the result by 30% or more (the smallest, sqrt(15/16) at spp = 16).
+template <class Exact>
+TaskResult check_pixel_exact(Exact&& exact) {
+  constexpr std::uint64_t seed = 4242;
+  constexpr double tolerance = 1e-9;
+  const Camera camera = pixel_camera();
+  std::string first_miss;
+  double mean_ratio = 0.0, se_ratio = 0.0;  // the student's over the checker's, at spp = 16
+  bool zero_spread = true, centre_means = true;
+  for (int spp : {2, 16}) {
+    const std::vector<double> values = exact(spp, seed);
+    RunningStats means, errors;
+    for (int y = 0; y < camera.height(); ++y)
+      for (int x = 0; x < camera.width(); ++x) {
+        const std::size_t i = 4 * static_cast<std::size_t>(pixel_stream(x, y, camera.width()));
+        const PixelEstimate want = reference_pixel_estimate(x, y, spp, seed);
+        const Color mean(values[i], values[i + 1], values[i + 2]);
+        const double se = values[i + 3];
+        const Color centre = direction_radiance(camera.generate_ray(x, y, Vec2(0.5)));
+        zero_spread = zero_spread && se == 0.0;
+        centre_means = centre_means && std::abs(average(mean) - average(centre)) <= tolerance * std::abs(average(centre));
+        const bool ok = std::abs(se - want.standard_error) <= tolerance * want.standard_error &&
+                        std::abs(mean.r - want.mean.r) <= tolerance * std::abs(want.mean.r) &&
+                        std::abs(mean.g - want.mean.g) <= tolerance * std::abs(want.mean.g) &&
+                        std::abs(mean.b - want.mean.b) <= tolerance * std::abs(want.mean.b);
+        if (!ok && first_miss.empty())
+          first_miss = fmt::format("pixel ({}, {}) at spp = {}: mean ({:.6g}, {:.6g}, {:.6g}), standard error {:.6g}; "
+                                   "expected ({:.6g}, {:.6g}, {:.6g}), {:.6g}",
+                                   x, y, spp, mean.r, mean.g, mean.b, se, want.mean.r, want.mean.g, want.mean.b,
+                                   want.standard_error);
+        means.add(average(mean) / average(want.mean));
+        errors.add(se / want.standard_error);
+      }
+    mean_ratio = means.mean();
+    se_ratio = errors.mean();
+  }
+  if (first_miss.empty()) return {true, "every pixel's mean and standard error match the checker's, spp = 2 and 16"};
+  std::string d;
+  if (zero_spread && centre_means)
+    d = diagnosis("every pixel's mean is the radiance at its centre and the standard error is 0: is u always (0.5, 0.5) (no jitter)?");
+  else if (near(mean_ratio, 16.0, 1e-6))
+    d = diagnosis("your mean is spp times the expected one: do you return the sum of the samples instead of their mean?");
+  else if (near(mean_ratio, 1.0, 1e-6) && near(se_ratio, 4.0, 1e-6))
+    d = diagnosis("your standard error is sqrt(spp) times too large: is it sigma = sqrt(s^2), without the 1/spp of Var[mean] = sigma^2/spp?");
+  else if (near(mean_ratio, 1.0, 1e-6) && near(se_ratio, std::sqrt(15.0 / 16.0), 1e-6))
+    d = diagnosis("your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide the squared deviations by spp instead of spp - 1 (the biased variance)?");
+  else if (near(mean_ratio, 1.0, 1e-6))
+    d = diagnosis(fmt::format("your means match but your standard errors are {:.3f} times the expected sqrt(s^2 / spp), s^2 of the channel mean average(L)", se_ratio));
+  else
+    d = diagnosis("your means differ from the mean of the samples: take u = rng.uniform2() for each sample, in order, then trace camera.generate_ray(x, y, u)");
+  return {false, fmt::format("the first pixel that differs: {}\n{}", first_miss, d)};
+}
+
+/// Where a ray of pixel_camera() crosses the image plane, in pixels (generate_ray inverted:
+/// the screen's right and up axes are orthogonal to the view direction and to each other).
+inline Vec2 image_position(const Camera& camera, const Vec3& direction) {
+  const Camera::Frame f = camera.frame();
+  const Vec3 d = direction / glm::dot(direction, f.forward);  // on the screen at unit distance
+  const double a = glm::dot(d, f.right) / glm::dot(f.right, f.right);
+  const double b = glm::dot(d, f.up) / glm::dot(f.up, f.up);
+  return {(a + 0.5) * camera.width(), (0.5 - b) * camera.height()};
+}
+
+/// The jitter's chi-square at one seed: 10240 rays of pixel (5, 2), where they cross the pixel
+/// in 16 x 16 equal cells, against 40 a cell (a ray outside the pixel fails at once).
+/// `centred` says whether every ray went through the pixel's centre.
+template <class Rays>
+double jitter_p_value(Rays&& rays, std::uint64_t seed, bool& centred) {
+  constexpr int x = 5, y = 2, cells = 16, n = cells * cells * 40;  // 40 a cell: Cochran's 5 with room
+  const Camera camera = pixel_camera();
+  std::vector<CellCount> counts(static_cast<std::size_t>(cells * cells));
+  for (int c = 0; c < cells * cells; ++c) counts[static_cast<std::size_t>(c)] = {c % cells, c / cells, 0.0, n / double(cells * cells)};
+  std::uint64_t outside = 0;
+  centred = true;
+  const std::vector<Vec3> directions = rays(x, y, n, seed, 7);
+  for (const Vec3& d : directions) {
+    const Vec2 p = image_position(camera, d) - Vec2(x, y);
+    // 1e-9 pixels: generate_ray's round-off is 1e-15, a sample this close to the centre by chance 1e-18.
+    centred = centred && std::abs(p.x - 0.5) < 1e-9 && std::abs(p.y - 0.5) < 1e-9;
+    if (!(p.x >= -1e-9 && p.x <= 1.0 + 1e-9 && p.y >= -1e-9 && p.y <= 1.0 + 1e-9)) {
+      ++outside;
+      continue;
+    }
+    const int i = std::clamp(static_cast<int>(p.x * cells), 0, cells - 1), j = std::clamp(static_cast<int>(p.y * cells), 0, cells - 1);
+    counts[static_cast<std::size_t>(j * cells + i)].observed += 1.0;
+  }
+  if (directions.size() != static_cast<std::size_t>(n)) return 0.0;
+  return chi_square_test(counts, outside).p_value;
+}
+
+/// The jitter covers the pixel uniformly: jitter_p_value at the three grading seeds.
+template <class Rays>
+TaskResult check_pixel_jitter(Rays&& rays) {
+  bool centred = false;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) { return jitter_p_value(rays, seed, centred); });
+  std::string d;
+  if (!v.passed())
+    d = centred ? diagnosis("every ray goes through the pixel's centre: is u always (0.5, 0.5) (no jitter)?")
+                : diagnosis("the rays do not cover the pixel uniformly: u must be uniform in [0,1)^2, a new rng.uniform2() for each sample");
+  return {v.passed(), fmt::format("pixel (5, 2), 10240 rays in 16 x 16 cells of the pixel: {}\n{}", v.describe(), d)};
+}
+
+/// The calibrated standard error at one seed: a 32 x 32 furnace render (a = 0.5, k = 3, 512
+/// paths a pixel, furnace_path_law), the 1024 pixels' z = (mean - truth) / se, their variance z-tested
+/// (variance_z_test_p_value, with the z's own kurtosis) against (spp - 1)/(spp - 3), Student's
+/// t variance: the se is itself estimated, so Var[z] is 1 only as spp grows. Measured on the
+/// furnace's skewed paths: 1.0036 at 512 (1.021 at 128, where the test rejected 3 in 1000
+/// correct runs at 5e-4: hence 512). `z_variance` gets the z's variance.
+template <class Furnace>
+double calibration_p_value(Furnace&& furnace, std::uint64_t seed, double& z_variance) {
+  constexpr double a = 0.5;
+  constexpr int k = 3, size = 32, spp = 512;
+  const double truth = furnace_radiance(a, 1.0, k);
+  const std::vector<double> values = furnace(a, k, size, spp, seed);
+  std::vector<double> z;
+  for (std::size_t i = 0; i + 1 < values.size(); i += 2) z.push_back((values[i] - truth) / values[i + 1]);
+  RunningStats s;
+  for (double v : z) s.add(v);
+  z_variance = s.variance();
+  if (z.size() != static_cast<std::size_t>(size * size)) return 0.0;
+  return variance_z_test_p_value(z, (spp - 1.0) / (spp - 3.0));
+}
+
+/// Calibration: calibration_p_value at the three grading seeds.
+template <class Furnace>
+TaskResult check_pixel_calibration(Furnace&& furnace) {
+  double z_variance = 0.0;
+  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) { return calibration_p_value(furnace, seed, z_variance); });
+  std::string d;
+  if (!v.passed()) {
+    constexpr double spp = 512.0;
+    if (near(z_variance, 1.0 / spp, 0.3))
+      d = diagnosis("the z-scores vary spp times too little: is your standard error sigma instead of sigma / sqrt(spp)?");
+    else if (z_variance > 100.0)
+      d = diagnosis("the z-scores are far from 0: is your mean the furnace's mean (the mean of the samples, not their sum)?");
+    else
+      d = diagnosis(fmt::format("the z-scores (mean - truth) / se have variance {:.3f}, not 1: your standard error is off by about a factor {:.2f}",
+                                z_variance, std::sqrt(z_variance)));
+  }
+  return {v.passed(), fmt::format("furnace a = 0.5, k = 3, 32 x 32 pixels of 512 paths: variance of the z-scores {:.3f} at the last seed; {}\n{}",
+                                  z_variance, v.describe(), d)};
+}
+
+/// a4.2's producers for an estimate_pixel run in this process (a known-wrong one).
+template <class Estimate>
+auto pixel_exact_of(Estimate estimate) {
+  return [estimate](int spp, std::uint64_t seed) { return pixel_exact_values(estimate, spp, seed); };
+}
+template <class Estimate>
+auto pixel_rays_of(Estimate estimate) {
+  return [estimate](int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) {
+    return pixel_ray_directions(estimate, x, y, spp, seed, stream);
+  };
+}
+template <class Estimate>
+auto pixel_furnace_of(Estimate estimate) {
+  return [estimate](double albedo, int depth, int size, int spp, std::uint64_t seed) {
+    return pixel_furnace_values(estimate, albedo, depth, size, spp, seed);
+  };
+}
+
+/// The same producers from a Subject.
+template <class S>
+auto pixel_exact_of_subject(S& subject) {
+  return [&subject](int spp, std::uint64_t seed) { return subject.pixel_exact(spp, seed); };
+}
+template <class S>
+auto pixel_rays_of_subject(S& subject) {
+  return [&subject](int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) {
+    return subject.pixel_rays(x, y, spp, seed, stream);
+  };
+}
+template <class S>
+auto pixel_furnace_of_subject(S& subject) {
+  return [&subject](double albedo, int depth, int size, int spp, std::uint64_t seed) {
+    return subject.pixel_furnace(albedo, depth, size, spp, seed);
+  };
 }
 
 }  // namespace mcrt::testing::assignment

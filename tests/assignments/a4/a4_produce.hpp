@@ -13,6 +13,7 @@
 #include "geometry/camera.hpp"
 #include "integration/statistics.hpp"
 #include "assignments/subject/requests.hpp"
+#include "render/pixel_estimate.hpp"
 #include "render/scene.hpp"
 #include "sampling/sphere.hpp"
 
@@ -124,6 +125,95 @@ PathSample furnace_path(Radiance&& radiance, double albedo, double emission, Vec
   RayCount count;
   const double L = average(radiance(furnace, {Vec3(0.0), direction}, depth, rng, count));
   return {L, count.rays};
+}
+
+// a4.2, the pixel's estimate. `estimate(camera, x, y, spp, radiance, rng)` is estimate_pixel
+// (the student's, or a known-wrong one in diagnosis_test.cpp).
+
+/// The camera of a4.2's checks: 8 x 6 pixels with a wide field of view, so that the ray
+/// directions vary visibly inside one pixel.
+inline Camera pixel_camera() {
+  return Camera(CameraSpec{Vec3(0.0), Vec3(0.2, -0.1, -1.0), Vec3(0.0, 1.0, 0.0), 1.4, 0.0}, 8, 6);
+}
+
+/// A radiance known in closed form per ray, positive, different in every channel and varying across a
+/// pixel: what the exact check passes as `radiance` (it never draws from the rng, so the
+/// samples' u are the rng's only draws).
+inline Color direction_radiance(const Ray& ray) {
+  const Vec3 d = ray.direction;
+  return Color(30.0 + 20.0 * d.x, 2.0 + 30.0 * d.y * d.y, std::exp(3.0 * d.x - 2.0 * d.y));
+}
+
+/// The stream of pixel (x, y) of a width-wide image in a4.2's requests.
+inline std::uint64_t pixel_stream(int x, int y, int width) { return static_cast<std::uint64_t>(y * width + x); }
+
+/// Every pixel of pixel_camera() estimated with direction_radiance at spp samples, pixel
+/// (x, y) from Rng(seed, pixel_stream): four numbers a pixel (mean r, g, b, standard error),
+/// rows then pixels.
+template <class Estimate>
+std::vector<double> pixel_exact_values(Estimate&& estimate, int spp, std::uint64_t seed) {
+  const Camera camera = pixel_camera();
+  std::vector<double> out;
+  for (int y = 0; y < camera.height(); ++y)
+    for (int x = 0; x < camera.width(); ++x) {
+      Rng rng(seed, pixel_stream(x, y, camera.width()));
+      const PixelEstimate e =
+          estimate(camera, x, y, spp, [](const Ray& ray, Rng&) { return direction_radiance(ray); }, rng);
+      for (double v : {e.mean.r, e.mean.g, e.mean.b, e.standard_error}) out.push_back(v);
+    }
+  return out;
+}
+
+/// The directions of the rays estimate() traces for pixel (x, y) of pixel_camera() at spp
+/// samples from Rng(seed, stream), in the order it traces them (a radiance that records them).
+template <class Estimate>
+std::vector<Vec3> pixel_ray_directions(Estimate&& estimate, int x, int y, int spp, std::uint64_t seed,
+                                       std::uint64_t stream) {
+  const Camera camera = pixel_camera();
+  std::vector<Vec3> directions;
+  directions.reserve(static_cast<std::size_t>(spp));
+  Rng rng(seed, stream);
+  estimate(camera, x, y, spp,
+           [&directions](const Ray& ray, Rng&) {
+             directions.push_back(ray.direction);
+             return Color(0.0);
+           },
+           rng);
+  return directions;
+}
+
+/// The value of one furnace path (albedo a, Le = 1, at most k bounces) as a uniform-hemisphere
+/// tracer's law gives it, drawn directly: L = sum over j = 0..k of prod over i <= j of 2 a c_i,
+/// c_i uniform on [0,1) (the cosines), so E[L] = (1 - a^(k+1)) / (1 - a) = furnace_radiance.
+/// a4.2's calibration test traces it instead of the student's estimate_path_radiance, so that
+/// a4.2 is graded whatever a4.1 does (and in a kit where a4.1 is still a stub).
+inline double furnace_path_law(double albedo, int depth, Rng& rng) {
+  double L = 1.0, beta = 1.0;
+  for (int j = 1; j <= depth; ++j) {
+    beta *= 2.0 * albedo * rng.uniform();
+    L += beta;
+  }
+  return L;
+}
+
+/// Every pixel of a size x size image of the furnace (furnace_path_law at albedo, depth), each
+/// estimated from spp samples, pixel (x, y) from Rng(seed, pixel_stream): two numbers a pixel
+/// (the channel-mean mean, the standard error).
+template <class Estimate>
+std::vector<double> pixel_furnace_values(Estimate&& estimate, double albedo, int depth, int size, int spp,
+                                         std::uint64_t seed) {
+  const Scene furnace = make_furnace(albedo, 1.0);
+  const Camera camera(furnace.camera, size, size);
+  std::vector<double> out;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      Rng rng(seed, pixel_stream(x, y, size));
+      const PixelEstimate e = estimate(
+          camera, x, y, spp, [&](const Ray&, Rng& r) { return Color(furnace_path_law(albedo, depth, r)); }, rng);
+      out.push_back(average(e.mean));
+      out.push_back(e.standard_error);
+    }
+  return out;
 }
 
 }  // namespace mcrt::testing::assignment

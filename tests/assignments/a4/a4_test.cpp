@@ -31,5 +31,20 @@ TEST(A4, Task1DepthZeroIsTheEmission) {
       << "with max_depth 0 the path is the first hit's emission";
 }
 
+TEST(A4, Task2PixelMeanAndStandardErrorAreExact) {
+  const TaskResult r = check_pixel_exact(pixel_exact_of_subject(subject()));
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A4, Task2JitterCoversThePixelUniformly) {
+  const TaskResult r = check_pixel_jitter(pixel_rays_of_subject(subject()));
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A4, Task2StandardErrorIsCalibrated) {
+  const TaskResult r = check_pixel_calibration(pixel_furnace_of_subject(subject()));
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
 }  // namespace
 }  // namespace mcrt::testing::assignment

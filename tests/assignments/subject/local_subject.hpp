@@ -19,6 +19,7 @@
 #include "render/glossy_direct.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
+#include "render/pixel_estimate.hpp"
 #include "sampling/cone.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
@@ -127,6 +128,21 @@ struct LocalSubject {
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
                          std::uint64_t stream) const {
     return furnace_path(estimate_path_radiance, albedo, emission, direction, depth, seed, stream);
+  }
+
+  /// a4.2: the student's estimate_pixel, as a4_produce.hpp's producers take it.
+  static auto student_pixel() {
+    return [](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
+      return estimate_pixel(camera, x, y, spp, radiance, rng);
+    };
+  }
+  std::vector<double> pixel_exact(int spp, std::uint64_t seed) const { return pixel_exact_values(student_pixel(), spp, seed); }
+  std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) const {
+    return pixel_ray_directions(student_pixel(), x, y, spp, seed, stream);
+  }
+  /// a4.2 on the furnace's path law (not the student's a4.1: a4.2 is graded on its own).
+  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed) const {
+    return pixel_furnace_values(student_pixel(), albedo, depth, size, spp, seed);
   }
 
   /// a5: the estimator `e` names, run by A5Producer with the student's three estimators.

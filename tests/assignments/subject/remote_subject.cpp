@@ -233,6 +233,29 @@ PathSample RemoteSubject::path_single(double albedo, double emission, Vec3 direc
   return {answer[0], static_cast<std::uint64_t>(answer[1])};
 }
 
+// a4.2's answers: 4 numbers a pixel of the 8 x 6 pixel camera, 3 a ray, 2 a furnace pixel.
+std::vector<double> RemoteSubject::pixel_exact(int spp, std::uint64_t seed) {
+  std::vector<double> answer = call(k_request_a4_pixel_exact, {static_cast<double>(spp), as_number(seed)});
+  if (answer.size() != 4u * 8u * 6u) broken(k_request_a4_pixel_exact, fmt::format("{} numbers for 48 pixels", answer.size()));
+  return answer;
+}
+
+std::vector<Vec3> RemoteSubject::pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) {
+  const std::vector<double> answer = call(k_request_a4_pixel_rays, {static_cast<double>(x), static_cast<double>(y),
+                                                                    static_cast<double>(spp), as_number(seed), as_number(stream)});
+  if (answer.size() != 3u * static_cast<std::size_t>(spp))
+    broken(k_request_a4_pixel_rays, fmt::format("{} numbers for {} rays", answer.size(), spp));
+  return unflatten3(answer.data(), answer.size());
+}
+
+std::vector<double> RemoteSubject::pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed) {
+  std::vector<double> answer = call(k_request_a4_pixel_furnace, {albedo, static_cast<double>(depth), static_cast<double>(size),
+                                                                 static_cast<double>(spp), as_number(seed)});
+  if (answer.size() != 2u * static_cast<std::size_t>(size) * static_cast<std::size_t>(size))
+    broken(k_request_a4_pixel_furnace, fmt::format("{} numbers for {} pixels", answer.size(), size * size));
+  return answer;
+}
+
 std::vector<FurnacePath> RemoteSubject::a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
                                                  std::uint64_t block) {
   std::vector<double> params;

@@ -53,6 +53,9 @@ class RemoteSubject {
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
                          std::uint64_t stream);
+  std::vector<double> pixel_exact(int spp, std::uint64_t seed);
+  std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream);
+  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed);
   std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed, std::uint64_t block);
   PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
                        std::uint64_t stream);

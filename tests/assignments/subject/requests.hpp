@@ -33,6 +33,11 @@ inline void append_count(std::vector<double>& out, std::uint64_t x) {
 inline constexpr const char* k_request_a4_furnace = "a4_furnace";
 inline constexpr const char* k_request_a4_sky = "a4_sky";
 inline constexpr const char* k_request_a4_single = "a4_single";
+/// a4.2: every pixel's estimate of a known radiance, one pixel's ray directions, a furnace's
+/// pixel estimates (a4_produce.hpp).
+inline constexpr const char* k_request_a4_pixel_exact = "a4_pixel_exact";
+inline constexpr const char* k_request_a4_pixel_rays = "a4_pixel_rays";
+inline constexpr const char* k_request_a4_pixel_furnace = "a4_pixel_furnace";
 
 /// One path's channel-mean radiance and its rays (a4's single path).
 struct PathSample {

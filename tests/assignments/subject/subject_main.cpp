@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -137,6 +138,22 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     const PathSample p = s.path_single(params[0], params[1], {params[2], params[3], params[4]}, whole(params[5], 64),
                                        seed(params[6]), seed(params[7]));
     return {p.radiance, static_cast<double>(p.rays)};
+  }
+  if (name == k_request_a4_pixel_exact) {
+    need(params, 2, name);
+    return s.pixel_exact(whole(params[0], 1 << 16), seed(params[1]));
+  }
+  if (name == k_request_a4_pixel_rays) {
+    need(params, 5, name);
+    // Only the recorded rays' directions travel back: the checker never sees what the
+    // student's code drew from the rng, only where its rays went.
+    return flatten(s.pixel_rays(whole(params[0], 7), whole(params[1], 5), std::max(whole(params[2], 1 << 20), 1),
+                                seed(params[3]), seed(params[4])));
+  }
+  if (name == k_request_a4_pixel_furnace) {
+    need(params, 5, name);
+    return s.pixel_furnace(params[0], whole(params[1], 64), whole(params[2], 256), whole(params[3], 1 << 16),
+                           seed(params[4]));
   }
   if (name == k_request_a5_paths || name == k_request_a5_single || name == k_request_a5_regions ||
       name == k_request_a5_wall) {
