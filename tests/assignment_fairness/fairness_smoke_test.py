@@ -63,7 +63,7 @@ class QuickRunTest(unittest.TestCase):
         names = {r["name"] for r in self.checks()}
         for name in ("a1_disk", "a1_ball", "a1_basic_estimator",
                      "a2_uniform_hemisphere", "a2_cosine_hemisphere", "a2_uniform_sphere",
-                     "a2_unit_disk", "a2_uniform_cone", "a3_furnace", "a4_furnace", "a4_regions",
+                     "a2_unit_disk", "a2_uniform_cone", "a3_furnace", "a4_furnace", "a4_regions", "a4_pixel_jitter", "a4_pixel_calibration",
                      "a5_roulette_furnace", "a5_uniform_furnace", "a5_cos2_furnace",
                      "a5_nee_regions", "a5_nee_two_lights", "a5_nee_beyond_cap",
                      "a6_phong_lobe", "a6_balance_regions", "a6_power_regions",

@@ -67,6 +67,17 @@ inline std::vector<MeasuredCheck> solution_checks() {
                       double z = 0.0;
                       return reference_regions_p_value(sky_of_subject(s), seed, worst, z);
                     }});
+  // a4.2: the pixel's jitter (chi-square over the pixel's cells) and its standard error's calibration
+  checks.push_back({"a4_pixel_jitter", "a4.A4.Task2JitterCoversThePixelUniformly", k_seed_alpha, true, false,
+                    [&s](std::uint64_t seed) {
+                      bool centred = false;
+                      return jitter_p_value(pixel_rays_of_subject(s), seed, centred);
+                    }});
+  checks.push_back({"a4_pixel_calibration", "a4.A4.Task2StandardErrorIsCalibrated", k_seed_alpha, true, false,
+                    [&s](std::uint64_t seed) {
+                      double z_variance = 0.0;
+                      return calibration_p_value(pixel_furnace_of_subject(s), seed, z_variance);
+                    }});
   checks.push_back({"a5_roulette_furnace", "a5.A5.Task1RouletteFurnaceMatchesTheClosedForms", k_seed_alpha, true,
                     false, [&s](std::uint64_t seed) {
                       double mean = 0.0, rays = 0.0;
