@@ -7,6 +7,11 @@
 #                                   grader scores 0, every test failing, with NOT IMPLEMENTED
 #                                   feedback naming every task of aN
 #   kit_test.sh ROOT solution [aN]  the solution kit, graded with the hidden tests: full marks
+#   kit_test.sh ROOT variant aN SECRET  the solution kit of the course variant SECRET, graded
+#                                   by that variant's autograder (its hidden tests and answer
+#                                   key, make-assignment --autograder --variant): full marks;
+#                                   graded with the default hidden folder instead, its written
+#                                   answers lose points (the variant's numbers are its own)
 # With KIT_TEST_REUSE=DIR (scripts/test --kits), the stub kit is synced into DIR/kit, only the
 # files whose content changed being rewritten, and built in DIR/build: one kit after another
 # recompiles only what their stubs change, not the whole project.
@@ -15,6 +20,21 @@ root=$1 mode=$2 a=${3:-a2}
 tmp=$(mktemp -d /tmp/mcrt-kit-test.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "kit_test $a: $*" >&2; exit 1; }
+
+if [ "$mode" = variant ]; then
+  secret=${4:?kit_test.sh ROOT variant aN SECRET}
+  "$root/scripts/make-assignment" "$a" --out "$tmp/kit" --solution --variant "$secret"
+  "$root/scripts/make-assignment" "$a" --autograder "$tmp/autograder" --variant "$secret"
+  "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$tmp/autograder/hidden" --build "$tmp/build" \
+      --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1 || { cat "$tmp/grade.txt"; fail "the variant's solution kit lost points"; }
+  cat "$tmp/grade.txt"
+  grep -q '"visibility": "after_published"' "$tmp/results.json" || fail "no hidden test was graded"
+  if "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$root/tests/assignments/hidden" --build "$tmp/build" \
+      > "$tmp/default.txt" 2>&1; then
+    fail "the variant's answers scored full marks against the default key"
+  fi
+  exit 0
+fi
 
 if [ "$mode" = solution ]; then
   "$root/scripts/make-assignment" "$a" --out "$tmp/kit" --solution
