@@ -133,12 +133,18 @@ inline std::string diagnose_prediction(std::uint64_t observed, std::uint64_t n, 
   return diagnosis(fmt::format("{} instead of 1 + N + ... + N^k = {}", observed, expected));
 }
 
+/// The producer's max_rays_per_sample(N, k) of every case, in order.
+template <class P>
+std::vector<std::uint64_t> predictions_of(P& producer, const std::vector<PredictionCase>& cases) {
+  std::vector<std::array<int, 2>> calls;
+  for (const PredictionCase& c : cases) calls.push_back({c.n, c.k});
+  return producer.predicted_rays(calls);
+}
+
 /// Exact: max_rays_per_sample(N, k) against the rays of every case.
 template <class P>
 TaskResult check_predicted_rays(P&& producer, const std::vector<PredictionCase>& cases) {
-  std::vector<std::array<int, 2>> calls;
-  for (const PredictionCase& c : cases) calls.push_back({c.n, c.k});
-  const std::vector<std::uint64_t> predicted = producer.predicted_rays(calls);
+  const std::vector<std::uint64_t> predicted = predictions_of(producer, cases);
   TaskResult result{predicted.size() == cases.size(), ""};
   for (std::size_t i = 0; i < cases.size() && i < predicted.size(); ++i) {
     const PredictionCase& c = cases[i];
@@ -166,9 +172,7 @@ TaskResult check_prediction_saturates(P&& producer) {
 template <class P>
 TaskResult check_prediction_counts_your_recursion(P&& producer) {
   const std::vector<PredictionCase> cases{{1, 3, 4}, {2, 2, 7}, {3, 3, 40}, {5, 2, 31}};
-  std::vector<std::array<int, 2>> calls;
-  for (const PredictionCase& c : cases) calls.push_back({c.n, c.k});
-  const std::vector<std::uint64_t> predicted = producer.predicted_rays(calls);
+  const std::vector<std::uint64_t> predicted = predictions_of(producer, cases);
   TaskResult result{predicted.size() == cases.size(), ""};
   for (std::size_t i = 0; i < cases.size() && i < predicted.size(); ++i) {
     const PredictionCase& c = cases[i];
