@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -338,8 +339,8 @@ TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
 
 /// a4.2's known-wrong pixel estimates, each estimate_pixel but for one thing: no jitter (every
 /// ray through the centre), the sum for the mean, sigma for sigma/sqrt(spp), the variance
-/// divided by spp for spp - 1.
-enum class PixelBug { no_jitter, sum, sigma, biased_variance };
+/// divided by spp for spp - 1 (and none: the instructor's reference).
+enum class PixelBug { none, no_jitter, sum, sigma, biased_variance };
 
 auto wrong_pixel(PixelBug bug) {
   return [bug](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
@@ -361,6 +362,34 @@ auto right_pixel() {
   return [](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
     return estimate_pixel(camera, x, y, spp, radiance, rng);
   };
+}
+
+/// The instructor's own estimate (the bug-free case of wrong_pixel), written apart from the
+/// solution: a4_pixel_expected.hpp's table must be what it gives, so that a wrong solution
+/// cannot make its own table.
+auto reference_pixel() { return wrong_pixel(PixelBug::none); }
+
+// Tolerance 1e-13 relative: the table is printed to 17 digits (exact round trip); another
+// compiler or libm may move exp() and the camera's arithmetic by a few ulps (1e-16 each), far
+// below the 1e-9 the exact check allows and the 1e-3 of the smallest mistake it names.
+TEST(A4PixelTable, IsTheReferenceEstimate) {
+  for (std::size_t s = 0; s < k_a4_pixel_spp.size(); ++s) {
+    const std::vector<double> values = pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
+    ASSERT_EQ(values.size(), 4 * k_a4_pixel_expected[s].size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+      EXPECT_NEAR(values[i], k_a4_pixel_expected[s][i / 4][i % 4], 1e-13 * std::abs(values[i]))
+          << "spp " << k_a4_pixel_spp[s] << ", pixel " << i / 4 << ", number " << i % 4;
+  }
+}
+
+TEST(A4PixelTable, DISABLED_PrintPixelTable) {
+  for (std::size_t s = 0; s < k_a4_pixel_spp.size(); ++s) {
+    const std::vector<double> values = pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
+    std::printf("    {{  // spp = %d\n", k_a4_pixel_spp[s]);
+    for (std::size_t i = 0; i < values.size(); i += 4)
+      std::printf("        {%.17g, %.17g, %.17g, %.17g},\n", values[i], values[i + 1], values[i + 2], values[i + 3]);
+    std::printf("    }},\n");
+  }
 }
 
 TEST_F(Diagnoses, A4PixelSolutionPassesAllThree) {

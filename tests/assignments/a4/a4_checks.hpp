@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "assignments/a1/a1_checks.hpp"
+#include "assignments/a4/a4_pixel_expected.hpp"
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/error_map.hpp"
 #include "assignments/grading.hpp"
@@ -185,40 +186,32 @@ auto sky_of_subject(S& subject) {
 // `rays(x, y, spp, seed, stream)` (pixel_ray_directions) and `furnace(albedo, depth, size, spp,
 // seed)` (pixel_furnace_values); from subject() or from a known-wrong estimate_pixel (pixel_of).
 
-/// The checker's own estimate of pixel (x, y) of pixel_camera() with direction_radiance: the
-/// same u's from the same stream, the mean per channel and sqrt(s^2 / spp) of the channel mean.
-inline PixelEstimate reference_pixel_estimate(int x, int y, int spp, std::uint64_t seed) {
-  const Camera camera = pixel_camera();
-  Rng rng(seed, pixel_stream(x, y, camera.width()));
-  Color sum(0.0);
-  RunningStats channel_mean;
-  for (int i = 0; i < spp; ++i) {
-    const Color L = direction_radiance(camera.generate_ray(x, y, rng.uniform2()));
-    sum += L;
-    channel_mean.add(average(L));
-  }
-  return {sum / static_cast<double>(spp), std::sqrt(channel_mean.variance() / spp)};
+/// The expected estimate of pixel number i (pixel_stream order) of pixel_camera() at the exact
+/// check's spp number spp_index, from the table of a4_pixel_expected.hpp.
+inline PixelEstimate expected_pixel_estimate(std::size_t spp_index, std::size_t i) {
+  const std::array<double, 4>& e = k_a4_pixel_expected[spp_index][i];
+  return {Color(e[0], e[1], e[2]), e[3]};
 }
 
 /// Exact agreement: every pixel of pixel_camera() at spp = 2 and 16, mean and standard error
-/// against reference_pixel_estimate from the same u's. Tolerance 1e-9 relative: a different
+/// against the expected table (the instructor's estimate from the same u's). Tolerance 1e-9 relative: a different
 /// order of summation or a one- or two-pass variance changes the last few bits (1e-14), a
 /// missing factor changes the result by 30% or more (the smallest, sqrt(15/16) at spp = 16).
 template <class Exact>
 TaskResult check_pixel_exact(Exact&& exact) {
-  constexpr std::uint64_t seed = 4242;
   constexpr double tolerance = 1e-9;
   const Camera camera = pixel_camera();
   std::string first_miss;
   double mean_ratio = 0.0, se_ratio = 0.0;  // the student's over the checker's, at spp = 16
   bool zero_spread = true, centre_means = true;
-  for (int spp : {2, 16}) {
-    const std::vector<double> values = exact(spp, seed);
+  for (std::size_t spp_index = 0; spp_index < k_a4_pixel_spp.size(); ++spp_index) {
+    const int spp = k_a4_pixel_spp[spp_index];
+    const std::vector<double> values = exact(spp, k_a4_pixel_seed);
     RunningStats means, errors;
     for (int y = 0; y < camera.height(); ++y)
       for (int x = 0; x < camera.width(); ++x) {
-        const std::size_t i = 4 * static_cast<std::size_t>(pixel_stream(x, y, camera.width()));
-        const PixelEstimate want = reference_pixel_estimate(x, y, spp, seed);
+        const std::size_t pixel = static_cast<std::size_t>(pixel_stream(x, y, camera.width())), i = 4 * pixel;
+        const PixelEstimate want = expected_pixel_estimate(spp_index, pixel);
         const Color mean(values[i], values[i + 1], values[i + 2]);
         const double se = values[i + 3];
         const Color centre = direction_radiance(camera.generate_ray(x, y, Vec2(0.5)));
