@@ -118,7 +118,7 @@ def grade(a, data, key):
         if q["kind"] == "number":
             expected = q["answer"]
             passed = abs(value - expected) <= q["rel_tol"] * abs(expected)
-            output = (f"{q['id']} = {value:.6g} is not within {q['rel_tol']:g} (relative) of the "
+            output = (f"{q['id']} = {value:.8g} is not within {q['rel_tol']:g} (relative) of the "
                       f"answer.\nDIAGNOSIS: {q['hint']}")
         else:
             passed = value == q["answer"]

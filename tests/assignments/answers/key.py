@@ -16,53 +16,62 @@ import hmac
 import json
 import math
 
-# Every numeric answer is graded within this relative tolerance: the handouts ask for 4
-# significant digits, whose rounding is at most 5e-4 relative; 1e-3 leaves room for that and
-# no room for a wrong formula (the closest wrong answers the questions invite differ by 10% or more).
-k_rel_tol = 1e-3
+# Every numeric answer is graded within this relative tolerance: the handouts ask for 6
+# significant digits, whose rounding is at most 5e-6 relative; 1e-5 leaves room for that and
+# no room for a wrong formula (the closest wrong answers the questions invite differ by 10% or
+# more). It is also what keeps two variants apart: answers within it count as the same answer.
+k_rel_tol = 1e-5
+
+
+def steps(low, high, step, decimals):
+    """low, low + step, ..., high, each rounded to `decimals` (so the handout prints it exactly)."""
+    return [round(low + step * i, decimals) for i in range(round((high - low) / step) + 1)]
+
 
 # The parameters of each assignment's questions and hidden tests: the default (no --variant)
 # and the values a secret picks from. Defaults are deliberately not the chapter pages' numbers,
-# so a key's number found in a kit is a leak, not a coincidence.
+# so a key's number found in a kit is a leak, not a coincidence. The lists are long (thousands
+# of values at least where a number depends on one parameter alone), so that two secrets rarely
+# give one answer within k_rel_tol (answers_test.py measures it over 2000 pairs of secrets).
 PARAMS = {
     "a1": {
         "k": (3, [3, 4, 5]),                                       # dimension of the ball
-        "s": (1.25, [round(1.05 + 0.001 * i, 3) for i in range(551)]),  # the cube is [-s, s]^k
-        "n": (800, list(range(500, 5001, 50))),                     # points per estimate
+        "s": (1.25, steps(1.05, 1.6, 1e-5, 5)),                    # the cube is [-s, s]^k
+        "n": (800, list(range(500, 5001))),                         # points per estimate
     },
     "a2": {
-        "r0": (0.35, [round(0.15 + 0.001 * i, 3) for i in range(701)]),  # a radius in the disk
-        "theta0": (35, [round(10 + 0.1 * i, 1) for i in range(701)]),     # degrees
-        "cone_deg": (20, [round(5 + 0.1 * i, 1) for i in range(551)]),    # a cone's half-angle, degrees
+        "r0": (0.35, steps(0.15, 0.85, 1e-5, 5)),                  # a radius in the disk
+        "theta0": (35, steps(10, 80, 1e-3, 3)),                     # degrees
+        "cone_deg": (20, steps(5, 60, 1e-3, 3)),                    # a cone's half-angle, degrees
     },
     "a3": {
         "branches": (6, [3, 4, 5, 6, 7, 8, 9]),
         "depth": (4, [3, 4, 5, 6]),
-        "albedo": (0.55, [round(0.3 + 0.001 * i, 3) for i in range(501)]),
+        "albedo": (0.55, steps(0.3, 0.8, 1e-4, 4)),
         "width": (320, [160, 200, 240, 320, 400, 480, 640]),
         "height": (240, [120, 160, 200, 240, 300, 360]),
-        "spp": (8, list(range(2, 65))),
+        "spp": (8, list(range(2, 1025))),
         "rate": (2e8, [1e8, 2e8, 3e8, 5e8, 8e8]),                        # rays per second
     },
     "a4": {
-        "albedo": (0.65, [round(0.3 + 0.001 * i, 3) for i in range(551)]),
+        "albedo": (0.65, steps(0.3, 0.85, 1e-5, 5)),
         "depth": (4, [2, 3, 4, 5, 6, 7]),
-        "emission": (1.5, [round(0.5 + 0.01 * i, 2) for i in range(201)]),
+        "emission": (1.5, steps(0.5, 2.5, 1e-3, 3)),
     },
     "a5": {
-        "albedo": (0.45, [round(0.3 + 0.001 * i, 3) for i in range(401)]),
+        "albedo": (0.45, steps(0.3, 0.7, 1e-5, 5)),
         "min_depth": (2, [1, 2, 3, 4]),
-        "q": (0.75, [round(0.5 + 0.001 * i, 3) for i in range(451)]),
+        "q": (0.75, steps(0.5, 0.95, 1e-5, 5)),
         "vertex": (5, [5, 6, 7, 8]),                               # a vertex beyond min_depth
-        "height": (1.6, [round(1.0 + 0.01 * i, 2) for i in range(201)]),  # of the light above x
-        "side": (0.4, [round(0.2 + 0.01 * i, 2) for i in range(51)]),     # of the square light
-        "offset": (0.5, [round(0.1 + 0.01 * i, 2) for i in range(91)]),   # of y from above x
+        "height": (1.6, steps(1.0, 3.0, 1e-3, 3)),                 # of the light above x
+        "side": (0.4, steps(0.2, 0.7, 1e-3, 3)),                   # of the square light
+        "offset": (0.5, steps(0.1, 1.0, 1e-3, 3)),                 # of y from above x
         "lights": (2, [2, 3, 4]),
     },
     "a6": {
-        "m": (20000, [1000, 2000, 5000, 10000, 20000, 50000, 100000]),  # the lobe's exponent
-        "p_light": (2.4, [round(0.5 + 0.01 * i, 2) for i in range(451)]),  # per steradian
-        "p_bsdf": (0.7, [round(0.1 + 0.01 * i, 2) for i in range(191)]),   # per steradian
+        "m": (20000, list(range(1000, 100001))),              # the lobe's exponent
+        "p_light": (2.4, steps(0.5, 5.0, 1e-3, 3)),                # per steradian
+        "p_bsdf": (0.7, steps(0.1, 2.0, 1e-3, 3)),                 # per steradian
     },
 }
 
