@@ -358,12 +358,6 @@ auto wrong_pixel(PixelBug bug) {
   };
 }
 
-auto right_pixel() {
-  return [](const Camera& camera, int x, int y, int spp, auto&& radiance, Rng& rng) {
-    return estimate_pixel(camera, x, y, spp, radiance, rng);
-  };
-}
-
 /// The instructor's own estimate (the bug-free case of wrong_pixel), written apart from the
 /// solution: a4_pixel_expected.hpp's table must be what it gives, so that a wrong solution
 /// cannot make its own table.
@@ -393,11 +387,11 @@ TEST(A4PixelTable, DISABLED_PrintPixelTable) {
 }
 
 TEST_F(Diagnoses, A4PixelSolutionPassesAllThree) {
-  const TaskResult exact = check_pixel_exact(pixel_exact_of(right_pixel()));
+  const TaskResult exact = check_pixel_exact(pixel_exact_of(LocalSubject::student_pixel()));
   EXPECT_TRUE(exact.passed) << exact.message;
-  const TaskResult jitter = check_pixel_jitter(pixel_rays_of(right_pixel()));
+  const TaskResult jitter = check_pixel_jitter(pixel_rays_of(LocalSubject::student_pixel()));
   EXPECT_TRUE(jitter.passed) << jitter.message;
-  const TaskResult calibration = check_pixel_calibration(pixel_furnace_of(right_pixel()));
+  const TaskResult calibration = check_pixel_calibration(pixel_furnace_of(LocalSubject::student_pixel()));
   EXPECT_TRUE(calibration.passed) << calibration.message;
 }
 

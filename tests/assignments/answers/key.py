@@ -313,6 +313,14 @@ def questions(a, secret=None):
     return QUESTIONS[a](params(a, secret)) if a in QUESTIONS else []
 
 
+def shared_answers(a, secret, other):
+    """The numeric questions of `a` that the variants `secret` and `other` answer alike (within
+    the grading tolerance): one variant's answer would score in the other."""
+    theirs = {q["id"]: q["answer"] for q in questions(a, other) if q["kind"] == "number"}
+    return [q["id"] for q in questions(a, secret) if q["kind"] == "number" and
+            abs(q["answer"] - theirs[q["id"]]) <= q["rel_tol"] * max(abs(q["answer"]), abs(theirs[q["id"]]))]
+
+
 def key_json(a, secret=None):
     """The answer key and rubric of `a` as the autograder carries it (its hidden folder)."""
     return json.dumps({"assignment": a, "questions": questions(a, secret)}, indent=2) + "\n"
