@@ -447,6 +447,22 @@ number("ch05.mean_radiance", "ch05", summary_value("ch05", "mean_radiance"))
 number("ch05.mean_radiance_reference", "ch05", summary_value("ch05", "mean_radiance_reference"))
 number("ch05.depth_cut_shortfall_percent", "ch05", lambda runs: 100 * (
     1 - runs.summary("ch05")["mean_radiance"] / runs.summary("ch05")["mean_radiance_reference"]))
+
+
+def ch05_mean_standard_error(runs):
+    """The standard error of the image mean's gap to the reference's: each pixel's noise at the
+    largest spp (rmse, the two-render estimate) and the reference's (its standard_error_rms),
+    over the pixels, taken as independent: sqrt(rmse^2 + se_ref^2) / sqrt(width height)."""
+    summary = runs.summary("ch05")
+    rmse = runs.cell("ch05", "rmse_vs_spp.csv", "rmse", spp=max(summary["spp"]))
+    reference = summary["reference"]["standard_error_rms"]
+    return math.sqrt(rmse ** 2 + reference ** 2) / math.sqrt(summary["width"] * summary["height"])
+
+
+number("ch05.mean_standard_error", "ch05", ch05_mean_standard_error)
+number("ch05.depth_cut_gap_standard_errors", "ch05", lambda runs: (
+    runs.summary("ch05")["mean_radiance_reference"] - runs.summary("ch05")["mean_radiance"])
+    / ch05_mean_standard_error(runs))
 number("ch05.largest_error_gap_percent", "ch05", lambda runs: max(
     100 * abs(float(row["rmse_vs_reference"]) / float(row["rmse"]) - 1)
     for row in runs.rows("ch05", "rmse_vs_spp.csv")))
@@ -563,6 +579,11 @@ for image in ("uniform", "cosine", "cosine_equal_time"):
            cell("ch07", "equal_time.csv", "relative_mse", image=image))
 for image in ("uniform", "cosine_equal_time"):
     number(f"ch07.{image}_rays", "ch07", cell("ch07", "equal_time.csv", "rays", image=image))
+# The equal-cost image's spp is the uniform image's rays over a cosine sample's, rounded to the
+# nearest: it may spend a little more than the uniform image.
+number("ch07.equal_time_overspend_percent", "ch07", lambda runs: 100 * (runs.cell(
+    "ch07", "equal_time.csv", "rays", image="cosine_equal_time") / runs.cell(
+    "ch07", "equal_time.csv", "rays", image="uniform") - 1))
 number("ch07.cosine_equal_time_spp", "ch07",
        cell("ch07", "equal_time.csv", "spp", image="cosine_equal_time"))
 number("ch07.equal_time_less_error_percent", "ch07", lambda runs: 100 * (1 - runs.cell(
