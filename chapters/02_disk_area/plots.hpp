@@ -26,7 +26,7 @@ inline Plot error_plot(double fitted_slope, double guide_constant) {
       "plot 'disk_area.csv' using \"n\":\"rmse\":(column(\"rmse\") / sqrt(2 * column(\"trials\"))) "
       "with yerrorbars pt 7 lc rgb '#1f77b4' title 'rmse over the trials', \\\n"
       "  '' using \"n\":\"theory_std\" with lines lw 2 lc rgb '#d62728' "
-      "title 'theory 4 sqrt(p(1-p)/N)', \\\n"
+      "title 'theory 4 sqrt(η(1-η)/N)', \\\n"
       "  '' using \"n\":(guide(column(\"n\"))) with lines dt 2 lc rgb '#555555' title 'slope -1/2'";
   return plot;
 }
@@ -56,9 +56,9 @@ inline Plot picture_plot(int points, double estimate) {
 inline Plot ball_error_plot(const std::vector<int>& dims) {
   Plot plot;
   plot.name = "ball_error_vs_n";
-  plot.title = "k-ball volume 2^k M/N: relative rms error against N (the constant grows with k)";
+  plot.title = "D-ball volume 2^D M/N: relative rms error against N (the constant grows with D)";
   plot.x_label = "points N";
-  plot.y_label = "relative rms error of 2^k M/N  (rmse / V_k)";
+  plot.y_label = "relative rms error of 2^D M/N  (rmse / |B_D|)";
   plot.log_x = plot.log_y = true;
   plot.settings = "set key bottom left\nset autoscale xfix\n";
   const char* colours[] = {"#1f77b4", "#2ca02c", "#d62728"};
@@ -66,9 +66,9 @@ inline Plot ball_error_plot(const std::vector<int>& dims) {
   for (std::size_t s = 0; s < dims.size(); ++s)
     plot.plot += fmt::format(
         "{0}'ball_error_vs_n.csv' using \"n\":(column(\"k\") == {1} ? column(\"relative_rmse\") : "
-        "1/0) with points pt 7 lc rgb '{2}' title 'k = {1} rmse / V_{{{1}}}', \\\n"
+        "1/0) with points pt 7 lc rgb '{2}' title 'D = {1}: rmse / |B_{{{1}}}|', \\\n"
         "  '' using \"n\":(column(\"k\") == {1} ? column(\"relative_theory_std\") : 1/0) with "
-        "lines lw 2 lc rgb '{2}' title 'k = {1} theory'",
+        "lines lw 2 lc rgb '{2}' title 'D = {1}: theory'",
         s ? ", \\\n  " : "", dims[s], colours[s % 3]);
   return plot;
 }

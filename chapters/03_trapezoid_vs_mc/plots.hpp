@@ -48,7 +48,7 @@ inline Plot error_plot(const std::string& name, const std::string& title,
                               trapezoid.constant, monte_carlo.constant);
   plot.plot = fmt::format(
       "plot 'errors.csv' using {}:\"abs_error\" pt 7 lc rgb '#1f77b4' "
-      "title 'trapezoid |T - I| (slope {:.2f})', \\\n"
+      "title 'trapezoid |Q_n - I| (slope {:.2f})', \\\n"
       "  '' using {}:\"rmse\" pt 5 lc rgb '#d62728' "
       "title 'Monte Carlo rmse (slope {:.2f})', \\\n"
       "  c_trap * x**({:.6g}) with lines dt 2 lc rgb '#1f77b4' title '{}', \\\n"
@@ -71,8 +71,8 @@ inline Plot slopes_plot(const std::vector<double>& dims) {
   };
   Plot plot;
   plot.name = "slopes_vs_k";
-  plot.title = "Fitted slope of log(error) against log(N), by dimension k";
-  plot.x_label = "dimension k";
+  plot.title = "Fitted slope of log(error) against log(N), by dimension D";
+  plot.x_label = "dimension D";
   plot.y_label = "slope";
   plot.settings = "set key bottom right\nset autoscale xfix\nset yrange [-2.2:0.3]\n"
                   "set xtics 1\nset samples 400\n";
@@ -85,8 +85,8 @@ inline Plot slopes_plot(const std::vector<double>& dims) {
               " pt 5 lc rgb '#d62728' title 'Monte Carlo, smooth', \\\n"
               "  '' " + series("unit_ball_kd", "monte_carlo") +
               " pt 11 lc rgb '#ff7f0e' title 'Monte Carlo, ball indicator', \\\n"
-              "  -2.0/x with lines dt 2 lc rgb '#1f77b4' title 'theory -2/k (smooth)', \\\n"
-              "  -1.0/x with lines dt 2 lc rgb '#2ca02c' title 'theory -1/k (jump)', \\\n"
+              "  -2.0/x with lines dt 2 lc rgb '#1f77b4' title 'theory -2/D (smooth)', \\\n"
+              "  -1.0/x with lines dt 2 lc rgb '#2ca02c' title 'theory -1/D (jump)', \\\n"
               "  -0.5 with lines dt 2 lc rgb '#d62728' title 'theory -1/2 (Monte Carlo)'";
   return plot;
 }
@@ -103,8 +103,8 @@ inline Plot budget_plot(std::uint64_t budget, const Table& at_budget) {
   Plot plot;
   plot.name = "error_at_budget_vs_k";
   plot.title = fmt::format("At a fixed budget of {} evaluations: relative error against "
-                           "dimension k", budget);
-  plot.x_label = "dimension k";
+                           "dimension D", budget);
+  plot.x_label = "dimension D";
   plot.y_label = "relative error at the budget (error / I)";
   plot.log_y = true;
   plot.settings = "set key bottom right\nset autoscale xfix\nset xtics 1\n";
@@ -115,8 +115,8 @@ inline Plot budget_plot(std::uint64_t budget, const Table& at_budget) {
     for (std::size_t i = 0; i < error.size(); ++i) plot.y_values.push_back(error[i] / reference[i]);
   }
   plot.plot = "plot 'budget.csv' " + series("gaussian_kd", "trapezoid_error") +
-              " pt 7 lw 2 lc rgb '#1f77b4' title 'trapezoid |T - I| / I, smooth (e^{-|x|^2}), "
-              "n = floor(budget^{1/k}) per axis', \\\n  '' " +
+              " pt 7 lw 2 lc rgb '#1f77b4' title 'trapezoid |Q_n - I| / I, smooth (e^{-|x|^2}), "
+              "n = floor(budget^{1/D}) per axis', \\\n  '' " +
               series("unit_ball_kd", "trapezoid_error") +
               " pt 9 lw 2 lc rgb '#2ca02c' title 'trapezoid, ball indicator', \\\n"
               "  '' " + series("gaussian_kd", "monte_carlo_rmse") +

@@ -33,16 +33,22 @@ CHAPTERS = [f"{name}" for name in ("01_ray_tracing.md", "02_disk_area.md",
                                    "05_path_tracer.md", "06_russian_roulette.md",
                                    "07_importance_sampling.md", "08_next_event_estimation.md")]
 ALL = CHAPTERS + ["answers.md", "probability-recap.md", "under-the-hood.md"]
+# The assignments' handouts and README keep the same symbols (a kit holds one handout only).
+HANDOUTS = [f"assignments/{name}" for name in ("README.md", "a1.md", "a2.md", "a3.md", "a4.md",
+                                                "a5.md", "a6.md")]
 
 # (pattern, pages, what to write instead)
 RULES = [
-    (r"(?<![A-Za-z\\])V\s*(?:\\[Bb]ig)?\[", ALL, "variance is \\mathrm{Var}[...]; V is visibility"),
-    (r"(?<![A-Za-z\\])V_", ALL, "a ball's volume is \\lvert B_D\\rvert; V is visibility"),
-    (r"\\rho", ALL, "the albedo is a"),
-    (r"T_n", ALL, "the trapezoid rule is Q_n; T is the transport operator"),
-    (letter("k"), ["02_disk_area.md", "03_trapezoid_vs_mc.md", "probability-recap.md"],
+    (r"(?<![A-Za-z\\])V\s*(?:\\[Bb]ig)?\[", ALL + HANDOUTS,
+     "variance is \\mathrm{Var}[...]; V is visibility"),
+    (r"(?<![A-Za-z\\])V_", ALL + HANDOUTS, "a ball's volume is \\lvert B_D\\rvert; V is visibility"),
+    (r"\\rho", ALL + HANDOUTS, "the albedo is a"),
+    (r"T_n", ALL + HANDOUTS, "the trapezoid rule is Q_n; T is the transport operator"),
+    (letter("k"), ["02_disk_area.md", "03_trapezoid_vs_mc.md", "probability-recap.md",
+                   "assignments/a1.md"],
      "the dimension is D; k is the depth"),
-    (letter("p"), ["02_disk_area.md"], "the disk's hit probability is eta; p is a pdf"),
+    (letter("p"), ["02_disk_area.md", "assignments/a1.md"],
+     "the disk's hit probability is eta; p is a pdf"),
     (letter("q"), ["02_disk_area.md"], "the ball's fraction of the cube is eta_D; q is roulette's"),
     (letter("T"), ["02_disk_area.md", "03_trapezoid_vs_mc.md"],
      "trials are K, the trapezoid rule Q_n; T is the transport operator"),
@@ -100,16 +106,69 @@ def unlinked(pages):
 
 def read_pages():
     pages = {}
-    for name in set(ALL + LINKED):
+    for name in set(ALL + LINKED + HANDOUTS):
         path = os.path.join(REPO, "docs", name)
+        if name in HANDOUTS and not os.path.isfile(path):
+            continue  # a kit ships its own handout only
         with open(path, encoding="utf-8") as file:
             pages[name] = file.read()
     return pages
 
 
+# The figures' and the gallery's words: the text of the plots' labels and legends (the string
+# literals of chapters/*/plots.hpp, gnuplot's) and of scripts/make-gallery (its captions, checks
+# and conclusions) is plain text, not maths, so the moved meanings are matched as written there.
+PLAIN_RULES = [
+    (r"\bp\s*\(\s*1\s*-\s*p\s*\)", "the disk's hit probability is eta: eta(1-eta)"),
+    (r"\|\s*T\s*-\s*I\s*\||\bT_n\b", "the trapezoid rule is Q_n"),
+    (r"\bdimension k\b|\bk-ball|-[12]/k\b|\b2\^k\b", "the dimension is D; k is the depth"),
+    (r"\bV_(?:k|\{)", "a ball's volume is |B_D|"),
+    (r"\\u03c1|\u03c1|\brho\b", "the albedo is a"),
+]
+STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"')
+
+
+def text_sources():
+    """{path: text}: the string literals of every chapter's plots.hpp (comments left out: they
+    name the code's variables) and scripts/make-gallery's source."""
+    sources = {}
+    chapters = os.path.join(REPO, "chapters")
+    for folder in sorted(os.listdir(chapters)) if os.path.isdir(chapters) else []:
+        path = os.path.join(chapters, folder, "plots.hpp")
+        if os.path.isfile(path):
+            with open(path, encoding="utf-8") as file:
+                code = "\n".join(line for line in file.read().splitlines()
+                                 if not line.lstrip().startswith("//"))
+            sources[os.path.relpath(path, REPO)] = "\n".join(STRING.findall(code))
+    gallery = os.path.join(REPO, "scripts", "make-gallery")
+    if os.path.isfile(gallery):
+        with open(gallery, encoding="utf-8") as file:
+            sources["scripts/make-gallery"] = "\n".join(STRING.findall(file.read()))
+    return sources
+
+
+def plain_problems(sources):
+    found = []
+    for path, text in sources.items():
+        for pattern, instead in PLAIN_RULES:
+            for match in re.finditer(pattern, text):
+                found.append(f"{path}: '{match.group(0)}' ({instead})")
+    return found
+
+
 class ThePagesTest(unittest.TestCase):
     def test_no_page_brings_back_a_moved_meaning(self):
         found = problems(read_pages())
+        self.assertEqual(found, [], "\n" + "\n".join(found))
+
+    def test_the_handouts_are_checked(self):
+        if os.path.isdir(os.path.join(REPO, "docs", "assignments")):
+            self.assertTrue(any(name in read_pages() for name in HANDOUTS))
+
+    def test_no_plot_label_or_gallery_text_brings_back_a_moved_meaning(self):
+        sources = text_sources()
+        self.assertIn("scripts/make-gallery", sources)
+        found = plain_problems(sources)
         self.assertEqual(found, [], "\n" + "\n".join(found))
 
     def test_every_page_links_the_table_at_its_top(self):
@@ -157,6 +216,25 @@ class TheCheckTest(unittest.TestCase):
         self.assertTrue(any("eta_D" in line for line in found), found)
         self.assertTrue(any("\\mathrm{Var}" in line for line in found), found)
         self.assertTrue(any("B_D" in line for line in found), found)
+
+    def test_a_moved_meaning_in_a_handout_is_caught(self):
+        # the old a1 handout
+        found = problems({"assignments/a1.md": "$V[4M/N] = 16 p(1-p)/N$, $T_n = h$, "
+                                               "$p_k = V_k/2^k$",
+                          "assignments/a5.md": "the albedo $\\rho$"})
+        for expected in ("\\mathrm{Var}", "Q_n", "eta; p is a pdf", "D; k is the depth",
+                         "B_D", "albedo is a"):
+            self.assertTrue(any(expected in line for line in found), (expected, found))
+
+    def test_a_moved_meaning_in_a_label_or_caption_is_caught(self):
+        # the old legends and gallery texts, as string literals
+        sources = {"plots.hpp": "\"title 'theory 4 sqrt(p(1-p)/N)'\" \"trapezoid |T - I|\" "
+                                "\"dimension k\" \"rmse / V_{{{1}}}\"",
+                   "make-gallery": "\"(\\u03c1/\\u03c0) Le A\" \"the k-ball\""}
+        found = plain_problems(sources)
+        self.assertEqual(len(found), 6, found)
+        self.assertEqual(plain_problems({"x": "\"4 sqrt(\\u03b7(1-\\u03b7)/N) |Q_n - I| "
+                                              "dimension D, depth k, |B_D|, 2^D\""}), [])
 
     def test_code_subscripts_and_commands_are_not_symbols(self):
         pages = {
