@@ -72,7 +72,7 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
                        "column(\"{}\") : NaN)", column);
   };
   write_plot(out,
-             {"rays_vs_depth", "Rays traced against depth: N^k grows as a straight line of slope log N",
+             {"rays_vs_depth", "Rays traced against depth: at most N times more per bounce (N^k)",
               "depth k", "rays traced", false, true, per_n + "set key top left\n",
               "plot for [i=1:words(Ns)] " + of_n("rays") + " with linespoints pt 7 lw 2 lc i "
               "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
