@@ -732,6 +732,17 @@ number("ch08.plates.mis_power_worst_ratio", "ch08",
 number("ch08.plates.mis_power_mean_ratio", "ch08", lambda runs: math.exp(
     sum(math.log(r) for r in ch08_mis_power_over_best(runs)) / 16))
 
+# MIS (one light and one BSDF sample) against two light samples, at equal rays: where the BSDF
+# sample adds almost nothing, MIS has one useful sample where light sampling has two, so the
+# ratio of their relative MSEs is about 2 (the allocation, not the weights).
+for plate in range(4):
+    for light in range(4):
+        number(f"ch08.plates.p{plate}_l{light}.mis_balance_over_light", "ch08",
+               lambda runs, plate=plate, light=light: runs.cell(
+                   "ch08", "plates.csv", "rel_mse", plate=plate, light=light,
+                   strategy="mis_balance") / runs.cell(
+                   "ch08", "plates.csv", "rel_mse", plate=plate, light=light, strategy="light"))
+
 # (end of sources)
 
 if __name__ == "__main__":
