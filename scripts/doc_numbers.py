@@ -608,6 +608,9 @@ for k in range(5):
         "ch04-furnace", "missing_light.csv", "missing_fraction", depth=k))
 
 # The answers' runs.
+# The fraction of the square's points inside the disk at the largest N, over every trial: the
+# acceptance rate of the disk sampled by rejection from the square (under-the-hood.md).
+number("ch02.acceptance_rate", "ch02", lambda runs: runs.summary("ch02")["disk"]["estimate_at_largest_n"] / 4)
 number("ch02.theory_std_n1e6", "ch02", cell("ch02", "disk_area.csv", "theory_std", n=1000000))
 number("ch02.ball15_mean", "ch02-ball15",
        cell("ch02-ball15", "ball_volume.csv", "mean_estimate", k=15))
