@@ -265,6 +265,58 @@ def case_overlayfs(r, chapters, tmp):
         subprocess.run(["umount", str(merged)], capture_output=True)
 
 
+SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
+
+
+def case_gallery_fifo(r, tmp):
+    """make-gallery with a FIFO as a chapter's summary.json: one line, exit 1, at once (it used
+    to wait forever for a writer)."""
+    out = r.fresh(tmp / "gallery_fifo")
+    (out / CH01).mkdir()
+    os.mkfifo(out / CH01 / "summary.json")
+    code, _, err, _ = r.run([str(SCRIPTS / "make-gallery"), "--out", str(out)], cwd=out,
+                            timeout=r.REFUSAL_TIMEOUT)
+    problems = r.exit_problems(code, 1, err) + r.one_line_problems(err, [out])
+    return problems + ([] if "summary.json" in r.text(err) else [f"not named: {r.text(err)!r}"])
+
+
+def case_docs_user_file(r, tmp):
+    """A file the user put into out/docs after render-docs wrote it: refused (exit 2, the file
+    named), kept (it used to be deleted with the previous pages). None without pandoc."""
+    if not shutil.which("pandoc"):
+        return None
+    out = r.fresh(tmp / "docs_user_file")
+    command = [str(SCRIPTS / "render-docs"), "--out", str(out)]
+    (out / "docs").mkdir()  # as a render leaves it (its marker lists its files), then the user's
+    (out / "docs" / "index.html").write_text("<p>rendered</p>\n")
+    (out / "docs" / ".rendered-docs").write_text("index.html\n.rendered-docs\n")
+    (out / "docs" / "my-notes.txt").write_text("mine\n")
+    before = r.snapshot(out)
+    code, _, err, _ = r.run(command, cwd=out, timeout=120)
+    problems = r.exit_problems(code, 2, err) + r.one_line_problems(err, [out])
+    if "my-notes.txt" not in r.text(err):
+        problems.append(f"the line does not name the file: {r.text(err)!r}")
+    return problems + (["out/docs changed"] if r.snapshot(out) != before else [])
+
+
+def case_scripts_refuse_unowned(r, tmp):
+    """render-docs and make-gallery given another user's folder (root only): exit 2, one line
+    naming --out, nothing written in it."""
+    parent = r.fresh(tmp / "scripts_unowned")
+    os.chmod(parent, 0o755)
+    out = parent / "theirs"
+    out.mkdir()
+    os.chown(out, other_uid(), other_uid())
+    problems = []
+    for script in ("render-docs", "make-gallery"):
+        code, _, err, seconds = r.run([str(SCRIPTS / script), "--out", str(out)], cwd=parent)
+        problems += [f"{script}: {p}" for p in refused_problems(r, code, err, seconds, ["--out"],
+                                                                [out])]
+        if os.listdir(out):
+            problems.append(f"{script} wrote {sorted(os.listdir(out))}")
+    return problems
+
+
 def group_out_manifest(r, chapters, tmp, checks):
     if CH01 not in chapters:
         checks.case("out-manifest", [f"{CH01} not built"])
@@ -278,6 +330,13 @@ def group_out_manifest(r, chapters, tmp, checks):
     checks.case(guarantee + "a folder with a chapter's summary.json alone",
                 case_summary_alone(r, chapters, tmp))
     checks.case(guarantee + "a FIFO as a previous run's summary.json", case_fifo(r, chapters, tmp))
+    checks.case("Regular files only: make-gallery and a FIFO as summary.json",
+                case_gallery_fifo(r, tmp))
+    docs = case_docs_user_file(r, tmp)
+    if docs is None:
+        print("SKIP: no pandoc (a file of the user's in out/docs)")
+    else:
+        checks.case(guarantee + "render-docs and a file of the user's in out/docs", docs)
     for name in [n for n in r.TINY if n in chapters]:
         checks.case(f"{guarantee}{name}'s manifest lists exactly its folder",
                     case_manifest_lists_everything(r, chapters, tmp, name))
@@ -287,6 +346,8 @@ def group_out_manifest(r, chapters, tmp, checks):
         return
     checks.case(shared + "another user's 3777 folder, a new --out in another user's home (root)",
                 case_shared_folder(r, chapters, tmp))
+    checks.case(shared + "render-docs and make-gallery given another user's folder",
+                case_scripts_refuse_unowned(r, tmp))
     unprivileged = case_shared_folder_as_another_user(r, chapters, tmp)
     if unprivileged is None:
         print("SKIP: no setpriv (root's shared folder, given to another user)")
