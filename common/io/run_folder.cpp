@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <climits>
-#include <csignal>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
-#include <set>
 #include <system_error>
 #include <tuple>
 #include <utility>
@@ -99,63 +96,33 @@ fs::path checked_target(const fs::path& out) {
   return target;
 }
 
-// Every entry under `dir`, relative, folders with a trailing '/', in sorted order; entries in
-// `skip` (names directly in `dir`) are left out. `visit` returns false to stop.
-bool walk(const fs::path& dir, const std::string& prefix, const std::set<std::string>& skip,
-          const std::function<bool(const std::string&, const fs::file_status&)>& visit) {
+// Every entry under `dir` (links are entries, never followed), relative, folders with a
+// trailing '/', in sorted order.
+std::vector<std::pair<std::string, fs::file_status>> entries_under(const fs::path& dir) {
+  std::vector<std::pair<std::string, fs::file_status>> entries;
   std::error_code ec;
-  std::vector<fs::directory_entry> entries;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    entries.push_back(*it);
-  std::sort(entries.begin(), entries.end());
-  for (const fs::directory_entry& entry : entries) {
-    const std::string name = entry.path().filename().string();
-    if (prefix.empty() && skip.count(name)) continue;
-    const fs::file_status status = entry.symlink_status(ec);  // a link is an entry, not followed
-    const bool folder = fs::is_directory(status);
-    const std::string relative = prefix + name + (folder ? "/" : "");
-    if (!visit(relative, status)) return false;
-    if (folder && !walk(entry.path(), relative, {}, visit)) return false;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::file_status status = it->symlink_status(ec);
+    const std::string slash = fs::is_directory(status) ? "/" : "";
+    entries.emplace_back(it->path().lexically_relative(dir).string() + slash, status);
   }
-  return true;
+  std::sort(entries.begin(), entries.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  return entries;
 }
 
 // The manifest's text, if `dir` holds a regular one: opened without following a link and
-// without blocking (a FIFO in its place is never read), its type checked before reading.
+// without blocking (a FIFO in its place is never read), its type and size checked first.
 std::optional<std::string> read_manifest(const fs::path& dir) {
-  const fs::path path = dir / k_manifest_name;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  const int fd = ::open((dir / k_manifest_name).c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return std::nullopt;
   struct stat info {};
   std::optional<std::string> text;
   if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size <= k_max_manifest_bytes) {
-    text.emplace();
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) {
-        text.reset();
-        break;
-      }
-      text->append(buffer, static_cast<std::size_t>(n));
-    }
+    text.emplace(static_cast<std::size_t>(info.st_size), '\0');
+    text->resize(read_all(fd, *text));
   }
   ::close(fd);
   return text;
-}
-
-std::optional<std::string> first_foreign_entry_except(const fs::path& dir,
-                                                      const std::set<std::string>& skip) {
-  std::set<std::string> listed;
-  for (const std::string& entry : manifest_entries(dir)) listed.insert(entry);
-  std::optional<std::string> foreign;
-  walk(dir, "", skip, [&](const std::string& relative, const fs::file_status& status) {
-    const bool ours = (fs::is_regular_file(status) || fs::is_directory(status)) &&
-                      listed.count(relative) > 0;
-    if (!ours) foreign = relative;
-    return ours;
-  });
-  return foreign;
 }
 
 // Removes `dir` and everything in it; a file created meanwhile (a worker still writing) makes
@@ -283,15 +250,12 @@ std::pair<fs::path, int> make_staging(const fs::path& parent, const std::string&
   throw IoError("cannot create output folder " + quoted(out) + ": " + reason_of(reason));
 }
 
-// The names directly in `dir`, but those in `skip`.
-std::vector<std::string> names_in(const fs::path& dir, const std::set<std::string>& skip) {
+// The names directly in `dir`.
+std::vector<std::string> names_in(const fs::path& dir) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    std::string name = it->path().filename().string();
-    if (!skip.count(name)) names.push_back(std::move(name));
-  }
-  std::sort(names.begin(), names.end());
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    names.push_back(it->path().filename().string());
   return names;
 }
 
@@ -311,15 +275,19 @@ std::vector<std::string> manifest_entries(const fs::path& dir) {
 }
 
 std::optional<std::string> first_foreign_entry(const fs::path& dir) {
-  return first_foreign_entry_except(dir, {});
+  const std::vector<std::string> listed = manifest_entries(dir);
+  for (const auto& [relative, status] : entries_under(dir))
+    if (!(fs::is_regular_file(status) || fs::is_directory(status)) ||
+        std::find(listed.begin(), listed.end(), relative) == listed.end())
+      return relative;
+  return std::nullopt;
 }
 
 std::string manifest_text(const fs::path& dir) {
   std::string text = std::string(k_manifest_name) + "\n";
-  walk(dir, "", {k_manifest_name}, [&](const std::string& relative, const fs::file_status&) {
-    if (relative.find('\n') == std::string::npos) text += relative + "\n";  // unlistable
-    return true;
-  });
+  for (const auto& entry : entries_under(dir))  // a name with a newline cannot be listed
+    if (entry.first != k_manifest_name && entry.first.find('\n') == std::string::npos)
+      text += entry.first + "\n";
   return text;
 }
 
@@ -337,7 +305,7 @@ std::string staging_name(const std::string& name, const std::string& suffix) {
 
 void remove_stale_staging(const fs::path& dir) noexcept {
   try {
-    for (const std::string& name : names_in(dir, {})) {
+    for (const std::string& name : names_in(dir)) {
       if (!is_staging_name(name)) continue;
       const int lock = lock_abandoned_staging(dir / name);
       if (lock < 0) continue;
