@@ -325,8 +325,13 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
   refuse_unless_ours(nearest, out_, true);
   struct stat target_info {};
   const bool exists = ::stat(target_.c_str(), &target_info) == 0;
+  // A mount point cannot be swapped: an empty one is written into (staged inside it).
+  struct stat parent_info {};
+  in_place_ = exists && ::stat(parent.c_str(), &parent_info) == 0 &&
+              parent_info.st_dev != target_info.st_dev;
   if (exists) {
     refuse_unless_ours(target_, out_, false);
+    if (in_place_) remove_stale_staging(target_);
     if (const std::optional<std::string> foreign = first_foreign_entry(target_)) {
       const bool listed = fs::exists(fs::symlink_status(target_ / k_manifest_name, ec));
       throw UsageError("--out " + quoted(out_) + " holds '" + *foreign + "', which no run wrote (" +
@@ -335,10 +340,14 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
                        "); not replaced, choose a new or empty folder");
     }
   }
+  if (in_place_ && !fs::is_empty(target_, ec))
+    throw UsageError("--out " + quoted(out_) + " is a mount point holding a run, which cannot be "
+                     "swapped whole; empty it or give a folder inside it");
   remove_stale_staging(parent);
   if (!exists) created_parents_ = create_parents(target_, out_);
   try {
-    std::tie(staging_, lock_fd_) = make_staging(parent, target_.filename().string(), out_);
+    std::tie(staging_, lock_fd_) =
+        make_staging(in_place_ ? target_ : parent, target_.filename().string(), out_);
   } catch (const IoError&) {
     for (const fs::path& created : created_parents_) ::rmdir(created.c_str());
     throw;
@@ -359,6 +368,32 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
 }
 
 RunFolder::~RunFolder() { discard(); }
+
+// Renames the staging folder's entries into the empty mount point --out, the manifest last;
+// on failure renames back what it moved, or says where both parts are.
+void RunFolder::commit_into_mount_point() {
+  std::vector<std::string> names = names_in(staging_), moved;
+  if (names_in(target_) != std::vector<std::string>{staging_.filename().string()})
+    throw IoError("cannot write output folder " + quoted(out_) + ": something appeared in it "
+                  "during the run; nothing written");
+  std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n != k_manifest_name; });
+  for (const std::string& name : names) {
+    if (::rename((staging_ / name).c_str(), (target_ / name).c_str()) == 0) {
+      moved.push_back(name);
+      continue;
+    }
+    const int reason = errno;
+    std::size_t back = 0;
+    for (const std::string& m : moved) back += ::rename((target_ / m).c_str(), (staging_ / m).c_str()) == 0;
+    std::string where = "; nothing written";
+    if (back != moved.size()) {
+      where = "; part of this run is in it, the rest in " + quoted(staging_);
+      staging_.clear();  // kept, never discarded
+    }
+    throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason) + where);
+  }
+  ::rmdir(staging_.c_str());
+}
 
 void RunFolder::discard() noexcept {
   if (!committed_) {
@@ -386,7 +421,9 @@ void RunFolder::commit() {
     };
     ::chmod(staging_.c_str(), mode_);
     struct stat info {};
-    if (::stat(target_.c_str(), &info) != 0) {
+    if (in_place_) {
+      commit_into_mount_point();
+    } else if (::stat(target_.c_str(), &info) != 0) {
       if (::rename(staging_.c_str(), target_.c_str()) != 0) fail(errno);
     } else {
       // Something added to --out during the run would be lost with the previous run.

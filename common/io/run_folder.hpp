@@ -43,8 +43,9 @@ class RunFolder {
 
   /// --out as given, for messages.
   const std::filesystem::path& out() const { return out_; }
-  /// Where this run writes: `.<name>.staging-<16 random hex digits>` beside --out, mode 0700,
-  /// marked live by the lock this run holds on its manifest.
+  /// Where this run writes: `.<name>.staging-<16 random hex digits>` beside --out (inside an
+  /// empty mount point given as --out, which cannot be swapped), mode 0700, marked live by the
+  /// lock this run holds on its manifest.
   const std::filesystem::path& staging() const { return staging_; }
   /// Whether commit() has swapped this run in.
   bool committed() const { return committed_; }
@@ -65,6 +66,8 @@ class RunFolder {
   void discard() noexcept;
 
  private:
+  void commit_into_mount_point();
+
   std::filesystem::path out_;      // as given
   std::filesystem::path target_;   // the folder that is replaced: --out, links followed
   std::filesystem::path staging_;
@@ -72,6 +75,7 @@ class RunFolder {
   std::vector<std::filesystem::path> created_parents_;  // innermost first
   mode_t mode_ = 0755;  // the mode --out gets
   bool committed_ = false;
+  bool in_place_ = false;  // --out is an empty mount point: staged inside it, moved in entry by entry
 };
 
 /// The first entry under `dir` (a relative path, folders with a trailing '/', in sorted order)

@@ -317,6 +317,34 @@ def case_scripts_refuse_unowned(r, tmp):
     return problems
 
 
+def case_empty_mount_point(r, chapters, tmp):
+    """An empty mount point as --out (a tmpfs of mode 0755): the run is written into it whole
+    (it can never be swapped: it always failed); a second run is refused (exit 2), the first
+    kept. None when a tmpfs cannot be mounted here."""
+    parent = r.fresh(tmp / "mount_point")
+    out = parent / "mnt"
+    out.mkdir()
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4m,mode=0755", "tmpfs", str(out)],
+                      capture_output=True).returncode != 0:
+        return None
+    try:
+        code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)], cwd=parent)
+        problems = r.exit_problems(code, 0, err)
+        if code == 0:
+            problems += whole_run_problems(r, out)
+            before = r.snapshot(out)
+            code, _, err, seconds = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)],
+                                          cwd=parent)
+            problems += [f"second run: {p}" for p in refused_problems(r, code, err, seconds,
+                                                                     ["mount point"], [out])]
+            if r.snapshot(out) != before:
+                problems.append("the second run changed the first")
+        return problems + ([f"left beside it: {os.listdir(parent)}"]
+                           if os.listdir(parent) != ["mnt"] else [])
+    finally:
+        subprocess.run(["umount", str(out)], capture_output=True)
+
+
 def group_out_manifest(r, chapters, tmp, checks):
     if CH01 not in chapters:
         checks.case("out-manifest", [f"{CH01} not built"])
@@ -354,6 +382,11 @@ def group_out_manifest(r, chapters, tmp, checks):
     else:
         checks.case(shared + "root's shared folder, given to an unprivileged user",
                     unprivileged)
+    mounted = case_empty_mount_point(r, chapters, tmp)
+    if mounted is None:
+        print("SKIP: a tmpfs cannot be mounted here (an empty mount point as --out)")
+    else:
+        checks.case(shared + "an empty mount point is written into, then kept", mounted)
     overlay = case_overlayfs(r, chapters, tmp)
     if overlay is None:
         print("SKIP: overlayfs cannot be mounted here (the EXDEV case)")
