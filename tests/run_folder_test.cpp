@@ -277,6 +277,21 @@ TEST(RunFolderTest, AFolderOthersCanWriteIsRefusedAndKept) {
   EXPECT_EQ(read_text(open_parent / "out" / "a.txt"), "a");
 }
 
+// Under umask 0 a new --out and its new parents were 0777, a folder the next run refuses.
+TEST(RunFolderTest, UnderUmaskZeroNewFoldersAreNotWritableByOthers) {
+  const fs::path dir = fresh_dir("umask");
+  const mode_t previous = ::umask(0);
+  finished_run(dir / "new" / "out", "a.txt", "a");
+  finished_run(dir / "new" / "out", "b.txt", "b");  // accepted: its own folder
+  ::umask(previous);
+  for (const fs::path& folder : {dir / "new", dir / "new" / "out"}) {
+    struct stat info {};
+    ASSERT_EQ(::stat(folder.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & S_IWOTH, 0u) << folder;
+  }
+  EXPECT_EQ(read_text(dir / "new" / "out" / "b.txt"), "b");
+}
+
 // Issue 43: root wrote into another user's folders (a 3777 drop box, a new --out in their
 // 0755 home), where their owner could swap the staging folder for links. Root only (it needs
 // a folder of another owner); skipped otherwise.

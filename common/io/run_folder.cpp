@@ -209,7 +209,7 @@ std::vector<fs::path> create_parents(const fs::path& dir, const fs::path& out) {
   }
   std::vector<fs::path> created;
   for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
-    if (::mkdir(p->c_str(), 0777) != 0 && errno != EEXIST) {
+    if (::mkdir(p->c_str(), 0775) != 0 && errno != EEXIST) {  // never writable by others
       const int reason = errno;
       for (const fs::path& c : created) ::rmdir(c.c_str());
       throw IoError("cannot create output folder " + quoted(out) + ": " + reason_of(reason));
@@ -355,7 +355,8 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
   struct stat info {};
   ::stat(staging_.c_str(), &info);
   if (!exists) {
-    mode_ = (0777 & ~current_umask()) | (info.st_mode & S_ISGID);  // a setgid parent's bit
+    // Never writable by others (the next run would refuse it); a setgid parent's bit kept.
+    mode_ = (0775 & ~current_umask()) | (info.st_mode & S_ISGID);
   } else {
     mode_ = target_info.st_mode & 07777;
     if (info.st_gid != target_info.st_gid &&
