@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -170,13 +172,14 @@ TEST(RunFolderTest, HomeIsRefusedWhateverItHolds) {
 }
 
 TEST(RunFolderTest, StagingNamesFitTheLimitAndKeepWholeCharacters) {
-  EXPECT_EQ(mcrt::staging_name("out", 42), ".out.staging-42");
+  const std::string suffix = "0123456789abcdef";
+  EXPECT_EQ(mcrt::staging_name("out", suffix), ".out.staging-0123456789abcdef");
   const std::string longest(NAME_MAX, 'a');
-  EXPECT_LE(mcrt::staging_name(longest, 4194304).size() + 9, std::size_t{NAME_MAX});  // -previous
+  EXPECT_LE(mcrt::staging_name(longest, suffix).size() + 9, std::size_t{NAME_MAX});  // -previous
   std::string accents;
   while (accents.size() < NAME_MAX - 1) accents += "\xc3\xa9";  // é, two bytes each
-  const std::string name = mcrt::staging_name(accents, 123456);
-  const std::size_t kept = name.size() - std::string(".staging-123456").size() - 1;
+  const std::string name = mcrt::staging_name(accents, suffix);
+  const std::size_t kept = name.size() - std::string(".staging-").size() - suffix.size() - 1;
   EXPECT_EQ(kept % 2, 0u) << "a character cut in two";
 }
 
@@ -191,74 +194,120 @@ TEST(RunFolderTest, AFolderNameOfTheLongestLengthWorks) {
   EXPECT_EQ(entries(dir), 1);
 }
 
-// A pid no process has: a child that has exited and been waited for.
-pid_t dead_pid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);
-  return child;
+// A staging folder as a run leaves it: a manifest listing itself and a half-written image.
+fs::path staging_like(const fs::path& dir, const std::string& name) {
+  fs::create_directory(dir / name);
+  write_text(dir / name / mcrt::k_manifest_name, std::string(mcrt::k_manifest_name) + "\n");
+  write_text(dir / name / "image.pfm", "half");
+  return dir / name;
 }
 
-// Issue 34: staging folders of runs killed by SIGKILL piled up.
-TEST(RunFolderTest, AKilledRunsStagingFolderIsRemovedAndNothingElse) {
+// Issue 43: staleness was judged by the pid in the name, so a live run of another PID
+// namespace was taken for dead, and a user's `.draft.staging-999999` was deleted.
+TEST(RunFolderTest, OnlyAnUnlockedStagingFolderOfOursIsRemoved) {
   const fs::path dir = fresh_dir("stale");
-  const pid_t gone = dead_pid();
-  const fs::path killed = dir / mcrt::staging_name("out", gone);
-  fs::create_directory(killed);
-  write_text(killed / mcrt::k_manifest_name, std::string(mcrt::k_manifest_name) + "\n");
-  write_text(killed / "image.pfm", "half");
-  const fs::path empty = dir / (mcrt::staging_name("other", gone) + "-previous");
-  fs::create_directory(empty);
-  // Named like one, but without a manifest: not a run's, kept.
-  const fs::path look_alike = dir / mcrt::staging_name("mine", gone);
-  fs::create_directory(look_alike);
-  write_text(look_alike / "thesis.tex", "precious");
-  // A living process's: kept.
-  const fs::path living = dir / mcrt::staging_name("out", ::getppid());
-  fs::create_directory(living);
+  const fs::path killed = staging_like(dir, mcrt::staging_name("out", "00000000deadbeef"));
+  const fs::path set_aside = staging_like(dir, mcrt::staging_name("o", "00000000deadbeef") + "-previous");
+  // A live run's, whatever its pid says: its manifest is locked (flock conflicts between two
+  // opens even in one process, as it does between namespaces).
+  const fs::path living = staging_like(dir, mcrt::staging_name("out", "0000000000000001"));
+  const int lock = ::open((living / mcrt::k_manifest_name).c_str(), O_RDONLY);
+  ASSERT_EQ(::flock(lock, LOCK_EX), 0);
+  // Names the user chose, a run's manifest copied in or not: kept.
+  const fs::path draft = staging_like(dir, ".draft.staging-999999");
+  fs::create_directory(dir / ".notes.staging-999998");
+  const fs::path no_manifest = dir / mcrt::staging_name("mine", "00000000deadbeef");
+  fs::create_directory(no_manifest);
+  write_text(no_manifest / "thesis.tex", "precious");
   { mcrt::RunFolder folder(dir / "out"); }
   EXPECT_FALSE(fs::exists(killed));
-  EXPECT_FALSE(fs::exists(empty));
-  EXPECT_EQ(read_text(look_alike / "thesis.tex"), "precious");
-  EXPECT_TRUE(fs::exists(living));
+  EXPECT_FALSE(fs::exists(set_aside));
+  EXPECT_TRUE(fs::exists(living / "image.pfm"));
+  EXPECT_TRUE(fs::exists(draft / "image.pfm"));
+  EXPECT_TRUE(fs::exists(dir / ".notes.staging-999998"));
+  EXPECT_EQ(read_text(no_manifest / "thesis.tex"), "precious");
+  ::close(lock);
 }
 
-// An existing folder keeps its mode (a shared folder, setgid and sticky) when replaced.
+// The staging folder is marked live from its first moment: another run never removes it.
+TEST(RunFolderTest, ALiveRunsStagingFolderIsKeptByAnother) {
+  const fs::path dir = fresh_dir("live");
+  mcrt::RunFolder first(dir / "a");
+  write_text(first.staging() / "image.pfm", "being written");
+  { mcrt::RunFolder second(dir / "b"); }
+  EXPECT_EQ(read_text(first.staging() / "image.pfm"), "being written");
+  first.commit();
+  EXPECT_EQ(read_text(dir / "a" / "image.pfm"), "being written");
+}
+
+// An existing folder keeps its mode (setgid) when replaced.
 TEST(RunFolderTest, AnExistingFolderKeepsItsMode) {
   const fs::path dir = fresh_dir("mode");
   fs::create_directory(dir / "out");
-  ASSERT_EQ(::chmod((dir / "out").c_str(), 03777), 0);
+  ASSERT_EQ(::chmod((dir / "out").c_str(), 02750), 0);
   finished_run(dir / "out", "a.txt", "a");
   finished_run(dir / "out", "b.txt", "b");
   struct stat info {};
   ASSERT_EQ(::stat((dir / "out").c_str(), &info), 0);
-  EXPECT_EQ(info.st_mode & 07777, 03777u);
+  EXPECT_EQ(info.st_mode & 07777, 02750u);
   EXPECT_EQ(read_text(dir / "out" / "b.txt"), "b");
   EXPECT_EQ(entries(dir / "out"), 3);  // summary.json, b.txt and the manifest
 }
 
-// Issue 34: an empty shared folder of another user, given as --out to root, was replaced by a
-// root-owned 0755 folder. Root only (it needs a folder of another owner); skipped otherwise.
-TEST(RunFolderTest, AnotherUsersFolderIsWrittenIntoAndKeepsItsOwner) {
+// Issue 43: a folder others can write (a shared 3777 one) is refused before anything is
+// made, as git refuses a repository another user owns; it used to be written into.
+TEST(RunFolderTest, AFolderOthersCanWriteIsRefusedAndKept) {
+  const fs::path dir = fresh_dir("shared");
+  finished_run(dir / "shared", "a.txt", "a");
+  ASSERT_EQ(::chmod((dir / "shared").c_str(), 03777), 0);
+  const std::string refusal = message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "shared"); });
+  EXPECT_NE(refusal.find("--out"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("other users"), std::string::npos) << refusal;
+  EXPECT_EQ(read_text(dir / "shared" / "a.txt"), "a");
+  EXPECT_EQ(entries(dir), 1);
+  // Nor may a new --out be made in such a folder, unless its sticky bit keeps others from
+  // renaming what the run makes (a root-owned /tmp).
+  const fs::path open_parent = dir / "open";
+  fs::create_directory(open_parent);
+  ASSERT_EQ(::chmod(open_parent.c_str(), 0777), 0);
+  EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(open_parent / "out"); }), "");
+  EXPECT_EQ(entries(open_parent), 0);
+  ASSERT_EQ(::chmod(open_parent.c_str(), 01777), 0);
+  finished_run(open_parent / "out", "a.txt", "a");
+  EXPECT_EQ(read_text(open_parent / "out" / "a.txt"), "a");
+}
+
+// Under umask 0 a new --out and its new parents were 0777, a folder the next run refuses.
+TEST(RunFolderTest, UnderUmaskZeroNewFoldersAreNotWritableByOthers) {
+  const fs::path dir = fresh_dir("umask");
+  const mode_t previous = ::umask(0);
+  finished_run(dir / "new" / "out", "a.txt", "a");
+  finished_run(dir / "new" / "out", "b.txt", "b");  // accepted: its own folder
+  ::umask(previous);
+  for (const fs::path& folder : {dir / "new", dir / "new" / "out"}) {
+    struct stat info {};
+    ASSERT_EQ(::stat(folder.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & S_IWOTH, 0u) << folder;
+  }
+  EXPECT_EQ(read_text(dir / "new" / "out" / "b.txt"), "b");
+}
+
+// Issue 43: root wrote into another user's folders (a 3777 drop box, a new --out in their
+// 0755 home), where their owner could swap the staging folder for links. Root only (it needs
+// a folder of another owner); skipped otherwise.
+TEST(RunFolderTest, AnotherUsersFolderIsRefusedAndKept) {
   if (::geteuid() != 0) GTEST_SKIP() << "needs root to give a folder another owner";
   const fs::path dir = fresh_dir("owner");
-  fs::create_directory(dir / "shared");
-  constexpr uid_t k_other = 65534;  // nobody
-  ASSERT_EQ(::chown((dir / "shared").c_str(), k_other, k_other), 0);
-  ASSERT_EQ(::chmod((dir / "shared").c_str(), 03777), 0);
-  finished_run(dir / "shared", "a.txt", "a");
-  finished_run(dir / "shared", "b.txt", "b");  // a second run replaces the first inside it
-  {
-    mcrt::RunFolder failed(dir / "shared");  // and a failed one leaves it as it was
-    write_text(failed.staging() / "c.txt", "c");
-  }
-  struct stat info {};
-  ASSERT_EQ(::stat((dir / "shared").c_str(), &info), 0);
-  EXPECT_EQ(info.st_uid, k_other);
-  EXPECT_EQ(info.st_mode & 07777, 03777u);
-  EXPECT_EQ(read_text(dir / "shared" / "b.txt"), "b");
-  EXPECT_FALSE(fs::exists(dir / "shared" / "a.txt"));
-  EXPECT_EQ(entries(dir / "shared"), 3);  // summary.json, b.txt, the manifest: no staging left
+  constexpr uid_t k_other = 65534;  // a uid that is not root's; no process of it is started
+  fs::create_directory(dir / "dropbox");
+  ASSERT_EQ(::chown((dir / "dropbox").c_str(), k_other, k_other), 0);
+  ASSERT_EQ(::chmod((dir / "dropbox").c_str(), 0755), 0);
+  const std::string refusal = message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox"); });
+  EXPECT_NE(refusal.find("another user"), std::string::npos) << refusal;
+  EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox" / "out"); }), "");
+  EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox" / "a" / "b"); }),
+            "");
+  EXPECT_EQ(entries(dir / "dropbox"), 0);
   EXPECT_EQ(entries(dir), 1);
 }
 

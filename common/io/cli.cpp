@@ -271,35 +271,14 @@ int checked_stdout(const std::string& program, int exit_code) {
 }
 
 // Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates, at most U+10FFFF):
-// every value ends up in summary.json, which holds text only.
+// every value ends up in summary.json, so what the JSON library writes is the test.
 bool is_utf8(std::string_view text) {
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-    const unsigned char lead = byte(i);
-    std::size_t length = 0;
-    unsigned char low = 0x80, high = 0xBF;  // the range of the second byte
-    if (lead < 0x80) length = 1;
-    else if (lead >= 0xC2 && lead <= 0xDF) length = 2;
-    else if (lead >= 0xE0 && lead <= 0xEF) {
-      length = 3;
-      if (lead == 0xE0) low = 0xA0;   // overlong
-      if (lead == 0xED) high = 0x9F;  // surrogates
-    } else if (lead >= 0xF0 && lead <= 0xF4) {
-      length = 4;
-      if (lead == 0xF0) low = 0x90;   // overlong
-      if (lead == 0xF4) high = 0x8F;  // above U+10FFFF
-    } else {
-      return false;
-    }
-    if (i + length > text.size()) return false;
-    for (std::size_t k = 1; k < length; ++k) {
-      const unsigned char c = byte(i + k);
-      if (k == 1 ? (c < low || c > high) : (c < 0x80 || c > 0xBF)) return false;
-    }
-    i += length;
+  try {
+    (void)nlohmann::json(std::string(text)).dump();
+    return true;
+  } catch (const nlohmann::json::type_error&) {  // 316: invalid UTF-8 byte
+    return false;
   }
-  return true;
 }
 
 // What is wrong with the values on the command line before CLI11 reads them: an empty value,
@@ -337,11 +316,7 @@ int parse_and_run(CLI::App& app, const std::string& program, int argc, char** ar
   }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << program << ": error: " << e.what() << " (see --help)\n";
@@ -403,21 +378,13 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
     try {
       body();
       folder->commit();
-    } catch (const UsageError& e) {
-      const std::string message = folder->with_out_name(e.what());
+    } catch (const std::exception& e) {  // in the project's words, naming --out
+      const auto* file = dynamic_cast<const std::filesystem::filesystem_error*>(&e);
+      const auto* system = dynamic_cast<const std::system_error*>(&e);
+      const std::string message = folder->with_out_name(
+          file ? filesystem_message(*file) : system ? stdout_failure(*system).value_or(e.what()) : e.what());
       forget();
-      throw UsageError(message);
-    } catch (const std::filesystem::filesystem_error& e) {
-      const std::string message = folder->with_out_name(filesystem_message(e));
-      forget();
-      throw IoError(message);
-    } catch (const std::system_error& e) {
-      const std::string message = folder->with_out_name(stdout_failure(e).value_or(e.what()));
-      forget();
-      throw IoError(message);
-    } catch (const std::exception& e) {
-      const std::string message = folder->with_out_name(e.what());
-      forget();
+      if (dynamic_cast<const UsageError*>(&e)) throw UsageError(message);
       throw IoError(message);
     }
     forget();

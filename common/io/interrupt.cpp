@@ -90,7 +90,7 @@ void on_broken_pipe(int) {}
     ::_exit(128 + signal);
   }
   for (const pid_t child : state.children) {
-    ::kill(child, SIGKILL);
+    ::kill(-child, SIGKILL);  // its whole group: a wrapper's children too
     ::waitpid(child, nullptr, 0);
   }
   remember_if_written(state);
@@ -119,6 +119,8 @@ void watch_interrupts(const std::string& program) {
     sigemptyset(&broken_pipe.sa_mask);
     broken_pipe.sa_flags = SA_RESTART;
     ::sigaction(SIGPIPE, &broken_pipe, nullptr);
+    // A file over `ulimit -f` then fails with EFBIG, reported as any failed write (exit 1).
+    ::signal(SIGXFSZ, SIG_IGN);
     start_detached_or_exit(program, [program] { wait_for_interrupt(program); });
   });
 }

@@ -1,8 +1,8 @@
 #include "io/numbers.hpp"
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <regex>
 #include <system_error>
 
 #include <CLI/Error.hpp>
@@ -12,40 +12,17 @@ namespace mcrt {
 
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+// A whole number: decimal digits only. A real one in decimal notation: [sign] digits
+// [. digits] [e [sign] digits], at least one digit before or after the point.
+const std::regex k_whole(R"(\d+)");
+const std::regex k_decimal(R"([+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?)");
 
 bool all_digits(std::string_view text) {
-  return !text.empty() && std::all_of(text.begin(), text.end(), is_digit);
+  return std::regex_match(text.begin(), text.end(), k_whole);
 }
 
-// The longest run of digits at the start of `text`.
-std::size_t digits_at(std::string_view text) {
-  std::size_t n = 0;
-  while (n < text.size() && is_digit(text[n])) ++n;
-  return n;
-}
-
-// Decimal notation: [sign] digits [. digits] [e [sign] digits], at least one mantissa digit.
 bool is_decimal_notation(std::string_view text) {
-  std::size_t i = 0;
-  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-  std::size_t mantissa = digits_at(text.substr(i));
-  i += mantissa;
-  if (i < text.size() && text[i] == '.') {
-    ++i;
-    const std::size_t fraction = digits_at(text.substr(i));
-    mantissa += fraction;
-    i += fraction;
-  }
-  if (mantissa == 0) return false;
-  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-    const std::size_t exponent = digits_at(text.substr(i));
-    if (exponent == 0) return false;
-    i += exponent;
-  }
-  return i == text.size();
+  return std::regex_match(text.begin(), text.end(), k_decimal);
 }
 
 }  // namespace

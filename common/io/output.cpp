@@ -47,24 +47,13 @@ void commit_file(const fs::path& from, const fs::path& to) {
 
 namespace {
 
-// Writes all of `bytes` to a new file at `path` and closes it; the system's reason otherwise.
-// write() may write less than asked (a signal, a nearly full disk): it is called until done.
+// Writes all of `bytes` to a new file at `path` (never one planted under this name) and
+// closes it; the system's reason otherwise.
 std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-                        k_temporary_mode);  // a new file, never one planted under this name
+                        k_temporary_mode);
   if (fd < 0) return {errno, std::generic_category()};
-  std::error_code failure;
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      failure = n < 0 ? std::error_code(errno, std::generic_category())
-                      : std::make_error_code(std::errc::no_space_on_device);
-      break;
-    }
-    written += static_cast<std::size_t>(n);
-  }
+  std::error_code failure = write_all(fd, bytes);
   if (::close(fd) != 0 && !failure) failure = {errno, std::generic_category()};
   return failure;
 }

@@ -195,7 +195,12 @@ GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& argu
   sigemptyset(&none);
   ::posix_spawnattr_setsigmask(&attributes, &none);  // main blocks SIGINT and SIGTERM
   ::posix_spawnattr_setpgroup(&attributes, 0);       // its own group: a timeout kills it all
-  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGXFSZ);  // ignored by the run (io/interrupt.cpp), not by gnuplot
+  ::posix_spawnattr_setsigdefault(&attributes, &defaults);
+  ::posix_spawnattr_setflags(&attributes,
+                             POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
   std::vector<std::string> words = {"gnuplot", "-d"};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;

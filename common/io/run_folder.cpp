@@ -3,20 +3,21 @@
 #include <algorithm>
 #include <cerrno>
 #include <climits>
-#include <csignal>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
-#include <set>
 #include <system_error>
+#include <tuple>
+#include <utility>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <pwd.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#include "io/exclusive_file.hpp"
 #include "io/interrupt.hpp"
 #include "io/output.hpp"
 #include "io/usage_error.hpp"
@@ -31,8 +32,6 @@ namespace {
 constexpr off_t k_max_manifest_bytes = 1 << 20;
 constexpr const char* k_staging_infix = ".staging-";
 constexpr const char* k_previous_suffix = "-previous";
-// The name of a staging folder made inside --out (beside its files) rather than beside it.
-constexpr const char* k_inside_name = "mcrt";
 
 // Appended piece by piece: "'" + a temporary trips a false -Wrestrict in g++ 12.
 std::string quoted(const fs::path& path) {
@@ -97,63 +96,33 @@ fs::path checked_target(const fs::path& out) {
   return target;
 }
 
-// Every entry under `dir`, relative, folders with a trailing '/', in sorted order; entries in
-// `skip` (names directly in `dir`) are left out. `visit` returns false to stop.
-bool walk(const fs::path& dir, const std::string& prefix, const std::set<std::string>& skip,
-          const std::function<bool(const std::string&, const fs::file_status&)>& visit) {
+// Every entry under `dir` (links are entries, never followed), relative, folders with a
+// trailing '/', in sorted order.
+std::vector<std::pair<std::string, fs::file_status>> entries_under(const fs::path& dir) {
+  std::vector<std::pair<std::string, fs::file_status>> entries;
   std::error_code ec;
-  std::vector<fs::directory_entry> entries;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    entries.push_back(*it);
-  std::sort(entries.begin(), entries.end());
-  for (const fs::directory_entry& entry : entries) {
-    const std::string name = entry.path().filename().string();
-    if (prefix.empty() && skip.count(name)) continue;
-    const fs::file_status status = entry.symlink_status(ec);  // a link is an entry, not followed
-    const bool folder = fs::is_directory(status);
-    const std::string relative = prefix + name + (folder ? "/" : "");
-    if (!visit(relative, status)) return false;
-    if (folder && !walk(entry.path(), relative, {}, visit)) return false;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::file_status status = it->symlink_status(ec);
+    const std::string slash = fs::is_directory(status) ? "/" : "";
+    entries.emplace_back(it->path().lexically_relative(dir).string() + slash, status);
   }
-  return true;
+  std::sort(entries.begin(), entries.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  return entries;
 }
 
 // The manifest's text, if `dir` holds a regular one: opened without following a link and
-// without blocking (a FIFO in its place is never read), its type checked before reading.
+// without blocking (a FIFO in its place is never read), its type and size checked first.
 std::optional<std::string> read_manifest(const fs::path& dir) {
-  const fs::path path = dir / k_manifest_name;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  const int fd = ::open((dir / k_manifest_name).c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return std::nullopt;
   struct stat info {};
   std::optional<std::string> text;
   if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size <= k_max_manifest_bytes) {
-    text.emplace();
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) {
-        text.reset();
-        break;
-      }
-      text->append(buffer, static_cast<std::size_t>(n));
-    }
+    text.emplace(static_cast<std::size_t>(info.st_size), '\0');
+    text->resize(read_all(fd, *text));
   }
   ::close(fd);
   return text;
-}
-
-std::optional<std::string> first_foreign_entry_except(const fs::path& dir,
-                                                      const std::set<std::string>& skip) {
-  std::set<std::string> listed;
-  for (const std::string& entry : manifest_entries(dir)) listed.insert(entry);
-  std::optional<std::string> foreign;
-  walk(dir, "", skip, [&](const std::string& relative, const fs::file_status& status) {
-    const bool ours = (fs::is_regular_file(status) || fs::is_directory(status)) &&
-                      listed.count(relative) > 0;
-    if (!ours) foreign = relative;
-    return ours;
-  });
-  return foreign;
 }
 
 // Removes `dir` and everything in it; a file created meanwhile (a worker still writing) makes
@@ -166,34 +135,59 @@ void remove_tree(const fs::path& dir) noexcept {
   }
 }
 
-bool process_alive(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM; }
-
-// The pid in a staging folder's name (`.<name>.staging-<pid>[-previous]`), or 0.
-long staging_pid(const std::string& name) {
-  if (name.size() < 2 || name[0] != '.') return 0;
+// A staging folder's name: `.<name>.staging-<16 hex digits>`, with "-previous" while it holds
+// the run a commit set aside. A name the user chose (`.draft.staging-999999`) does not match.
+bool is_staging_name(const std::string& name) {
   const std::size_t at = name.rfind(k_staging_infix);
-  if (at == std::string::npos || at == 0) return 0;
-  std::string digits = name.substr(at + std::char_traits<char>::length(k_staging_infix));
-  const std::string previous = k_previous_suffix;
-  if (digits.size() > previous.size() &&
-      digits.compare(digits.size() - previous.size(), previous.size(), previous) == 0)
-    digits.resize(digits.size() - previous.size());
-  if (digits.empty() || digits.size() > 9 || digits[0] == '0' ||
-      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
-    return 0;
-  return std::stol(digits);
+  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at == 0) return false;
+  std::string suffix = name.substr(at + std::char_traits<char>::length(k_staging_infix));
+  if (suffix.ends_with(k_previous_suffix))
+    suffix.resize(suffix.size() - std::char_traits<char>::length(k_previous_suffix));
+  return suffix.size() == 16 && std::all_of(suffix.begin(), suffix.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
 }
 
-// A staging folder this user's runs made (a folder, not a link, of this user, holding a
-// manifest or nothing): only those are ever removed by name.
-bool is_our_staging(const fs::path& path) {
+// Opens the manifest of the staging folder `dir` (a regular file of this user in a folder of
+// this user, never a link or a FIFO) and takes its lock without waiting: -1 when it is not a
+// run's or its run is alive (it holds the lock for its whole life, in any PID namespace).
+int lock_abandoned_staging(const fs::path& dir) {
   struct stat info {};
-  if (::lstat(path.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || info.st_uid != ::geteuid())
-    return false;
-  struct stat manifest {};
-  if (::lstat((path / k_manifest_name).c_str(), &manifest) == 0) return S_ISREG(manifest.st_mode);
-  std::error_code ec;
-  return fs::is_empty(path, ec) && !ec;
+  if (::lstat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || info.st_uid != ::geteuid())
+    return -1;
+  const int fd = ::open((dir / k_manifest_name).c_str(),
+                        O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return -1;
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || info.st_uid != ::geteuid() ||
+      ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// Why a folder a run writes in is not one it can own ("" when it can): owned by another user
+// (root may own a parent), or writable by a user other than this one and root (the sticky bit
+// of a parent such as /tmp keeps others from renaming what the run makes in it).
+std::string why_not_ours(const struct stat& info, bool parent) {
+  const uid_t me = ::geteuid();
+  if (info.st_uid != me && !(parent && info.st_uid == 0)) return "is owned by another user";
+  const bool sticky = parent && (info.st_mode & S_ISVTX);
+  const bool group_writable = (info.st_mode & S_IWGRP) && info.st_gid != ::getegid();
+  if (!sticky && ((info.st_mode & S_IWOTH) || group_writable))
+    return "can be written by other users";
+  return "";
+}
+
+// UsageError naming --out when the folder at `path` (--out itself, or the folder it is made
+// in) is not one this run can own, as git refuses a repository another user owns.
+void refuse_unless_ours(const fs::path& path, const fs::path& out, bool parent) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return;  // a missing folder is made by this run
+  const std::string why = why_not_ours(info, parent);
+  if (!why.empty())
+    throw UsageError("--out " + quoted(out) + ": " + (parent ? "the folder it is in " : "it ") +
+                     why + "; a run only writes in folders of your own, so choose one");
 }
 
 // The process's umask, read without changing it (umask() would, for every thread).
@@ -215,7 +209,7 @@ std::vector<fs::path> create_parents(const fs::path& dir, const fs::path& out) {
   }
   std::vector<fs::path> created;
   for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
-    if (::mkdir(p->c_str(), 0777) != 0 && errno != EEXIST) {
+    if (::mkdir(p->c_str(), 0775) != 0 && errno != EEXIST) {  // never writable by others
       const int reason = errno;
       for (const fs::path& c : created) ::rmdir(c.c_str());
       throw IoError("cannot create output folder " + quoted(out) + ": " + reason_of(reason));
@@ -225,35 +219,43 @@ std::vector<fs::path> create_parents(const fs::path& dir, const fs::path& out) {
   return created;
 }
 
-// Makes the staging folder `dir`, readable by this user only until the commit (nothing of
-// another user's can be planted in it), marked as a run's by a manifest listing itself.
-// Returns 0 or errno.
-int make_staging(const fs::path& dir) {
-  std::error_code ec;
-  if (fs::exists(fs::symlink_status(dir, ec))) {
-    if (!is_our_staging(dir)) return EEXIST;
-    remove_tree(dir);  // an earlier process that had this pid
-  }
-  if (::mkdir(dir.c_str(), 0700) != 0) return errno;
-  try {
-    write_file_atomic(dir / k_manifest_name, std::string(k_manifest_name) + "\n");
-  } catch (const IoError&) {
-    const int reason = errno ? errno : EIO;
+// Makes a staging folder in `parent`, readable by this user only until the commit (nothing of
+// another user's can be planted in it), with a manifest listing itself whose lock this run
+// holds until the end: the folder's mark of a live run. Returns the folder and the locked
+// manifest's descriptor; throws IoError naming --out.
+std::pair<fs::path, int> make_staging(const fs::path& parent, const std::string& name,
+                                      const fs::path& out) {
+  int reason = EEXIST;
+  for (int attempt = 0; attempt < 8 && reason == EEXIST; ++attempt) {
+    const fs::path dir = parent / staging_name(name, random_suffix());
+    if (::mkdir(dir.c_str(), 0700) != 0) {
+      reason = errno;
+      continue;
+    }
+    const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    // Locked before it gets the manifest's name: a cleaner never sees it unlocked.
+    NewFile manifest = dir_fd >= 0 ? create_temporary(dir_fd, k_manifest_name) : NewFile{};
+    reason = dir_fd < 0 ? errno : manifest.error.value();
+    if (manifest.fd >= 0) {
+      const std::string text = std::string(k_manifest_name) + "\n";
+      if (const std::error_code error = write_all(manifest.fd, text)) reason = error.value();
+      else if (::renameat(dir_fd, manifest.name.c_str(), dir_fd, k_manifest_name) != 0) reason = errno;
+    }
+    if (dir_fd >= 0) ::close(dir_fd);
+    if (reason == 0) return {dir, manifest.fd};
+    if (manifest.fd >= 0) ::close(manifest.fd);
     remove_tree(dir);
-    return reason;
+    if (reason == EEXIST) reason = EIO;  // the folder was new: a clash inside it is not a retry
   }
-  return 0;
+  throw IoError("cannot create output folder " + quoted(out) + ": " + reason_of(reason));
 }
 
-// The names directly in `dir`, but those in `skip`.
-std::vector<std::string> names_in(const fs::path& dir, const std::set<std::string>& skip) {
+// The names directly in `dir`.
+std::vector<std::string> names_in(const fs::path& dir) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    std::string name = it->path().filename().string();
-    if (!skip.count(name)) names.push_back(std::move(name));
-  }
-  std::sort(names.begin(), names.end());
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    names.push_back(it->path().filename().string());
   return names;
 }
 
@@ -273,35 +275,42 @@ std::vector<std::string> manifest_entries(const fs::path& dir) {
 }
 
 std::optional<std::string> first_foreign_entry(const fs::path& dir) {
-  return first_foreign_entry_except(dir, {});
+  const std::vector<std::string> listed = manifest_entries(dir);
+  for (const auto& [relative, status] : entries_under(dir))
+    if (!(fs::is_regular_file(status) || fs::is_directory(status)) ||
+        std::find(listed.begin(), listed.end(), relative) == listed.end())
+      return relative;
+  return std::nullopt;
 }
 
-void write_manifest(const fs::path& dir) {
+std::string manifest_text(const fs::path& dir) {
   std::string text = std::string(k_manifest_name) + "\n";
-  walk(dir, "", {k_manifest_name}, [&](const std::string& relative, const fs::file_status&) {
-    if (relative.find('\n') == std::string::npos) text += relative + "\n";  // unlistable
-    return true;
-  });
-  write_file_atomic(dir / k_manifest_name, text);
+  for (const auto& entry : entries_under(dir))  // a name with a newline cannot be listed
+    if (entry.first != k_manifest_name && entry.first.find('\n') == std::string::npos)
+      text += entry.first + "\n";
+  return text;
 }
 
-std::string staging_name(const std::string& name, long pid) {
-  const std::string suffix = fmt::format("{}{}", k_staging_infix, pid);
-  // Room for the dot, the suffix and "-previous" (the folder a commit moves a run aside to).
+std::string staging_name(const std::string& name, const std::string& suffix) {
+  const std::string tail = std::string(k_staging_infix).append(suffix);
+  // Room for the dot, the tail and "-previous" (the name of a run a commit sets aside).
   const std::size_t room =
-      NAME_MAX - 1 - suffix.size() - std::char_traits<char>::length(k_previous_suffix);
+      NAME_MAX - 1 - tail.size() - std::char_traits<char>::length(k_previous_suffix);
   std::size_t keep = std::min(name.size(), room);
   while (keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80)
     --keep;  // never cut a UTF-8 character in two
-  return "." + name.substr(0, keep) + suffix;
+  std::string result(1, '.');  // appended: "." + a temporary trips a false -Wrestrict
+  return result.append(name, 0, keep).append(tail);
 }
 
 void remove_stale_staging(const fs::path& dir) noexcept {
   try {
-    for (const std::string& name : names_in(dir, {})) {
-      const long pid = staging_pid(name);
-      if (pid <= 0 || pid == ::getpid() || process_alive(pid)) continue;
-      if (is_our_staging(dir / name)) remove_tree(dir / name);
+    for (const std::string& name : names_in(dir)) {
+      if (!is_staging_name(name)) continue;
+      const int lock = lock_abandoned_staging(dir / name);
+      if (lock < 0) continue;
+      remove_tree(dir / name);  // under its lock: no run can be using it
+      ::close(lock);
     }
   } catch (...) {  // a folder that cannot be listed has nothing to clean
   }
@@ -309,14 +318,21 @@ void remove_stale_staging(const fs::path& dir) noexcept {
 
 RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_target(out_)) {
   const fs::path parent = target_.parent_path();
-  const long pid = ::getpid();
-  remove_stale_staging(parent);
+  fs::path nearest = parent;  // the folder the run makes its folders in: the parent, or above it
+  std::error_code ec;
+  while (!fs::exists(fs::symlink_status(nearest, ec)) && nearest != nearest.parent_path())
+    nearest = nearest.parent_path();
+  refuse_unless_ours(nearest, out_, true);
   struct stat target_info {};
   const bool exists = ::stat(target_.c_str(), &target_info) == 0;
+  // A mount point cannot be swapped: an empty one is written into (staged inside it).
+  struct stat parent_info {};
+  in_place_ = exists && ::stat(parent.c_str(), &parent_info) == 0 &&
+              parent_info.st_dev != target_info.st_dev;
   if (exists) {
-    remove_stale_staging(target_);
+    refuse_unless_ours(target_, out_, false);
+    if (in_place_) remove_stale_staging(target_);
     if (const std::optional<std::string> foreign = first_foreign_entry(target_)) {
-      std::error_code ec;
       const bool listed = fs::exists(fs::symlink_status(target_ / k_manifest_name, ec));
       throw UsageError("--out " + quoted(out_) + " holds '" + *foreign + "', which no run wrote (" +
                        (listed ? std::string("not in its ") + k_manifest_name
@@ -324,120 +340,124 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
                        "); not replaced, choose a new or empty folder");
     }
   }
-  staging_ = parent / staging_name(target_.filename().string(), pid);
+  if (in_place_ && !fs::is_empty(target_, ec))
+    throw UsageError("--out " + quoted(out_) + " is a mount point holding a run, which cannot be "
+                     "swapped whole; empty it or give a folder inside it");
+  remove_stale_staging(parent);
+  if (!exists) created_parents_ = create_parents(target_, out_);
+  try {
+    std::tie(staging_, lock_fd_) =
+        make_staging(in_place_ ? target_ : parent, target_.filename().string(), out_);
+  } catch (const IoError&) {
+    for (const fs::path& created : created_parents_) ::rmdir(created.c_str());
+    throw;
+  }
+  struct stat info {};
+  ::stat(staging_.c_str(), &info);
   if (!exists) {
-    created_parents_ = create_parents(staging_, out_);
-    if (const int reason = make_staging(staging_)) {
-      for (const fs::path& created : created_parents_) ::rmdir(created.c_str());
-      throw IoError("cannot create output folder " + quoted(out_) + ": " + reason_of(reason));
+    // Never writable by others (the next run would refuse it); a setgid parent's bit kept.
+    mode_ = (0775 & ~current_umask()) | (info.st_mode & S_ISGID);
+  } else {
+    mode_ = target_info.st_mode & 07777;
+    if (info.st_gid != target_info.st_gid &&
+        ::chown(staging_.c_str(), static_cast<uid_t>(-1), target_info.st_gid) != 0) {
+      discard();
+      throw UsageError("--out " + quoted(out_) + " belongs to a group you cannot give a new "
+                       "folder; a run replaces its --out whole, so choose a folder of your own");
     }
-    struct stat info {};
-    ::stat(staging_.c_str(), &info);
-    mode_ = (0777 & ~current_umask()) | (info.st_mode & S_ISGID);  // a setgid parent's bit
-    swap_ = Swap::rename;
-    return;
-  }
-  // An existing --out: exchanged whole when the new folder can have its owner, group and mode;
-  // otherwise (another user's shared folder, a parent this user cannot write) written into.
-  mode_ = target_info.st_mode & 07777;
-  swap_ = Swap::in_place;
-  if (make_staging(staging_) == 0) {
-    struct stat info {};
-    if (::stat(staging_.c_str(), &info) == 0 && info.st_uid == target_info.st_uid &&
-        info.st_gid == target_info.st_gid)
-      swap_ = Swap::exchange;
-    else
-      remove_tree(staging_);
-  }
-  if (swap_ == Swap::in_place) {
-    staging_ = target_ / staging_name(k_inside_name, pid);
-    if (const int reason = make_staging(staging_))
-      throw IoError("cannot write into output folder " + quoted(out_) + ": " + reason_of(reason));
   }
 }
 
 RunFolder::~RunFolder() { discard(); }
 
-void RunFolder::discard() noexcept {
-  if (committed_) return;
-  remove_tree(staging_);
-  for (const fs::path& parent : created_parents_) ::rmdir(parent.c_str());  // only if empty
-  created_parents_.clear();
+// Renames the staging folder's entries into the empty mount point --out, the manifest last;
+// on failure renames back what it moved, or says where both parts are.
+void RunFolder::commit_into_mount_point() {
+  std::vector<std::string> names = names_in(staging_), moved;
+  if (names_in(target_) != std::vector<std::string>{staging_.filename().string()})
+    throw IoError("cannot write output folder " + quoted(out_) + ": something appeared in it "
+                  "during the run; nothing written");
+  std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n != k_manifest_name; });
+  for (const std::string& name : names) {
+    if (::rename((staging_ / name).c_str(), (target_ / name).c_str()) == 0) {
+      moved.push_back(name);
+      continue;
+    }
+    const int reason = errno;
+    std::size_t back = 0;
+    for (const std::string& m : moved) back += ::rename((target_ / m).c_str(), (staging_ / m).c_str()) == 0;
+    std::string where = "; nothing written";
+    if (back != moved.size()) {
+      where = "; part of this run is in it, the rest in " + quoted(staging_);
+      staging_.clear();  // kept, never discarded
+    }
+    throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason) + where);
+  }
+  ::rmdir(staging_.c_str());
 }
 
-// Moves the previous run's entries in --out aside (into a folder inside it), renames the new
-// ones in from `from`, the manifest last, then removes what was set aside; a failure moves
-// everything back. Used where --out itself must stay (its owner and mode) or cannot be
-// exchanged (overlayfs). Between the first and the last rename only SIGKILL can stop it.
-void RunFolder::commit_in_place(const fs::path& from) {
-  const std::string aside_name = staging_name(k_inside_name, ::getpid()) + k_previous_suffix;
-  const fs::path aside = target_ / aside_name;
-  const std::set<std::string> skip{k_manifest_name, from.filename().string(), aside_name};
-  const std::vector<std::string> old_names = names_in(target_, skip);
-  const std::vector<std::string> new_names = names_in(from, {k_manifest_name});
-  if (const int reason = make_staging(aside))
-    throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason));
-  std::vector<std::string> set_aside, moved_in;
-  const auto undo = [&] {
-    for (const std::string& name : moved_in) ::rename((target_ / name).c_str(), (from / name).c_str());
-    for (const std::string& name : set_aside) ::rename((aside / name).c_str(), (target_ / name).c_str());
-    remove_tree(aside);
-  };
-  const auto fail = [&](int reason) {
-    undo();
-    throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason));
-  };
-  for (const std::string& name : old_names) {
-    if (::rename((target_ / name).c_str(), (aside / name).c_str()) == 0) {
-      set_aside.push_back(name);
-    } else if (errno == EXDEV) {
-      remove_tree(target_ / name);  // a folder overlayfs cannot move: the old run's, listed
-    } else {
-      fail(errno);
-    }
+void RunFolder::discard() noexcept {
+  if (!committed_) {
+    remove_tree(staging_);
+    for (const fs::path& parent : created_parents_) ::rmdir(parent.c_str());  // only if empty
+    created_parents_.clear();
   }
-  for (const std::string& name : new_names) {
-    if (::rename((from / name).c_str(), (target_ / name).c_str()) != 0) fail(errno);
-    moved_in.push_back(name);
-  }
-  if (::rename((from / k_manifest_name).c_str(), (target_ / k_manifest_name).c_str()) != 0)
-    fail(errno);
-  remove_tree(aside);
-  remove_tree(from);
+  if (lock_fd_ >= 0) ::close(lock_fd_);
+  lock_fd_ = -1;
 }
 
 void RunFolder::commit() {
   without_interruption([&] {
-    write_manifest(staging_);
+    // Written through the locked descriptor: the folder stays marked live until it is --out.
+    const std::string manifest = manifest_text(staging_);
+    std::error_code error;
+    if (::ftruncate(lock_fd_, 0) != 0 || ::lseek(lock_fd_, 0, SEEK_SET) != 0)
+      error = {errno, std::generic_category()};
+    if (!error) error = write_all(lock_fd_, manifest);
+    if (error)
+      throw IoError("cannot write '" + (out_ / k_manifest_name).string() + "': " + error.message());
+    const auto fail = [&](int reason, const char* hint = "") {
+      throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason) + hint +
+                    "; it still holds the previous run");
+    };
+    ::chmod(staging_.c_str(), mode_);
     struct stat info {};
-    const bool exists = ::stat(target_.c_str(), &info) == 0;
-    if (exists) {
+    if (in_place_) {
+      commit_into_mount_point();
+    } else if (::stat(target_.c_str(), &info) != 0) {
+      if (::rename(staging_.c_str(), target_.c_str()) != 0) fail(errno);
+    } else {
       // Something added to --out during the run would be lost with the previous run.
-      const std::set<std::string> skip{staging_.filename().string()};
-      if (const std::optional<std::string> foreign = first_foreign_entry_except(target_, skip))
+      if (const std::optional<std::string> foreign = first_foreign_entry(target_))
         throw IoError("cannot replace output folder " + quoted(out_) + ": '" + *foreign +
                       "' appeared in it during the run and no run wrote it; nothing replaced");
-    }
-    if (swap_ == Swap::in_place) {
-      commit_in_place(staging_);
-    } else if (!exists) {
-      ::chmod(staging_.c_str(), mode_);
-      if (::rename(staging_.c_str(), target_.c_str()) != 0)
-        throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(errno));
-    } else {
-      ::chmod(staging_.c_str(), mode_);
-      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
-        remove_tree(staging_);  // the staging name now holds the previous run
-      } else if (errno == EXDEV || errno == EINVAL || errno == ENOSYS) {
-        commit_in_place(staging_);  // overlayfs, or a file system that cannot exchange
-      } else {
-        throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(errno));
+      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0) {
+        if (errno == EXDEV)  // overlayfs: a folder of a lower layer cannot be moved
+          fail(EXDEV, " (a folder of the image's lower layer: remove it or choose a new one)");
+        if (errno != EINVAL && errno != ENOSYS) fail(errno);
+        // A file system that cannot exchange: the previous run is renamed aside, then back if
+        // the new one cannot take its place.
+        const fs::path aside = staging_.string() + k_previous_suffix;
+        if (::rename(target_.c_str(), aside.c_str()) != 0) fail(errno);
+        if (::rename(staging_.c_str(), target_.c_str()) != 0) {
+          const int reason = errno;
+          if (::rename(aside.c_str(), target_.c_str()) != 0) {
+            const fs::path kept = std::exchange(staging_, fs::path());  // never discarded
+            throw IoError("cannot write output folder " + quoted(out_) + ": " + reason_of(reason) +
+                          "; the previous run is in " + quoted(aside) + ", the new one in " +
+                          quoted(kept));
+          }
+          fail(reason);
+        }
+        ::rename(aside.c_str(), staging_.c_str());  // removed below, with the staging name
       }
+      committed_ = true;
+      remove_tree(staging_);  // the staging name now holds the previous run
     }
     committed_ = true;
+    discard();
   });
 }
-
 std::string RunFolder::with_out_name(std::string text) const {
   const std::string from = staging_.string(), to = out_.string();
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))

@@ -31,8 +31,10 @@ class RunFolder {
   /// Accepts `out` if it does not exist, is an empty folder, or holds only what its manifest
   /// lists (a previous run); follows a symbolic link to a folder. Throws UsageError (exit 2)
   /// naming --out otherwise: a file, a dangling link, a folder with an entry no run wrote (the
-  /// first one is named), $HOME, the root, the current folder or one above it. Removes the
-  /// staging folders of runs whose process is gone beside and inside --out first. Throws
+  /// first one is named), $HOME, the root, the current folder or one above it, and a folder
+  /// this run cannot own (git's safe.directory rule): --out or the folder it is made in owned
+  /// by another user (root may own the latter) or writable by one (the sticky bit of a parent
+  /// such as /tmp excepted). Removes the abandoned staging folders beside --out first. Throws
   /// IoError (exit 1) if the staging folder cannot be created.
   explicit RunFolder(std::filesystem::path out);
   ~RunFolder();
@@ -41,19 +43,18 @@ class RunFolder {
 
   /// --out as given, for messages.
   const std::filesystem::path& out() const { return out_; }
-  /// Where this run writes: `.<name>.staging-<pid>` beside --out, or `.mcrt.staging-<pid>`
-  /// inside an existing --out that this run may not replace as a folder (owned by someone
-  /// else, another group, or a parent this user cannot write).
+  /// Where this run writes: `.<name>.staging-<16 random hex digits>` beside --out (inside an
+  /// empty mount point given as --out, which cannot be swapped), mode 0700, marked live by the
+  /// lock this run holds on its manifest.
   const std::filesystem::path& staging() const { return staging_; }
   /// Whether commit() has swapped this run in.
   bool committed() const { return committed_; }
 
   /// Writes the manifest, then swaps the staging folder in as --out: rename() when --out does
-  /// not exist, an atomic exchange when it does (the new folder gets the old one's mode),
-  /// and, inside a folder that must keep its owner and mode or where the file system cannot
-  /// exchange (overlayfs: EXDEV), the previous run's entries are moved aside and the new ones
-  /// renamed in, undone on failure. Throws IoError on failure, and --out then still holds the
-  /// previous run.
+  /// not exist, an atomic exchange when it does (the new folder gets the old one's mode and
+  /// group); where the file system cannot exchange, the previous run is renamed aside first
+  /// and back on failure. Throws IoError on failure, and --out then still holds the previous
+  /// run (or the message says where both runs are).
   void commit();
 
   /// `text` with the staging folder's path replaced by --out's, so that messages name the
@@ -65,16 +66,16 @@ class RunFolder {
   void discard() noexcept;
 
  private:
-  enum class Swap { rename, exchange, in_place };
-  void commit_in_place(const std::filesystem::path& from);
+  void commit_into_mount_point();
 
   std::filesystem::path out_;      // as given
   std::filesystem::path target_;   // the folder that is replaced: --out, links followed
   std::filesystem::path staging_;
+  int lock_fd_ = -1;               // the staging manifest, locked while this run lives
   std::vector<std::filesystem::path> created_parents_;  // innermost first
-  Swap swap_ = Swap::rename;
-  mode_t mode_ = 0755;  // the mode --out gets (rename, exchange)
+  mode_t mode_ = 0755;  // the mode --out gets
   bool committed_ = false;
+  bool in_place_ = false;  // --out is an empty mount point: staged inside it, moved in entry by entry
 };
 
 /// The first entry under `dir` (a relative path, folders with a trailing '/', in sorted order)
@@ -86,16 +87,17 @@ std::optional<std::string> first_foreign_entry(const std::filesystem::path& dir)
 /// What dir's manifest lists, one entry per line; empty without a regular manifest.
 std::vector<std::string> manifest_entries(const std::filesystem::path& dir);
 
-/// Writes dir's manifest: everything under `dir`, the manifest itself included.
-void write_manifest(const std::filesystem::path& dir);
+/// The manifest of `dir`: everything under it, the manifest itself included.
+std::string manifest_text(const std::filesystem::path& dir);
 
-/// The staging folder's name for an --out named `name`, written by process `pid`:
-/// `.<name>.staging-<pid>`, `name` shortened (at a UTF-8 boundary) to fit NAME_MAX.
-std::string staging_name(const std::string& name, long pid);
+/// The staging folder's name for an --out named `name`: `.<name>.staging-<suffix>`, `name`
+/// shortened (at a UTF-8 boundary) to fit NAME_MAX with "-previous" appended.
+std::string staging_name(const std::string& name, const std::string& suffix);
 
-/// Removes, in `dir`, the staging folders of runs whose process is gone: a folder named as
-/// staging_name() makes them (with an optional "-previous"), of this user, whose pid is not
-/// alive and which holds a manifest or nothing. Nothing else is touched.
+/// Removes, in `dir`, the staging folders of runs that are gone: named as staging_name()
+/// makes them with a 16-hex-digit suffix (and an optional "-previous"), folders of this user
+/// holding a regular manifest of this user whose lock can be taken. A live run holds that
+/// lock, whatever its PID namespace or machine; nothing else is touched.
 void remove_stale_staging(const std::filesystem::path& dir) noexcept;
 
 }  // namespace mcrt

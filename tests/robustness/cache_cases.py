@@ -229,8 +229,8 @@ def group_cache_links(chapters, tmp, checks):
         checks.case(f"{guarantee} ch05 with links named like temporaries in its own cache "
                     "(removed, not followed)", problems)
 
-        # 6. scripts/make-gallery writes out/index.html through a temporary file: nobody plants
-        # a link under the name it used (.index.html.tmp) in a shared out/.
+        # 6. scripts/make-gallery in a shared out/ where nobody planted a link under the name it
+        # used (.index.html.tmp): refused before writing (issue 43: folders of your own only).
         gallery = Path(__file__).resolve().parents[2] / "scripts" / "make-gallery"
         shared3, victim4 = shared_folder(tmp), victim_file(tmp)
         made += [shared3, victim4.parent]
@@ -238,12 +238,12 @@ def group_cache_links(chapters, tmp, checks):
         p = subprocess.run([sys.executable, str(gallery), "--out", str(shared3)],
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            stdin=subprocess.DEVNULL, timeout=base.CASE_TIMEOUT)
-        problems = base.exit_problems(p.returncode, 0, p.stderr)
+        problems = base.exit_problems(p.returncode, 2, p.stderr)
         problems += link_problems(p.returncode, p.stderr, victim4, shared3)
-        if not (shared3 / "index.html").is_file():
-            problems.append("no index.html written")
-        checks.case(f"{guarantee} make-gallery in a shared out/ with a planted .index.html.tmp "
-                    "link", problems)
+        if (shared3 / "index.html").exists():
+            problems.append("index.html written in a shared folder")
+        checks.case(f"{guarantee} make-gallery refuses a shared out/ with a planted "
+                    ".index.html.tmp link", problems)
     finally:
         for folder in made:
             shutil.rmtree(folder, ignore_errors=True)

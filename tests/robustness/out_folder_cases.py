@@ -158,37 +158,62 @@ def case_manifest_lists_everything(r, chapters, tmp, name):
     return r.exit_problems(code, 0, err) + (whole_run_problems(r, out) if code == 0 else [])
 
 
+def other_uid():
+    """A uid that no account has, for 'another user' (root only): nothing else runs as it, so
+    the cases never meet a grading's processes of nobody."""
+    import pwd
+    import random
+    while True:
+        uid = random.randrange(3_000_000, 4_000_000)
+        try:
+            pwd.getpwuid(uid)
+        except KeyError:
+            return uid
+
+
+def refused_untouched_problems(r, command, cwd, out, watched):
+    """`command` refused before any work (exit 2, one line naming --out and saying to choose a
+    folder of one's own), every folder in `watched` as it was."""
+    before = {str(w): r.snapshot(w) for w in watched}
+    code, _, err, seconds = r.run(command, cwd=cwd)
+    problems = refused_problems(r, code, err, seconds, ["--out"], [out])
+    if "your own" not in r.text(err):
+        problems.append(f"the line does not say to choose a folder of your own: {r.text(err)!r}")
+    for w in watched:
+        if r.snapshot(w) != before[str(w)]:
+            problems.append(f"{w.name} changed")
+    return problems
+
+
 def case_shared_folder(r, chapters, tmp):
-    """An empty shared folder (another user's, mode 3777) given to root as --out: written into,
-    its owner and mode kept, through a first run, a second that replaces it, and a refused one."""
+    """Root given another user's shared folder (mode 3777) holding a previous run, and a new
+    --out inside another user's 0755 home: refused (issue 43: the owner could swap the staging
+    folder for links that root then wrote through), nothing made or changed."""
     parent = r.fresh(tmp / "shared")
     os.chmod(parent, 0o755)
-    out = parent / "shared"
-    out.mkdir()
-    os.chown(out, NOBODY, NOBODY)
+    other = other_uid()
+    out = parent / "dropbox"
+    code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)], cwd=parent)
+    if code != 0:
+        return [f"the first run failed: {r.text(err)[:300]!r}"]
+    for entry in [out] + list(out.rglob("*")):
+        os.lchown(entry, other, other)
     os.chmod(out, 0o3777)
-    problems = []
-    for seed in ("1", "2"):
-        code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--seed", seed, "--out", str(out)],
-                                cwd=parent)
-        problems += [f"run with seed {seed}: {p}" for p in r.exit_problems(code, 0, err)]
-        info = os.stat(out)
-        if (info.st_uid, info.st_gid, stat.S_IMODE(info.st_mode)) != (NOBODY, NOBODY, 0o3777):
-            problems.append(f"after the run with seed {seed}: owner {info.st_uid}:{info.st_gid} "
-                            f"mode {stat.S_IMODE(info.st_mode):o}, not 65534:65534 3777")
-        problems += whole_run_problems(r, out)
-    if '"seed": "2"' not in (out / "summary.json").read_text() and \
-            '"seed": 2' not in (out / "summary.json").read_text():
-        problems.append("the second run did not replace the first")
-    if sorted(os.listdir(parent)) != ["shared"]:
-        problems.append(f"left beside --out: {sorted(os.listdir(parent))}")
+    problems = refused_untouched_problems(r, tiny(r, chapters) + ["--quiet", "--out", str(out)],
+                                          parent, out, [parent])
+    home = parent / "atkhome"
+    home.mkdir(mode=0o755)
+    os.chown(home, other, other)
+    for new in (home / "out", home / "a" / "b"):
+        problems += [f"{new.relative_to(parent)}: {p}" for p in refused_untouched_problems(
+            r, tiny(r, chapters) + ["--quiet", "--out", str(new)], parent, new, [parent])]
     return problems
 
 
 def case_shared_folder_as_another_user(r, chapters, tmp):
-    """The other way round: root's shared folder (3777) in a parent only root may write, given
-    as --out to an unprivileged user (nobody, through setpriv): the run cannot stage beside it,
-    so it writes into it, twice, and the folder stays root's 3777. None without setpriv."""
+    """The other way round: root's shared folder (3777) given as --out to an unprivileged user
+    (a uid of this case's own, through setpriv): refused, where it used to be written into.
+    None without setpriv."""
     setpriv = shutil.which("setpriv")
     if not setpriv:
         return None
@@ -198,26 +223,18 @@ def case_shared_folder_as_another_user(r, chapters, tmp):
     out = parent / "shared"
     out.mkdir()
     os.chmod(out, 0o3777)
-    as_nobody = [setpriv, f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups"]
-    problems = []
-    for seed in ("1", "2"):
-        code, _, err, _ = r.run(as_nobody + tiny(r, chapters) + ["--quiet", "--seed", seed,
-                                                                 "--out", str(out)], cwd=parent)
-        problems += [f"run with seed {seed}: {p}" for p in r.exit_problems(code, 0, err)]
-        info = os.stat(out)
-        if (info.st_uid, stat.S_IMODE(info.st_mode)) != (0, 0o3777):
-            problems.append(f"after the run with seed {seed}: owner {info.st_uid} mode "
-                            f"{stat.S_IMODE(info.st_mode):o}, not root's 3777")
-        if code == 0:
-            problems += whole_run_problems(r, out)
-    if sorted(os.listdir(parent)) != ["shared"]:
-        problems.append(f"left beside --out: {sorted(os.listdir(parent))}")
-    return problems
+    uid = other_uid()
+    as_other = [setpriv, f"--reuid={uid}", f"--regid={uid}", "--clear-groups"]
+    return refused_untouched_problems(r, as_other + tiny(r, chapters) + ["--quiet", "--out",
+                                                                         str(out)],
+                                      parent, out, [parent])
 
 
 def case_overlayfs(r, chapters, tmp):
     """A previous run in an overlayfs lower layer (a container image): renaming the folder gives
-    EXDEV; the run must still replace it whole. None when overlayfs cannot be mounted here."""
+    EXDEV. The run fails with one line (exit 1) saying so, the previous run whole, nothing left
+    beside it (it used to move the previous run's files one by one, an undo that could delete
+    them). None when overlayfs cannot be mounted here."""
     base = r.fresh(tmp / "overlay")
     lower, upper, work, merged = (base / n for n in ("lower", "upper", "work", "merged"))
     for folder in (lower / "parent", upper, work, merged):
@@ -235,12 +252,12 @@ def case_overlayfs(r, chapters, tmp):
         out = merged / "parent" / "out"
         code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--seed", "5", "--out", str(out)],
                                 cwd=merged / "parent")
-        problems = r.exit_problems(code, 0, err)
-        if code == 0:
-            problems += whole_run_problems(r, out)
-            if '"5"' not in (out / "summary.json").read_text() and \
-                    ": 5" not in (out / "summary.json").read_text():
-                problems.append("--out still holds the previous run")
+        problems = r.exit_problems(code, 1, err) + r.one_line_problems(err, [merged])
+        if "layer" not in r.text(err):
+            problems.append(f"the line does not say why: {r.text(err)!r}")
+        problems += whole_run_problems(r, out)
+        if r.snapshot(out) != r.snapshot(lower / "parent" / "out"):
+            problems.append("--out no longer holds the previous run")
         if sorted(os.listdir(merged / "parent")) != ["out"]:
             problems.append(f"left beside --out: {sorted(os.listdir(merged / 'parent'))}")
         return problems
@@ -248,12 +265,92 @@ def case_overlayfs(r, chapters, tmp):
         subprocess.run(["umount", str(merged)], capture_output=True)
 
 
+SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
+
+
+def case_gallery_fifo(r, tmp):
+    """make-gallery with a FIFO as a chapter's summary.json: one line, exit 1, at once (it used
+    to wait forever for a writer)."""
+    out = r.fresh(tmp / "gallery_fifo")
+    (out / CH01).mkdir()
+    os.mkfifo(out / CH01 / "summary.json")
+    code, _, err, _ = r.run([str(SCRIPTS / "make-gallery"), "--out", str(out)], cwd=out,
+                            timeout=r.REFUSAL_TIMEOUT)
+    problems = r.exit_problems(code, 1, err) + r.one_line_problems(err, [out])
+    return problems + ([] if "summary.json" in r.text(err) else [f"not named: {r.text(err)!r}"])
+
+
+def case_docs_user_file(r, tmp):
+    """A file the user put into out/docs after render-docs wrote it: refused (exit 2, the file
+    named), kept (it used to be deleted with the previous pages). None without pandoc."""
+    if not shutil.which("pandoc"):
+        return None
+    out = r.fresh(tmp / "docs_user_file")
+    command = [str(SCRIPTS / "render-docs"), "--out", str(out)]
+    (out / "docs").mkdir()  # as a render leaves it (its marker lists its files), then the user's
+    (out / "docs" / "index.html").write_text("<p>rendered</p>\n")
+    (out / "docs" / ".rendered-docs").write_text("index.html\n.rendered-docs\n")
+    (out / "docs" / "my-notes.txt").write_text("mine\n")
+    before = r.snapshot(out)
+    code, _, err, _ = r.run(command, cwd=out, timeout=120)
+    problems = r.exit_problems(code, 2, err) + r.one_line_problems(err, [out])
+    if "my-notes.txt" not in r.text(err):
+        problems.append(f"the line does not name the file: {r.text(err)!r}")
+    return problems + (["out/docs changed"] if r.snapshot(out) != before else [])
+
+
+def case_scripts_refuse_unowned(r, tmp):
+    """render-docs and make-gallery given another user's folder (root only): exit 2, one line
+    naming --out, nothing written in it."""
+    parent = r.fresh(tmp / "scripts_unowned")
+    os.chmod(parent, 0o755)
+    out = parent / "theirs"
+    out.mkdir()
+    os.chown(out, other_uid(), other_uid())
+    problems = []
+    for script in ("render-docs", "make-gallery"):
+        code, _, err, seconds = r.run([str(SCRIPTS / script), "--out", str(out)], cwd=parent)
+        problems += [f"{script}: {p}" for p in refused_problems(r, code, err, seconds, ["--out"],
+                                                                [out])]
+        if os.listdir(out):
+            problems.append(f"{script} wrote {sorted(os.listdir(out))}")
+    return problems
+
+
+def case_empty_mount_point(r, chapters, tmp):
+    """An empty mount point as --out (a tmpfs of mode 0755): the run is written into it whole
+    (it can never be swapped: it always failed); a second run is refused (exit 2), the first
+    kept. None when a tmpfs cannot be mounted here."""
+    parent = r.fresh(tmp / "mount_point")
+    out = parent / "mnt"
+    out.mkdir()
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4m,mode=0755", "tmpfs", str(out)],
+                      capture_output=True).returncode != 0:
+        return None
+    try:
+        code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)], cwd=parent)
+        problems = r.exit_problems(code, 0, err)
+        if code == 0:
+            problems += whole_run_problems(r, out)
+            before = r.snapshot(out)
+            code, _, err, seconds = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)],
+                                          cwd=parent)
+            problems += [f"second run: {p}" for p in refused_problems(r, code, err, seconds,
+                                                                     ["mount point"], [out])]
+            if r.snapshot(out) != before:
+                problems.append("the second run changed the first")
+        return problems + ([f"left beside it: {os.listdir(parent)}"]
+                           if os.listdir(parent) != ["mnt"] else [])
+    finally:
+        subprocess.run(["umount", str(out)], capture_output=True)
+
+
 def group_out_manifest(r, chapters, tmp, checks):
     if CH01 not in chapters:
         checks.case("out-manifest", [f"{CH01} not built"])
         return
     guarantee = "A run replaces only what runs wrote: "
-    shared = "Shared folders keep their owner and mode: "
+    shared = "Folders of your own: "
     checks.case(guarantee + "HOME=H --out ~ with .ssh/ and a copied summary.json",
                 case_home(r, chapters, tmp))
     checks.case(guarantee + "notes.txt and my_edits/ added inside a previous run",
@@ -261,6 +358,13 @@ def group_out_manifest(r, chapters, tmp, checks):
     checks.case(guarantee + "a folder with a chapter's summary.json alone",
                 case_summary_alone(r, chapters, tmp))
     checks.case(guarantee + "a FIFO as a previous run's summary.json", case_fifo(r, chapters, tmp))
+    checks.case("Regular files only: make-gallery and a FIFO as summary.json",
+                case_gallery_fifo(r, tmp))
+    docs = case_docs_user_file(r, tmp)
+    if docs is None:
+        print("SKIP: no pandoc (a file of the user's in out/docs)")
+    else:
+        checks.case(guarantee + "render-docs and a file of the user's in out/docs", docs)
     for name in [n for n in r.TINY if n in chapters]:
         checks.case(f"{guarantee}{name}'s manifest lists exactly its folder",
                     case_manifest_lists_everything(r, chapters, tmp, name))
@@ -268,19 +372,26 @@ def group_out_manifest(r, chapters, tmp, checks):
         print("SKIP (not root): an empty shared folder of another user keeps owner and mode; "
               "overlayfs")
         return
-    checks.case(shared + "an empty shared folder of another user, then a second run",
+    checks.case(shared + "another user's 3777 folder, a new --out in another user's home (root)",
                 case_shared_folder(r, chapters, tmp))
+    checks.case(shared + "render-docs and make-gallery given another user's folder",
+                case_scripts_refuse_unowned(r, tmp))
     unprivileged = case_shared_folder_as_another_user(r, chapters, tmp)
     if unprivileged is None:
-        print("SKIP: no setpriv (root's shared folder, written by nobody)")
+        print("SKIP: no setpriv (root's shared folder, given to another user)")
     else:
-        checks.case(shared + "root's shared folder, written into by an unprivileged user",
+        checks.case(shared + "root's shared folder, given to an unprivileged user",
                     unprivileged)
+    mounted = case_empty_mount_point(r, chapters, tmp)
+    if mounted is None:
+        print("SKIP: a tmpfs cannot be mounted here (an empty mount point as --out)")
+    else:
+        checks.case(shared + "an empty mount point is written into, then kept", mounted)
     overlay = case_overlayfs(r, chapters, tmp)
     if overlay is None:
         print("SKIP: overlayfs cannot be mounted here (the EXDEV case)")
     else:
-        checks.case(shared + "a previous run on overlayfs (EXDEV) is replaced whole", overlay)
+        checks.case(shared + "a previous run on overlayfs (EXDEV) is kept, one line", overlay)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -337,41 +448,141 @@ def case_signal(r, chapters, tmp, signum):
     return problems
 
 
-def dead_pid():
-    """A pid no process has: a child that has exited and been waited for."""
-    p = subprocess.Popen(["true"])
-    p.wait()
-    return p.pid
+def wait_for(predicate, seconds=10.0):
+    """Polls predicate until it holds or `seconds` pass; its last value."""
+    deadline = time.monotonic() + seconds
+    while not predicate() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return predicate()
+
+
+def manifest_unlocked(folder):
+    """Whether the lock on a staging folder's manifest is free (its run is gone)."""
+    import fcntl
+    try:
+        with open(folder / MANIFEST, "rb") as f:
+            fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return True
+    except OSError:
+        return False
 
 
 def case_stale_staging(r, chapters, tmp):
-    """The staging folders of runs killed by SIGKILL (pid gone) are removed by the next run in
-    the same parent; a look-alike without a manifest, and a living run's, are kept."""
+    """Liveness by lock (issue 43): a live run's staging folder is kept by a run beside it, even
+    from another PID namespace where its pid means nothing here (it used to be deleted as
+    stale); once that run is killed (SIGKILL), the next run removes its folder. Folders the user
+    named like ours (`.draft.staging-999999`) are never touched. Returns (problems, note)."""
     parent = r.fresh(tmp / "stale")
-    out = parent / "out"
     exe = chapters[CH01]
-    killed = subprocess.Popen([exe, "--width", "640", "--height", "480", "--spp", "256",
-                               "--quiet", "--out", str(out)], cwd=parent,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    time.sleep(0.5)
-    killed.kill()  # SIGKILL: no cleanup possible
-    killed.wait()
-    stale = [n for n in os.listdir(parent) if ".staging-" in n]
-    problems = [] if stale else ["the killed run left no staging folder to clean (case not played)"]
-    gone = dead_pid()
-    look_alike = parent / f".mine.staging-{gone}"
-    look_alike.mkdir()
-    (look_alike / "thesis.tex").write_text("precious\n")
-    empty = parent / f".other.staging-{gone}-previous"
-    empty.mkdir()
-    code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(out)], cwd=parent)
+    long_run = [exe, "--width", "640", "--height", "480", "--spp", "256", "--quiet",
+                "--out", str(parent / "live")]
+    # In a PID namespace of its own the run gets pid 999991 (set through ns_last_pid): a pid the
+    # host does not have, as a container's run on a shared volume would.
+    namespaced = ["unshare", "--pid", "--fork", "--mount-proc", "--kill-child=SIGKILL", "sh", "-c",
+                  'echo 999990 > /proc/sys/kernel/ns_last_pid && "$@"', "sh"] + long_run
+    note = None
+    probe = subprocess.run(namespaced[:5] + ["true"], capture_output=True) \
+        if os.geteuid() == 0 and shutil.which("unshare") else None
+    if probe is None or probe.returncode != 0:
+        namespaced, note = long_run, "no PID namespace here: the live run shares ours"
+    live = subprocess.Popen(namespaced, cwd=parent, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    try:
+        staging = lambda: [n for n in os.listdir(parent) if n.startswith(".live.staging-")]
+        if not wait_for(staging):
+            return ["the live run made no staging folder (case not played)"], note
+        live_staging = parent / staging()[0]
+        draft = parent / ".draft.staging-999999"
+        draft.mkdir()
+        (draft / "notes.txt").write_text("mine\n")
+        (parent / ".empty.staging-999998").mkdir()
+        copied = parent / ".copy.staging-999997"
+        copied.mkdir()
+        (copied / MANIFEST).write_text(MANIFEST + "\n")
+        users = {draft.name, ".empty.staging-999998", copied.name}
+        code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(parent / "out")],
+                                cwd=parent)
+        problems = r.exit_problems(code, 0, err)
+        if not (live_staging / MANIFEST).exists():
+            problems.append("a live run's staging folder was removed")
+    finally:
+        live.kill()  # SIGKILL: with --kill-child the namespace goes with it
+        live.wait()
+    if not wait_for(lambda: manifest_unlocked(live_staging)):
+        return problems + ["the killed run's lock is still held 10 s later"], note
+    code, _, err, _ = r.run(tiny(r, chapters) + ["--quiet", "--out", str(parent / "out")],
+                            cwd=parent)
     problems += r.exit_problems(code, 0, err)
-    left = sorted(set(os.listdir(parent)) - {"out"})
-    if left != [look_alike.name]:
-        problems.append(f"beside --out: {left}, expected only the look-alike {look_alike.name}")
-    if not (look_alike / "thesis.tex").exists():
-        problems.append("the look-alike without a manifest was removed")
+    left = set(os.listdir(parent)) - {"out"}
+    if left != users:
+        problems.append(f"beside --out: {sorted(left)}, expected only the user's {sorted(users)}")
+    if (draft / "notes.txt").read_text() != "mine\n":
+        problems.append("the user's .draft.staging-999999 changed")
+    return problems, note
+
+
+def case_file_size_limit(r, chapters, tmp):
+    """Under `ulimit -f 4` a file cannot grow past 4 KiB: exit 1 with one line (the system's
+    "File too large"), nothing left beside --out (it was killed by SIGXFSZ, exit 153, its
+    staging folder left)."""
+    parent = r.fresh(tmp / "file_size")
+    name = "ch05_path_tracer"
+    command = [chapters[name]] + r.TINY[name] + ["--quiet", "--out", str(parent / "out")]
+    p = subprocess.run(["bash", "-c", 'ulimit -f 4 && exec "$@"', "bash"] + command, cwd=parent,
+                       stdin=subprocess.DEVNULL, capture_output=True, timeout=r.CASE_TIMEOUT)
+    problems = r.exit_problems(p.returncode, 1, p.stderr) + r.one_line_problems(p.stderr, [parent])
+    if "File too large" not in r.text(p.stderr):
+        problems.append(f"the line lacks the system's reason: {r.text(p.stderr)!r}")
+    if r.beside_out(parent):
+        problems.append(f"left: {r.beside_out(parent)}")
     return problems
+
+
+def case_gnuplot_wrapper_child(r, chapters, tmp):
+    """A gnuplot wrapper that starts a child of its own, and SIGINT while it runs: exit 130 and
+    the child ended with it (it used to keep running: only the wrapper was killed)."""
+    import random
+    parent = r.fresh(tmp / "wrapper")
+    folder = parent / "bin"
+    folder.mkdir()
+    marker = f"1000.{random.randrange(10**9):09d}"  # a sleep no one else runs
+    wrapper = folder / "gnuplot"
+    wrapper.write_text(f"#!/bin/sh\nsleep {marker} &\nwait\n")
+    wrapper.chmod(0o755)
+    environment = dict(os.environ, PATH=f"{folder}:{os.environ.get('PATH', '/usr/bin:/bin')}")
+    child_running = lambda: any(marker in c for c in command_lines().values())
+    run = subprocess.Popen(tiny(r, chapters, "ch05_path_tracer") + ["--quiet", "--out",
+                                                                    str(parent / "out")],
+                           cwd=parent, env=environment, stdin=subprocess.DEVNULL,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    try:
+        if not wait_for(child_running):
+            return ["the wrapper's child never started (case not played)"]
+        run.send_signal(signal.SIGINT)
+        _, err = run.communicate(timeout=10)
+    finally:
+        run.kill()
+        run.wait()
+    problems = r.exit_problems(run.returncode, 130, err)
+    if not wait_for(lambda: not child_running(), 2.0):
+        problems.append("the gnuplot wrapper's child is still running")
+        for pid, line in command_lines().items():  # this case's own child, found by its marker
+            if marker in line:
+                os.kill(pid, signal.SIGKILL)
+    return problems
+
+
+def command_lines():
+    """The command line of every process that can be read, by pid."""
+    lines = {}
+    for pid in os.listdir("/proc"):
+        if pid.isdigit():
+            try:
+                with open(f"/proc/{pid}/cmdline", "rb") as f:
+                    lines[int(pid)] = f.read().replace(b"\0", b" ").decode(errors="replace")
+            except OSError:
+                pass
+    return lines
 
 
 def group_out_ends(r, chapters, tmp, checks):
@@ -395,13 +606,19 @@ def group_out_ends(r, chapters, tmp, checks):
     for signum in (signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM):
         cases.append((f"{guarantee}{signal.Signals(signum).name} mid-render", case_signal,
                       (r, chapters, tmp, signum)))
-    cases.append(("Whole folders: a staging folder whose process is gone", case_stale_staging,
-                  (r, chapters, tmp)))
+    cases.append(("Signals and pipes: ulimit -f 4", case_file_size_limit, (r, chapters, tmp)))
+    cases.append(("Signals and pipes: SIGINT ends a gnuplot wrapper's child",
+                  case_gnuplot_wrapper_child, (r, chapters, tmp)))
     import concurrent.futures
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         futures = {pool.submit(function, *args): name for name, function, args in cases}
         for future in concurrent.futures.as_completed(futures):
             checks.case(futures[future], future.result())
+    problems, note = case_stale_staging(r, chapters, tmp)
+    if note:
+        print(f"SKIP: {note}")
+    checks.case("Whole folders: a live run's staging folder (another PID namespace), a killed "
+                "one's, the user's look-alikes", problems)
 
 
 # ---------------------------------------------------------------------------------------------
