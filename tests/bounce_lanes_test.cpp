@@ -1,4 +1,4 @@
-// The four-lane bounce (render/bounce_lanes.hpp): bounce_lanes_avx2 against
+// The four-lane bounce (engine/bounce_lanes.hpp): bounce_lanes_avx2 against
 // bounce_lanes_portable, which runs the one-path code (sample_uniform_hemisphere, Frame,
 // spawn_ray, the weight update) lane by lane. Both must give the same bits in every lane: the
 // new ray and weight where a lane bounces, and the old ones, untouched, where it does not.
@@ -15,7 +15,7 @@
 
 #include "core/cpu_features.hpp"
 #include "core/rng.hpp"
-#include "render/bounce_lanes.hpp"
+#include "engine/bounce_lanes.hpp"
 #include "render/material.hpp"
 #include "sampling/phong.hpp"
 #include "sampling/sampling.hpp"

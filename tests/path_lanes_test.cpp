@@ -1,4 +1,4 @@
-// The four paths' bookkeeping (render/path_lanes.hpp): what shade_lanes and end_lanes do, in
+// The four paths' bookkeeping (engine/path_lanes.hpp): what shade_lanes and end_lanes do, in
 // both engines, and shade_lanes_avx2 / end_lanes_avx2 against the portable versions bit for
 // bit, over every mask of live lanes, hits and misses, the depth cut, black, signed-zero and
 // NaN weights, and generators in any state.
@@ -12,7 +12,7 @@
 
 #include "core/cpu_features.hpp"
 #include "core/rng.hpp"
-#include "render/path_lanes.hpp"
+#include "engine/path_lanes.hpp"
 
 using namespace mcrt;
 

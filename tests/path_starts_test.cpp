@@ -1,4 +1,4 @@
-// The starts of a row's paths (render/path_starts.hpp): both engines against render()'s own
+// The starts of a row's paths (engine/path_starts.hpp): both engines against render()'s own
 // two lines, Rng(seed, stream) and camera.generate_ray(x, y, rng.uniform2()), bit for bit, for
 // every count of a block (whole passes of four and not), cameras with and without a near
 // plane, one and several samples per pixel, sample numbers past 2^32 / 2 and large seeds.
@@ -11,7 +11,7 @@
 #include "core/cpu_features.hpp"
 #include "core/pcg32_lanes.hpp"
 #include "core/rng.hpp"
-#include "render/path_starts.hpp"
+#include "engine/path_starts.hpp"
 
 using namespace mcrt;
 

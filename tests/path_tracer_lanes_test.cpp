@@ -1,4 +1,4 @@
-// Chapter 05's path tracer in four lanes (render/path_tracer_lanes.hpp) against the lecture's
+// Chapter 05's path tracer in four lanes (engine/path_tracer_lanes.hpp) against the lecture's
 // loop, render(camera, settings, estimate_path_radiance): the same image bit for bit, the same
 // ray count and the same count of non-finite estimates, for every scene, for image widths and
 // sample counts that leave every remainder of the four lanes and of a chunk of paths, for
@@ -22,7 +22,7 @@
 #include "core/rng.hpp"
 #include "geometry/hit.hpp"
 #include "render/path_tracer.hpp"
-#include "render/path_tracer_lanes.hpp"
+#include "engine/path_tracer_lanes.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"

@@ -1,4 +1,4 @@
-#include "render/bounce_lanes.hpp"
+#include "engine/bounce_lanes.hpp"
 
 #include "core/cpu_features.hpp"
 #include "geometry/hit.hpp"

@@ -1,4 +1,4 @@
-#include "render/path_lanes.hpp"
+#include "engine/path_lanes.hpp"
 
 #include <array>
 

@@ -16,7 +16,7 @@
 
 #include "core/pcg32_lanes.hpp"
 #include "core/rng.hpp"
-#include "render/bounce_lanes.hpp"
+#include "engine/bounce_lanes.hpp"
 #include "render/material.hpp"
 
 namespace mcrt {
@@ -38,7 +38,7 @@ struct PathLanes {
     rng.seed_lane(l, Rng::starting_state(seed, stream), stream);
   }
   /// Lane l, ready for a new path, starts one whose generator is PCG32 at (state, increment):
-  /// a start of render/path_starts.hpp, its camera ray's two draws made.
+  /// a start of engine/path_starts.hpp, its camera ray's two draws made.
   void start_at(int l, std::uint64_t state, std::uint64_t increment) {
     if (live[l] == 0) live[l] = -1;
     rng.state[l] = state;

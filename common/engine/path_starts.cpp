@@ -1,4 +1,4 @@
-#include "render/path_starts.hpp"
+#include "engine/path_starts.hpp"
 
 #include "core/cpu_features.hpp"
 #include "core/pcg32_lanes.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 /// The starts of a row's paths, made a block at a time for the four-lane engine
-/// (render/path_tracer_lanes.cpp). For sample s of pixel x in row y, render() does
+/// (engine/path_tracer_lanes.cpp). For sample s of pixel x in row y, render() does
 ///
 ///   Rng rng(seed, stream_index(y width + x, first_sample + s));
 ///   Ray ray = camera.generate_ray(x, y, rng.uniform2());

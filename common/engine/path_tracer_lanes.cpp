@@ -1,4 +1,4 @@
-#include "render/path_tracer_lanes.hpp"
+#include "engine/path_tracer_lanes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "geometry/hit.hpp"
-#include "render/bounce_lanes.hpp"
-#include "render/path_lanes.hpp"
-#include "render/path_starts.hpp"
+#include "engine/bounce_lanes.hpp"
+#include "engine/path_lanes.hpp"
+#include "engine/path_starts.hpp"
 #include "render/path_tracer.hpp"
 
 namespace mcrt {
@@ -67,9 +67,9 @@ class RowOfPaths {
   // group's search while the other's bounce waits on its latencies.
   static constexpr int k_groups = 2;
 
-  // Lane l of group g (ready for a new path: render/path_lanes.hpp) starts the chunk's next
+  // Lane l of group g (ready for a new path: engine/path_lanes.hpp) starts the chunk's next
   // path, if any is left: its generator and its camera ray, as render() makes them. Tasks are
-  // taken in order, so their starts are made a block at a time (render/path_starts.hpp).
+  // taken in order, so their starts are made a block at a time (engine/path_starts.hpp).
   void start_path(PathGroup& g, int l) {
     if (next_task_ == chunk_end_) {
       g.paths.stop(l);
@@ -86,7 +86,7 @@ class RowOfPaths {
     ++next_start_;
   }
 
-  // One pass of estimate_path_radiance's loop for the group's four paths (render/path_lanes.hpp);
+  // One pass of estimate_path_radiance's loop for the group's four paths (engine/path_lanes.hpp);
   // a lane whose path ends hands its radiance in and takes the chunk's next path. False when
   // the group has no path left.
   bool step(PathGroup& g, RayCount& count) {

@@ -5,7 +5,7 @@
 /// starts the next, and each bounce's query tests the primitives against one ray. Here four
 /// paths advance together, one per lane: each bounce tests every primitive against four rays
 /// at once (Scene::closest_hits), the lines around the search and the bounce run on the four
-/// lanes together (render/path_lanes.hpp), and a lane whose path has ended takes the row's
+/// lanes together (engine/path_lanes.hpp), and a lane whose path has ended takes the row's
 /// next (pixel, sample). Two such groups of four take turns, so that one group's search runs
 /// while the other's bounce waits on its latencies. Each lane runs the loop body of
 /// estimate_path_radiance on the generator stream (pixel, sample), and each pixel's samples are

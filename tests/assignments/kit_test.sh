@@ -119,9 +119,9 @@ case "$a" in
     leak tests 'roulette_path_with(' "known_bugs/russian_roulette.hpp's path loop"
     leak tests 'reference_radiance(const ReferenceQuadBox' "support/quad_box_reference.hpp's path tracer"
     leak tests 'plain_path_radiance(' "support/plain_path_tracer.hpp (a4.1's loop, a2.1's sampler)"
-    leak common/render/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
-    leak common/render/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
-    leak common/render/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
+    leak common/engine/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
+    leak common/engine/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
+    leak common/engine/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
     ;;
 esac
 case "$a" in

@@ -28,7 +28,7 @@
 #include "bench/path_rays.hpp"
 #include "support/plain_path_tracer.hpp"
 #include "render/path_tracer.hpp"
-#include "render/path_tracer_lanes.hpp"
+#include "engine/path_tracer_lanes.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 
