@@ -32,8 +32,10 @@ class NearestDispatch : private Avx2Choice {
   void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
     const Set& set = static_cast<const Set&>(*this);
     if (set.size() == 0) return;
-    if (k_has_avx2) set.nearest_lanes_avx2(rays, t_min, nearest);
-    else set.nearest_lanes_portable(rays, t_min, nearest);
+    if (k_has_avx2)
+      set.nearest_lanes_avx2(rays, t_min, nearest);
+    else
+      set.nearest_lanes_portable(rays, t_min, nearest);
   }
 
   /// Whether this processor runs AVX2 (checked once, at start-up).
