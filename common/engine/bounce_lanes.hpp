@@ -11,7 +11,7 @@
 /// bounce_lanes_avx2 computes the four lanes with one instruction per operation, in the order
 /// the one-path code does them (sample_uniform_hemisphere, cos_sin_two_pi, Frame, spawn_ray,
 /// the weight update), without FMA, so every lane is the same bit for bit as the one-path code,
-/// which bounce_lanes_portable runs lane by lane (tests/path_tracer_lanes_test.cpp).
+/// which bounce_lanes_portable runs lane by lane (tests/engine/path_tracer_lanes_test.cpp).
 
 #include <cstdint>
 

@@ -9,7 +9,7 @@
 ///
 /// shade_lanes_avx2 and end_lanes_avx2 do each line for the four lanes with one instruction per
 /// operation, in the one-path code's order, so every lane keeps the one-path code's bits; the
-/// portable versions run the lanes one at a time (tests/path_lanes_test.cpp).
+/// portable versions run the lanes one at a time (tests/engine/path_lanes_test.cpp).
 
 #include <cstdint>
 #include <span>

@@ -9,7 +9,7 @@
 /// make_path_starts_avx2 makes four starts at once, one instruction per operation in the
 /// one-path code's order (the 64-bit products from 32-bit ones, exactly), so every start keeps
 /// the one-path code's bits; make_path_starts_portable makes them one at a time
-/// (tests/path_starts_test.cpp holds the two to Rng and Camera bit for bit).
+/// (tests/engine/path_starts_test.cpp holds the two to Rng and Camera bit for bit).
 
 #include <cstdint>
 

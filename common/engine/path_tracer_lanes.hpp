@@ -10,7 +10,7 @@
 /// while the other's bounce waits on its latencies. Each lane runs the loop body of
 /// estimate_path_radiance on the generator stream (pixel, sample), and each pixel's samples are
 /// summed in sample order, so the image, the ray count and the non-finite count are those of
-/// render(), bit for bit (tests/path_tracer_lanes_test.cpp), and do not depend on the thread
+/// render(), bit for bit (tests/engine/path_tracer_lanes_test.cpp), and do not depend on the thread
 /// count.
 
 #include "geometry/camera.hpp"

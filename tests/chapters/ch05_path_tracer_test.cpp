@@ -43,7 +43,7 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   }
   // 16 times the samples: a quarter of the error, here within a factor 2 either way (432
   // pixels give the RMS error to about 10% at these spp; the factor is a coarse bound for a
-  // smoke run, the law itself is tested in tests/checks/path_tracer_checks.cpp).
+  // smoke run, the law itself is tested in tests/render/path_tracer_checks.cpp).
   EXPECT_GT(rmse[2], rmse[0] / 8.0);
   EXPECT_LT(rmse[2], rmse[0] / 2.0);
 

@@ -1,5 +1,5 @@
 // Generator streams: reproducible, distinct, in range. (Their distribution is checked by the
-// statistical checks in tests/checks/rng_checks.cpp.)
+// statistical checks in tests/core/rng_checks.cpp.)
 
 #include <algorithm>
 #include <set>

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "support/disk_area_procedures.hpp"
+#include "integration/disk_area_procedures.hpp"
 #include "core/math.hpp"
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"

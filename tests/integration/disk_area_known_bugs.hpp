@@ -1,5 +1,5 @@
 #pragma once
-// Known-wrong hit-or-miss estimators, kept so tests/disk_area_test.cpp can show that the
+// Known-wrong hit-or-miss estimators, kept so tests/integration/disk_area_test.cpp can show that the
 // disk-area checks' procedures reject them.
 
 #include <cstdint>

@@ -15,8 +15,8 @@
 #include "integration/ball.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/disk_counter.hpp"
-#include "known_bugs/disk_area.hpp"
-#include "support/disk_area_procedures.hpp"
+#include "integration/disk_area_known_bugs.hpp"
+#include "integration/disk_area_procedures.hpp"
 
 using namespace mcrt;
 

@@ -1,7 +1,7 @@
 #pragma once
 // Known-wrong Monte Carlo and quadrature estimators, and a wrong trial runner, kept so the
-// tests can show the statistical tests reject them (tests/known_bugs_test.cpp,
-// tests/monte_carlo_test.cpp).
+// tests can show the statistical tests reject them (tests/stats/known_bugs_test.cpp,
+// tests/integration/monte_carlo_test.cpp).
 
 #include <cstdint>
 #include <vector>

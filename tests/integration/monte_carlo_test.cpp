@@ -1,7 +1,7 @@
 // The plain Monte Carlo estimator, deterministically: where it samples, what it returns for
 // integrands without variance, how its standard error is formed, and that the z-test the
-// statistical checks use rejects the known-wrong estimators of tests/known_bugs/. Its mean and variance against
-// closed forms are statistical checks: tests/checks/monte_carlo_checks.cpp.
+// statistical checks use rejects the known-wrong estimators of monte_carlo_known_bugs.hpp. Its mean and variance against
+// closed forms are statistical checks: tests/integration/monte_carlo_checks.cpp.
 
 #include "integration/monte_carlo.hpp"
 
@@ -12,7 +12,7 @@
 
 #include "integration/integrands.hpp"
 #include "integration/statistics.hpp"
-#include "known_bugs/estimators.hpp"
+#include "integration/monte_carlo_known_bugs.hpp"
 #include "stats/hypothesis.hpp"
 
 namespace {

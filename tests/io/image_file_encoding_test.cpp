@@ -1,6 +1,6 @@
 // What people see: the PNG's code values, decoded by stb_image (not by the writer's library),
 // against the sRGB curve; and the PFM's floats, read by a reader written from the format's
-// specification, against the image (tests/support/image_decoding.hpp).
+// specification, against the image (tests/io/image_file_decoding.hpp).
 
 #include <cstdint>
 #include <cstring>
@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "io/image_file.hpp"
-#include "support/image_decoding.hpp"
+#include "io/image_file_decoding.hpp"
 
 using namespace mcrt;
 using mcrt::testing::decode_png;

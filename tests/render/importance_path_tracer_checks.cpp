@@ -20,8 +20,8 @@
 #include "stats/chi_square.hpp"
 #include "stats/hypothesis.hpp"
 #include "stats/sampler_tests.hpp"
-#include "support/furnace_paths.hpp"
-#include "support/importance_plates.hpp"
+#include "render/path_tracer_furnace.hpp"
+#include "render/importance_path_tracer_plates.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;
@@ -124,7 +124,7 @@ MCRT_STATISTICAL_CHECK(importance_furnace_mean_grazing, 1e-4) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Plates: against chapter 05's tracer, every pdf (support/importance_plates.hpp). 2e5 paths
+// Plates: against chapter 05's tracer, every pdf (render/importance_path_tracer_plates.hpp). 2e5 paths
 // per side: the grazing pdf's weight has the same t^-3 tail near the normal, so more paths
 // keep a single sample's push well below alpha (about 2e-5 here).
 constexpr int k_plate_paths = 200000;

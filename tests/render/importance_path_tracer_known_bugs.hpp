@@ -1,14 +1,14 @@
 #pragma once
 // Known-wrong importance-sampled path tracers, each chapter 07's loop with cosine-weighted
 // directions and one mistake in the weight, kept so the tests can show the checks'
-// procedures (support/importance_plates.hpp) reject them (tests/importance_sampling_test.cpp).
+// procedures (render/importance_path_tracer_plates.hpp) reject them (tests/render/importance_path_tracer_test.cpp).
 // The third classic mistake, cosine directions weighted as if uniform, is
-// path_radiance_cosine_directions_uniform_pdf of known_bugs/path_tracers.hpp.
+// path_radiance_cosine_directions_uniform_pdf of render/path_tracer_known_bugs.hpp.
 // Same signature as estimate_path_radiance.
 
 #include "core/math.hpp"
 #include "core/rng.hpp"
-#include "known_bugs/path_tracers.hpp"
+#include "render/path_tracer_known_bugs.hpp"
 #include "render/scene.hpp"
 #include "sampling/hemisphere.hpp"
 

@@ -1,8 +1,8 @@
 #pragma once
 // Samples of the importance-sampled path tracer (common/render/importance_path_tracer.hpp),
-// shared by its statistical checks (tests/checks/importance_sampling_checks.cpp) and by the
+// shared by its statistical checks (tests/render/importance_path_tracer_checks.cpp) and by the
 // unit tests that show those checks reject the known-wrong tracers
-// (tests/importance_sampling_test.cpp).
+// (tests/render/importance_path_tracer_test.cpp).
 //
 // Two tests of unbiasedness:
 //  - the furnace: the mean of n paths against Le (1 - a^(k+1)) / (1 - a), with the closed-form
@@ -25,7 +25,7 @@
 #include "render/path_tracer.hpp"
 #include "render/scene.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/furnace_paths.hpp"
+#include "render/path_tracer_furnace.hpp"
 
 namespace mcrt::testing {
 

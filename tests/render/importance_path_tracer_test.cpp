@@ -1,21 +1,21 @@
 // Chapter 07's samplers and importance-sampled path tracer (common/sampling/cosine_power.hpp,
 // common/render/importance_path_tracer.hpp): fixed inputs of the samplers, the closed forms of
 // the furnace, the uniform pdf giving chapter 05's tracer bit for bit, and that the checks'
-// procedures reject the known-wrong tracers of tests/known_bugs/importance_sampling.hpp.
-// (Its statistical checks are in tests/checks/importance_sampling_checks.cpp.)
+// procedures reject the known-wrong tracers of tests/render/importance_path_tracer_known_bugs.hpp.
+// (Its statistical checks are in tests/render/importance_path_tracer_checks.cpp.)
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "known_bugs/importance_sampling.hpp"
-#include "known_bugs/path_tracers.hpp"
+#include "render/importance_path_tracer_known_bugs.hpp"
+#include "render/path_tracer_known_bugs.hpp"
 #include "render/importance_path_tracer.hpp"
 #include "render/path_tracer.hpp"
 #include "sampling/cosine_power.hpp"
 #include "stats/check.hpp"
-#include "support/importance_plates.hpp"
+#include "render/importance_path_tracer_plates.hpp"
 
 using namespace mcrt;
 

@@ -6,11 +6,11 @@
 //    1 over the light, a z-test (the samplers work in area measure; solid angle is used only as
 //    this conversion, for the shadow ray's weight and the MIS weights);
 //  - the direct light on cornell's floor (depth 1) equals Lambert's polygon formula
-//    (support/quad_box_reference.hpp), for NEE and for MIS with either heuristic;
+//    (render/scene_quad_box_reference.hpp), for NEE and for MIS with either heuristic;
 //  - the furnace with Russian roulette: the mean is Le / (1 - a) (z-test);
 //  - NEE and MIS agree by blocks, rows, columns and the image border with the independent
-//    renderers of the quad box (support/quad_box_reference.hpp, which chapter 05's path tracer
-//    is checked against too) and of smallpt's sphere box (support/sphere_box_reference.hpp),
+//    renderers of the quad box (render/scene_quad_box_reference.hpp, which chapter 05's path tracer
+//    is checked against too) and of smallpt's sphere box (render/scene_sphere_box_reference.hpp),
 //    whose top rows start above the ceiling and see the light beyond its cap;
 //  - from such a point, above the ceiling, the light pdf per steradian integrates to 1 too;
 //  - NEE and MIS agree with chapter 07's cosine estimator block by block on a small cornell
@@ -36,9 +36,9 @@
 #include "sampling/light.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/nee_procedures.hpp"
-#include "support/quad_box_reference.hpp"
-#include "support/sphere_box_reference.hpp"
+#include "render/next_event_estimation_procedures.hpp"
+#include "render/scene_quad_box_reference.hpp"
+#include "render/scene_sphere_box_reference.hpp"
 
 namespace {
 
@@ -93,7 +93,7 @@ MCRT_STATISTICAL_CHECK(sphere_cone_light_pdf_per_steradian_integrates_to_one, 1e
       scene, x, glm::normalize(light.center - x), 100000, seed, 52);
 }
 
-// Above cornell-spheres' ceiling (support/nee_procedures.hpp): 20000 rays per strip each.
+// Above cornell-spheres' ceiling (render/next_event_estimation_procedures.hpp): 20000 rays per strip each.
 double above_ceiling_check(std::uint64_t seed, bool mis) {
   return mcrt::testing::above_ceiling_direct_light_p_value(
       20000, seed,
@@ -204,7 +204,7 @@ MCRT_STATISTICAL_CHECK_AT_MOST(nee_agrees_with_cosine_estimator_by_block_large_l
 // NEE and MIS against the renderers written from scratch in the test tree (their own scene
 // statements and intersections, cosine sampling, Russian roulette), by blocks, rows, columns
 // and border. The quad box: the same image and samples as the path tracer's check in
-// quad_box_checks.cpp, against the test tree's own NEE (reference_radiance_nee: against the
+// render/scene_quad_box_checks.cpp, against the test tree's own NEE (reference_radiance_nee: against the
 // path-traced reference, whose rare lamp hits skew its region means, the rows and border
 // rejected correct code at 12 % of seeds at 0.05), with paths ended by roulette and cut at
 // depth 50 (a bias below 6e-6 there, far below a block's standard error of about 1e-2).

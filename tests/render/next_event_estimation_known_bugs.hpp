@@ -1,7 +1,7 @@
 #pragma once
 // Known-wrong next-event estimators and MIS, each the chapter's loop with one mistake, kept so
-// the tests can show the checks' procedures (support/nee_procedures.hpp) reject them
-// (tests/nee_test.cpp). Same signature as render/next_event_estimation.hpp's estimators, with
+// the tests can show the checks' procedures (render/next_event_estimation_procedures.hpp) reject them
+// (tests/render/next_event_estimation_test.cpp). Same signature as render/next_event_estimation.hpp's estimators, with
 // the path end given as a depth cut (Russian roulette as there).
 
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
-// Procedures shared by tests/checks/nee_checks.cpp and tests/nee_test.cpp (which shows they
-// reject the known-wrong estimators of known_bugs/nee.hpp). Each returns a p-value.
+// Procedures shared by tests/render/next_event_estimation_checks.cpp and tests/render/next_event_estimation_test.cpp (which shows they
+// reject the known-wrong estimators of render/next_event_estimation_known_bugs.hpp). Each returns a p-value.
 
 #include <cmath>
 #include <cstdint>
@@ -157,7 +157,7 @@ inline double light_pdf_normalisation_p_value(const Scene& scene, const Vec3& x,
 /// of each (estimator A on sample indices [0, samples), B on [2^20, 2^20 + samples)), the
 /// difference of block means against its standard error (the sum of both variances of the
 /// mean), a z-test per block and channel, Sidak over all (conservative for the correlated
-/// channels, as in support/quad_box_reference.hpp). Both estimate the same expectation when
+/// channels, as in render/scene_quad_box_reference.hpp). Both estimate the same expectation when
 /// both are unbiased for it.
 template <class A, class B>
 double block_agreement_p_value(const Scene& scene, int width, int height, int block, int samples,

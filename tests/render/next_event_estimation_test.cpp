@@ -1,15 +1,15 @@
 // Light sampling, next-event estimation and MIS (render/light_sampling.hpp,
 // render/next_event_estimation.hpp, render/mis.hpp): the samplers' geometry, the change of
 // measure, MIS weights that sum to 1 for every sample, the furnace's exact case, the one-sided
-// lamp, and that the checks' procedures (support/nee_procedures.hpp, quad_box_reference.hpp)
-// reject every known-wrong variant of tests/known_bugs/nee.hpp.
-// (The statistical checks themselves are in tests/checks/nee_checks.cpp.)
+// lamp, and that the checks' procedures (render/next_event_estimation_procedures.hpp, quad_box_reference.hpp)
+// reject every known-wrong variant of tests/render/next_event_estimation_known_bugs.hpp.
+// (The statistical checks themselves are in tests/render/next_event_estimation_checks.cpp.)
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "known_bugs/nee.hpp"
+#include "render/next_event_estimation_known_bugs.hpp"
 #include "render/light_sampling.hpp"
 #include "render/mis.hpp"
 #include "render/next_event_estimation.hpp"
@@ -17,9 +17,9 @@
 #include "render/scene.hpp"
 #include "sampling/light.hpp"
 #include "stats/check.hpp"
-#include "support/nee_procedures.hpp"
-#include "support/quad_box_reference.hpp"
-#include "support/sphere_box_reference.hpp"
+#include "render/next_event_estimation_procedures.hpp"
+#include "render/scene_quad_box_reference.hpp"
+#include "render/scene_sphere_box_reference.hpp"
 
 using namespace mcrt;
 
@@ -166,7 +166,7 @@ TEST(NeeTest, FarFromTheLampItsDirectLightIsThePointLights) {
   EXPECT_NEAR(sum / n / expected, 1.0, 3e-3);
 }
 
-// The checks' direct-light procedure (nee_checks.cpp: four floor points, 20000 paths each).
+// The checks' direct-light procedure (render/next_event_estimation_checks.cpp: four floor points, 20000 paths each).
 double direct_light_p(const auto& estimate) {
   const Scene whole = make_cornell_box();
   const Scene room = mcrt::testing::cornell_room_without_boxes();

@@ -24,8 +24,8 @@
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
 #include "support/color_moments.hpp"
-#include "support/furnace_paths.hpp"
-#include "support/two_render_check.hpp"
+#include "render/path_tracer_furnace.hpp"
+#include "render/two_render_error_check.hpp"
 
 namespace {
 
@@ -137,7 +137,7 @@ MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
 
 // ---------------------------------------------------------------------------------------------
 // The two-render error of the chapters estimates Var[L] / spp in the furnace: the procedure and
-// its false-failure rate are in tests/support/two_render_check.hpp.
+// its false-failure rate are in tests/render/two_render_error_check.hpp.
 MCRT_STATISTICAL_CHECK(two_render_error_estimates_the_furnace_variance_over_spp, 1e-4) {
   return mcrt::testing::two_render_error_p_value(seed, two_render_mean_squared_error);
 }

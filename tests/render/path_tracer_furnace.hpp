@@ -1,6 +1,6 @@
 #pragma once
 // Path-tracer samples in the furnace, shared by the furnace checks (tests/checks/) and by the
-// unit tests that show those checks reject the known-wrong tracers of tests/known_bugs/.
+// unit tests that show those checks reject the known-wrong tracers of path_tracer_known_bugs.hpp.
 //
 // In the furnace (albedo a, emission Le everywhere) the radiance after at most k bounces is
 // Le (1 - a^(k+1)) / (1 - a) in every direction, with the variance furnace_radiance_variance

@@ -1,7 +1,7 @@
 #pragma once
 // Known-wrong path tracers, each the chapter's path loop with one mistake, kept so the tests
-// can show the furnace check (support/furnace_paths.hpp) rejects them
-// (tests/path_tracer_test.cpp). Same signature as estimate_path_radiance.
+// can show the furnace check (render/path_tracer_furnace.hpp) rejects them
+// (tests/render/path_tracer_test.cpp). Same signature as estimate_path_radiance.
 
 #include <optional>
 

@@ -2,7 +2,7 @@
 // The path tracer on the plain layers: estimate_path_radiance's loop, line for line, over a
 // closest hit that loops intersect_distance over every primitive and a uniform hemisphere
 // sampled with std::cos and std::sin. The fast layers (SphereSet, QuadSet, cos_sin_two_pi)
-// must give its images (tests/plain_layers_test.cpp) and beat its speed
+// must give its images (tests/render/path_tracer_plain_layers_test.cpp) and beat its speed
 // (bench_path_tracer's BM_ReferencePathTracer*). It shows a4.1's and a2.1's solutions, so the
 // kits that stub them leave it out (scripts/make-assignment WITHHELD_FILES); the closest hit
 // it loops over is support/plain_closest_hit.hpp, which every kit keeps.

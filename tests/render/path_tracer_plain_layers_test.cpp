@@ -1,5 +1,5 @@
 // The path tracer on the fast layers gives the image of the same path loop on the plain layers
-// (support/plain_path_tracer.hpp): same seed, so the same streams and the same uniforms.
+// (render/path_tracer_plain_layers.hpp): same seed, so the same streams and the same uniforms.
 //
 // The closest-hit searches return the plain loop's hit bit for bit (engines_differential_test),
 // but cos_sin_two_pi can differ from std::cos and std::sin in the last bit, and so can the
@@ -21,7 +21,7 @@
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/plain_path_tracer.hpp"
+#include "render/path_tracer_plain_layers.hpp"
 
 using namespace mcrt;
 

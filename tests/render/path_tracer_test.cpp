@@ -1,8 +1,8 @@
 // The path tracer of chapter 05 (common/render/path_tracer.hpp): where its directions go, that
 // it stays finite on the geometry's edge cases, exact furnace cases, independence of the thread
 // count, and that the furnace z-test of the checks rejects the known-wrong tracers of
-// tests/known_bugs/path_tracers.hpp.
-// (Its statistical checks against closed forms are in tests/checks/path_tracer_checks.cpp.)
+// tests/render/path_tracer_known_bugs.hpp.
+// (Its statistical checks against closed forms are in tests/render/path_tracer_checks.cpp.)
 
 #include <gtest/gtest.h>
 
@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "io/image_file.hpp"
-#include "known_bugs/path_tracers.hpp"
+#include "render/path_tracer_known_bugs.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "sampling/sampling.hpp"
 #include "sampling/sphere.hpp"
 #include "stats/check.hpp"
-#include "support/furnace_paths.hpp"
+#include "render/path_tracer_furnace.hpp"
 
 using namespace mcrt;
 

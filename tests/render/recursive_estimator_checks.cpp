@@ -23,7 +23,7 @@
 
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/recursive_furnace.hpp"
+#include "render/recursive_estimator_furnace.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Samples of the recursive N^k estimator in the furnace, shared by the furnace checks
-// (tests/checks/recursive_checks.cpp) and by the unit tests that show those checks reject the
-// wrong closed forms of tests/known_bugs/recursive.hpp.
+// (tests/render/recursive_estimator_checks.cpp) and by the unit tests that show those checks reject the
+// wrong closed forms of tests/render/recursive_estimator_known_bugs.hpp.
 //
 // In the furnace (albedo a, emission Le everywhere) incidentRadiance cut at depth k has, in
 // every direction and for every N, mean Le (1 + a + ... + a^k) and the variance of

@@ -1,7 +1,7 @@
 #pragma once
 // Known-wrong furnace moments of the recursive N^k estimator: what a wrong estimator would
-// converge to, kept so the tests can show the furnace checks (support/recursive_furnace.hpp)
-// reject them (tests/recursive_estimator_test.cpp).
+// converge to, kept so the tests can show the furnace checks (render/recursive_estimator_furnace.hpp)
+// reject them (tests/render/recursive_estimator_test.cpp).
 
 #include "render/recursive_estimator.hpp"
 

@@ -1,6 +1,6 @@
 // The recursive N^k estimator: exact ray counts, the depth cut, bounds and determinism, its
-// furnace closed forms, and the power of the furnace checks (tests/checks/recursive_checks.cpp)
-// against the wrong answers of tests/known_bugs/recursive.hpp.
+// furnace closed forms, and the power of the furnace checks (tests/render/recursive_estimator_checks.cpp)
+// against the wrong answers of tests/render/recursive_estimator_known_bugs.hpp.
 
 #include <cmath>
 #include <cstdint>
@@ -9,12 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "geometry/camera.hpp"
-#include "known_bugs/recursive.hpp"
+#include "render/recursive_estimator_known_bugs.hpp"
 #include "render/recursive_estimator.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/recursive_furnace.hpp"
+#include "render/recursive_estimator_furnace.hpp"
 
 namespace mcrt {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // Correlation between Monte Carlo samples that must be independent, as p-values; shared by
-// tests/checks/correlation_checks.cpp and the unit test that shows they reject correlated
-// streams (tests/known_bugs/correlated_streams.hpp).
+// tests/render/render_correlation_checks.cpp and the unit test that shows they reject correlated
+// streams (tests/render/render_correlation_known_bugs.hpp).
 //
 // For independent values x_i, y_i with known mean mu and variance sigma^2, the standardised
 // products (x_i - mu)(y_i - mu) / sigma^2 have mean 0 and variance 1, so over n pairs

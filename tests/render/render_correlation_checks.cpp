@@ -4,10 +4,10 @@
 //    pixel has the same known mean and variance (furnace_radiance, furnace_radiance_variance)
 //    and, with independent streams, no correlation at all;
 //  - the streams of adjacent seeds and adjacent stream indices, beyond the first draws that
-//    rng_neighbouring_seeds_and_streams_are_independent (rng_checks.cpp) looks at: draws 8 to
+//    rng_neighbouring_seeds_and_streams_are_independent (core/rng_checks.cpp) looks at: draws 8 to
 //    39 against the same draw and its neighbours of the next generator (lags -1, 0, +1), and
 //    draws 1000 to 1007.
-// The test statistics are in tests/support/correlation.hpp. Every check is designed for a
+// The test statistics are in tests/render/render_correlation.hpp. Every check is designed for a
 // false-failure rate alpha = 1e-4.
 
 #include <cstdint>
@@ -19,7 +19,7 @@
 #include "render/render.hpp"
 #include "render/scene.hpp"
 #include "stats/check.hpp"
-#include "support/correlation.hpp"
+#include "render/render_correlation.hpp"
 
 namespace {
 

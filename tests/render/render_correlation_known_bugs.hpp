@@ -1,6 +1,6 @@
 #pragma once
 // Known-wrong pixel loops whose samples are correlated, for the correlation checks
-// (tests/checks/correlation_checks.cpp; rejected in tests/correlation_test.cpp). Each renders
+// (tests/render/render_correlation_checks.cpp; rejected in tests/render/render_correlation_test.cpp). Each renders
 // one value (the channel mean) per pixel of the furnace at one sample per pixel, as the real
 // render loop does, but keys the pixel's stream wrongly.
 

@@ -1,13 +1,13 @@
-// The correlation checks' procedures (tests/support/correlation.hpp) reject pixel loops whose
-// streams are keyed wrongly (tests/known_bugs/correlated_streams.hpp), at the sizes, seed and
-// alpha of the checks in tests/checks/correlation_checks.cpp; the right keying, through the
+// The correlation checks' procedures (tests/render/render_correlation.hpp) reject pixel loops whose
+// streams are keyed wrongly (tests/render/render_correlation_known_bugs.hpp), at the sizes, seed and
+// alpha of the checks in tests/render/render_correlation_checks.cpp; the right keying, through the
 // same loop, passes beside them.
 
 #include <gtest/gtest.h>
 
-#include "known_bugs/correlated_streams.hpp"
+#include "render/render_correlation_known_bugs.hpp"
 #include "stats/check.hpp"
-#include "support/correlation.hpp"
+#include "render/render_correlation.hpp"
 
 using namespace mcrt;
 namespace bugs = mcrt::testing::known_bugs;

@@ -19,7 +19,7 @@
 #include "render/russian_roulette.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/russian_roulette_furnace.hpp"
+#include "render/russian_roulette_furnace.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Russian-roulette paths in the furnace, and the tests run on them, shared by the statistical
-// checks (tests/checks/russian_roulette_checks.cpp) and by the unit tests that show those
-// checks reject the known-wrong variants of tests/known_bugs/russian_roulette.hpp.
+// checks (tests/render/russian_roulette_checks.cpp) and by the unit tests that show those
+// checks reject the known-wrong variants of tests/render/russian_roulette_known_bugs.hpp.
 //
 // In the furnace (albedo a < 1, emission Le everywhere) roulette's radiance has the mean
 // Le / (1 - a) in every direction, fixed q has the variance furnace_roulette_variance, and its

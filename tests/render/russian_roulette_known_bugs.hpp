@@ -1,7 +1,7 @@
 #pragma once
 // Known-wrong Russian roulette, each chapter 06's path loop (common/render/russian_roulette.hpp)
 // with one mistake, kept so the tests can show that the checks reject them
-// (tests/russian_roulette_test.cpp): the furnace mean z-test catches the first three, the
+// (tests/render/russian_roulette_test.cpp): the furnace mean z-test catches the first three, the
 // path-length chi-square the fourth, whose mean is right. Same signature as
 // estimate_path_radiance_roulette.
 

@@ -1,21 +1,21 @@
 // Russian roulette (common/render/russian_roulette.hpp): its closed forms against direct sums
 // and chapter 05's, the survival probability of each policy, exact properties of the path
 // loop, the furnace driver's independence of the thread count, and that the statistical
-// checks' procedures reject the known-wrong variants of tests/known_bugs/russian_roulette.hpp.
-// (Its statistical checks against the closed forms are in tests/checks/russian_roulette_checks.cpp.)
+// checks' procedures reject the known-wrong variants of tests/render/russian_roulette_known_bugs.hpp.
+// (Its statistical checks against the closed forms are in tests/render/russian_roulette_checks.cpp.)
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "known_bugs/russian_roulette.hpp"
+#include "render/russian_roulette_known_bugs.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
 #include "render/russian_roulette.hpp"
 #include "render/scene.hpp"
 #include "stats/check.hpp"
-#include "support/russian_roulette_furnace.hpp"
+#include "render/russian_roulette_furnace.hpp"
 
 using namespace mcrt;
 

@@ -1,5 +1,5 @@
 // The quad Cornell box (`cornell`, render/scene.cpp make_cornell_box) against an independent
-// reference (support/quad_box_reference.hpp):
+// reference (render/scene_quad_box_reference.hpp):
 //  - the project's path tracer, through the project's render loop, agrees block by block and
 //    in every channel with a renderer written from scratch in the test tree (its own scene
 //    statement, triangles by Moller-Trumbore, cosine sampling, Russian roulette, box filter);
@@ -10,7 +10,7 @@
 #include "render/path_tracer.hpp"
 #include "render/scene.hpp"
 #include "stats/check.hpp"
-#include "support/quad_box_reference.hpp"
+#include "render/scene_quad_box_reference.hpp"
 
 namespace {
 
@@ -31,7 +31,7 @@ MCRT_STATISTICAL_CHECK_AT_MOST(path_tracer_agrees_with_independent_renderer_corn
       });
 }
 
-// Four floor points (support/quad_box_reference.hpp direct_light_points), 2e5 paths each: the
+// Four floor points (render/scene_quad_box_reference.hpp direct_light_points), 2e5 paths each: the
 // lamp covers about 0.7% of the hemisphere above the centre point, so about 1400 paths reach
 // it and the relative standard error is about 3%.
 MCRT_STATISTICAL_CHECK(cornell_lamp_direct_light_matches_lambert_formula, 1e-4) {

@@ -14,7 +14,7 @@
 // and the closed form of the irradiance a uniform polygon light gives a point (Lambert's
 // formula), with the parallel-rectangle form factor to check it against.
 //
-// Procedures shared by tests/checks/quad_box_checks.cpp and tests/quad_box_reference_test.cpp:
+// Procedures shared by tests/render/scene_quad_box_checks.cpp and tests/render/scene_quad_box_reference_test.cpp:
 // each returns a p-value.
 
 #include <algorithm>

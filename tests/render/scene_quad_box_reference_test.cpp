@@ -1,15 +1,15 @@
-// The independent reference for the quad Cornell box (support/quad_box_reference.hpp): its
+// The independent reference for the quad Cornell box (render/scene_quad_box_reference.hpp): its
 // closed form against a second closed form, its scene statement against `cornell` ray by ray,
-// and the procedures of tests/checks/quad_box_checks.cpp rejecting known-wrong tracers.
+// and the procedures of tests/render/scene_quad_box_checks.cpp rejecting known-wrong tracers.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "known_bugs/path_tracers.hpp"
+#include "render/path_tracer_known_bugs.hpp"
 #include "render/path_tracer.hpp"
 #include "render/scene.hpp"
-#include "support/quad_box_reference.hpp"
+#include "render/scene_quad_box_reference.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;

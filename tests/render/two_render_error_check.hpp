@@ -1,7 +1,7 @@
 #pragma once
 // The two-render error of the chapters (common/render/two_render_error.hpp) against a closed
-// form, shared by its statistical check (tests/checks/path_tracer_checks.cpp) and by the unit
-// test that shows the check rejects a known-wrong variant (tests/known_bugs_test.cpp).
+// form, shared by its statistical check (tests/render/path_tracer_checks.cpp) and by the unit
+// test that shows the check rejects a known-wrong variant (tests/stats/known_bugs_test.cpp).
 //
 // In the furnace every sample of a pixel is a path of known variance Var[L]
 // (furnace_radiance_variance), so a pixel of n samples has variance Var[L] / n, and for

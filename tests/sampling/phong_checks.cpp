@@ -9,7 +9,7 @@
 #include "sampling/phong.hpp"
 #include "stats/check.hpp"
 #include "stats/hypothesis.hpp"
-#include "support/phong_lobe.hpp"
+#include "sampling/phong_lobe.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;

@@ -1,5 +1,5 @@
 #pragma once
-// What the Phong tests share (tests/phong_test.cpp, tests/checks/phong_checks.cpp and the
+// What the Phong tests share (tests/sampling/phong_test.cpp, tests/sampling/phong_checks.cpp and the
 // known-bug tests): a basis round the lobe's axis built independently of Frame, the binning of
 // the lobe on cells of equal pdf measure, the chi-square p-values of the lobe and of the full
 // material, and the directional albedo by quadrature.
@@ -70,7 +70,7 @@ Binning<Vec3> lobe_cdf_binning() {
           &detail::lobe_cdf_parameters<M>};
 }
 
-/// The generator streams of the Phong checks (tests/checks/phong_checks.cpp), apart from the
+/// The generator streams of the Phong checks (tests/sampling/phong_checks.cpp), apart from the
 /// other checks' streams; the known-bug tests reuse them, so they see the same uniforms.
 inline constexpr std::uint64_t k_phong_hemisphere_stream = 320;  // + 0, 1: m = 1, 10
 inline constexpr std::uint64_t k_phong_cdf_stream = 330;         // + 0..4: m = 1 .. 1e4

@@ -1,6 +1,6 @@
 // The glossy lobe of sampling/phong.hpp: its sampler at the extremes of u and m, its pdf's
 // integral, energy conservation and reciprocity of its BRDF. (The chi-square tests of its
-// samplers against their pdfs are statistical: tests/checks/phong_checks.cpp.)
+// samplers against their pdfs are statistical: tests/sampling/phong_checks.cpp.)
 
 #include <array>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "core/rng.hpp"
 #include "sampling/sampling.hpp"
 #include "stats/check.hpp"
-#include "support/phong_lobe.hpp"
+#include "sampling/phong_lobe.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;

@@ -1,6 +1,6 @@
 #pragma once
 // Known-wrong samplers and pdfs, kept so the tests can show the chi-square sampler test
-// (stats/sampler_tests.hpp) rejects them (tests/known_bugs_test.cpp).
+// (stats/sampler_tests.hpp) rejects them (tests/stats/known_bugs_test.cpp).
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Samplers on fixed inputs: the points lie in their domains and the mappings are the ones
 // their pdfs describe. (Their distributions are checked with chi-square tests in
-// tests/checks/sampling_checks.cpp.)
+// tests/sampling/sampling_checks.cpp.)
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // Known bugs are caught. Each test below takes a deliberately wrong variant of a piece of the
-// core from tests/known_bugs/ (where every variant is written once) and asserts that the
+// core from the tests/<layer>/*_known_bugs.hpp files (where every variant is written once) and asserts that the
 // statistical test the real piece passes in the suite rejects it: the same test function, the
 // same sample sizes, the same seed (k_suite_seed, or the suite's seed offset for that check)
 // and the same alpha. The real piece is run beside it, so a test that rejects everything
-// would fail here too. (The wrong path tracers are in tests/path_tracer_test.cpp, the wrong
-// Monte Carlo estimators in tests/monte_carlo_test.cpp, the wrong furnace moments in
-// tests/recursive_estimator_test.cpp.)
+// would fail here too. (The wrong path tracers are in tests/render/path_tracer_test.cpp, the wrong
+// Monte Carlo estimators in tests/integration/monte_carlo_test.cpp, the wrong furnace moments in
+// tests/render/recursive_estimator_test.cpp.)
 
 #include <cmath>
 #include <filesystem>
@@ -19,8 +19,8 @@
 #include "integration/integrands.hpp"
 #include "integration/log_grid.hpp"
 #include "integration/quadrature.hpp"
-#include "known_bugs/estimators.hpp"
-#include "known_bugs/samplers.hpp"
+#include "integration/monte_carlo_known_bugs.hpp"
+#include "sampling/sampling_known_bugs.hpp"
 #include "render/two_render_error.hpp"
 #include "sampling/sampling.hpp"
 #include "stats/check.hpp"
@@ -28,10 +28,10 @@
 #include "io/plot.hpp"
 #include "stats/report.hpp"
 #include "stats/sampler_tests.hpp"
-#include "support/image_decoding.hpp"
-#include "support/phong_lobe.hpp"
+#include "io/image_file_decoding.hpp"
+#include "sampling/phong_lobe.hpp"
 #include "support/small_trials.hpp"
-#include "support/two_render_check.hpp"
+#include "render/two_render_error_check.hpp"
 
 using namespace mcrt;
 using namespace mcrt::testing;
@@ -79,7 +79,7 @@ TEST_F(KnownBugsTest, CosineSamplerWithAnExtraFactorTwoIsRejected) {
             k_sampler_alpha);
 }
 
-// The Phong lobe's checks (tests/checks/phong_checks.cpp): the same cells, streams and seed.
+// The Phong lobe's checks (tests/sampling/phong_checks.cpp): the same cells, streams and seed.
 TEST_F(KnownBugsTest, PhongLobePdfNormalisedWithMPlusTwoIsRejected) {
   EXPECT_GE(phong_lobe_cdf_p_value<10>(sample_phong_lobe, phong_lobe_pdf, k_seed,
                                        k_phong_cdf_stream + 1, "right"),
@@ -194,7 +194,7 @@ TEST_F(KnownBugsTest, GeneratorStreamReusedAcrossTrialsIsRejected) {
   EXPECT_LT(small_trials_p_value(gaussian_estimate, k_seed, SameStreamTrials{}), 1e-4);
 }
 
-// ---- The two-render error against Var[L] / spp (tests/support/two_render_check.hpp, 1e-4) ----
+// ---- The two-render error against Var[L] / spp (tests/render/two_render_error_check.hpp, 1e-4) ----
 
 TEST_F(KnownBugsTest, TwoRenderErrorWithoutTheHalfIsRejected) {
   EXPECT_GE(two_render_error_p_value(k_seed, two_render_mean_squared_error), 1e-4);
