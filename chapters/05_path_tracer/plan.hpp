@@ -11,8 +11,6 @@
 
 namespace mcrt {
 
-// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
-inline constexpr double k_max_rays = 1e11;
 // A generous mean of rays per sample of the reference's estimator (MIS: 2 per vertex).
 inline constexpr double k_reference_rays_per_sample = 32.0;
 
@@ -55,9 +53,7 @@ inline RayWork predicted_work(const auto& o) {
 inline void refuse_impossible_work(const auto& o) {
   check_image_size(o.image);
   // The furnace's reference has no depth cut: at albedo 1 its paths never end.
-  if (o.scene.scene == "furnace" && o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+  if (o.scene.scene == "furnace") check_furnace_albedo(o.scene.params.furnace_albedo);
   if (o.reference_spp > 0) check_reference_folder(reference_dir(o));
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --depth, --width, --height",
                   o.common.threads, "lower one of them");

@@ -53,8 +53,6 @@ const Chapter k_chapter{"ch06_russian_roulette",
                         "roulette's, the variance, rays and time of each q, and the path lengths; "
                         "then the scene rendered both ways."};
 
-// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
-constexpr double k_max_rays = 1e11;
 // The survival per bounce assumed when predicting the throughput policy's rays outside the
 // furnace (an expectation, not a bound: the Cornell boxes keep at most 0.73 per bounce).
 constexpr double k_typical_survival = 0.8;
@@ -94,9 +92,7 @@ RayWork predicted_work(const Options& o) {
 
 void check_request(const Options& o) {
   check_image_size(o.image);
-  if (o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+  check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --spp, --depth",
                   o.common.threads, "lower one of them, or the image size");
   // At most 3 images at once (measured: 34 bytes per pixel at 1024x512).

@@ -51,7 +51,6 @@ const Chapter k_chapter{"ch08_next_event_estimation",
                         "shoot-out of every estimator of chapters 05-08 on the furnace, the "
                         "Cornell box at light scales 0.1, 1 and 3, and the sphere Cornell box."};
 
-constexpr double k_max_rays = 1e11;          // about 1.4 hours at 2e7 rays per second
 constexpr double k_rays_per_sample = 32.0;   // a generous mean for NEE and MIS paths (2 per vertex)
 
 struct Options {
@@ -120,9 +119,7 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   // The shoot-out's furnace ends paths by roulette only: at albedo 1 they never end.
-  if (o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+  check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays,
                   "--spp, --reference-spp, --plates-spp, --width, --height",
                   o.common.threads, "lower one of them");

@@ -50,6 +50,18 @@ TEST(RayLimitTest, RefusalIsOneLineWithTheCountTheTimeAndTheRemedy) {
   EXPECT_NE(message.find("lower --spp"), std::string::npos) << message;
 }
 
+// The furnace's albedo, refused in one place for every chapter: below 1 accepted, 1 and above
+// (an infinite radiance, paths that never end) refused with one line naming --albedo.
+TEST(RayLimitTest, FurnaceAlbedoBelowOneOnly) {
+  auto check = [](double albedo) { return refusal([&] { mcrt::check_furnace_albedo(albedo); }); };
+  EXPECT_EQ(check(0.0), "");
+  EXPECT_EQ(check(std::nextafter(1.0, 0.0)), "");
+  EXPECT_EQ(check(1.0).rfind("--albedo: give an albedo below 1", 0), 0u) << check(1.0);
+  EXPECT_EQ(check(1.0).find('\n'), std::string::npos);
+  EXPECT_NE(check(1.5), "");
+  EXPECT_NE(check(std::numeric_limits<double>::infinity()), "");
+}
+
 TEST(WorkLimitTest, AcceptsUpToTheLimitAndRefusesJustAboveIt) {
   const double limit = 1e12;
   auto check = [&](double points) {
