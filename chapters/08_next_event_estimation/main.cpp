@@ -89,7 +89,7 @@ void run(const CLI::App& app, const Options& o) {
   // The shoot-out's furnace ends paths by roulette only: at albedo 1 they never end.
   check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays,
-                  "--spp, --reference-spp, --plates-spp, --width, --height",
+                  "--spp, --reference-spp, --plates-spp, --width, --height, --albedo",
                   o.common.threads, "lower one of them");
   // Every scene's estimators and references, their snapshots and the contact sheet (measured:
   // 3.4 KB per pixel at 512x256 whatever --ray-budgets; counted 170 images, 4 KB).
