@@ -8,13 +8,13 @@ cd "$repo_root"
 
 # Everything the project needs from Debian: build tools, libraries, gnuplot for the plots,
 # python3 for the robustness suite (tests/robustness/robustness.py), pandoc for the docs pages
-# in HTML (scripts/render-docs).
+# in HTML (scripts/render-docs), clang-format for the style (scripts/format-check).
 debian_packages=(
   cmake g++ make pkg-config
   libglm-dev libstb-dev libcli11-dev libpcg-cpp-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev libboost-math-dev
   gnuplot-nox fonts-dejavu-core
-  python3 pandoc
+  python3 pandoc clang-format
 )
 
 # The compilers of the portability builds (scripts/test --compiler NAME): the Debian package

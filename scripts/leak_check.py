@@ -184,7 +184,7 @@ def kit_references(assignment, tree, make):
     of its stubbed tasks (with a3's known-wrong recursions, never in a kit). Not evidence
     against an answer: a window of a region the kit keeps (an earlier assignment's, released),
     of a stub, or of a withheld file of released tasks only that the kit ships
-    (support/plain_path_tracer.hpp in a5). Not evidence against a withheld region or file
+    (render/path_tracer_plain_layers.hpp in a5). Not evidence against a withheld region or file
     either: a window of a file that ships in every kit (regions cut out): such files are
     scaffolding the lanes engines and reference tracers share with the rest of the project."""
     files, sources, regions = tree
@@ -199,7 +199,7 @@ def kit_references(assignment, tree, make):
     kept += [tokenize("\n".join(make.rewrite(lines, [r for r in regions if r["file"] == f], stubbed)))
              for f, lines in sources.items()]
     answer_kept = shapes(kept)
-    always = set(make.WITHHELD_FILES) | {"tests/known_bugs/assignments.hpp"}
+    always = set(make.WITHHELD_FILES) | {"tests/render/recursive_estimator_known_bugs_a3.hpp"}
     scaffolding = []
     for f in files:
         if f.endswith(make.SOURCE_EXT) and f.startswith(("common/", "chapters/", "tests/")) \
@@ -226,7 +226,7 @@ def kit_references(assignment, tree, make):
             references[name] = (region_tokens(r, sources), support_kept if r["withheld"] else answer_kept)
     withheld = [f for f, tasks in make.WITHHELD_FILES.items() if tasks & stubbed]
     if "a3.1" in stubbed:
-        withheld.append("tests/known_bugs/assignments.hpp")  # a3's recursion but for one line
+        withheld.append("tests/render/recursive_estimator_known_bugs_a3.hpp")  # a3's recursion but for one line
     for f in withheld:
         path = os.path.join(make.ROOT, f)
         if os.path.isfile(path):

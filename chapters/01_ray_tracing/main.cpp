@@ -31,9 +31,6 @@ const Chapter k_chapter{"ch01_ray_tracing",
                         "Chapter 01: plain ray tracing. One camera ray per sample, the closest "
                         "hit, shaded by direct light from a point light (no bounces)."};
 
-// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
-constexpr double k_max_rays = 1e11;
-
 struct Options {
   CommonOptions common;
   SceneOptions scene;

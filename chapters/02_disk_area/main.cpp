@@ -30,10 +30,13 @@
 #include "io/table.hpp"
 #include "io/work_limit.hpp"
 #include "io/summary.hpp"
+#include "ball_studies.hpp"
+#include "plan.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 
 using namespace mcrt;
+using namespace mcrt::ch02;
 
 namespace {
 
@@ -56,19 +59,6 @@ constexpr int k_per_decade = 4;  // sizes per factor of 10 on the N grids
 constexpr double k_max_disk_points = 1e12;
 constexpr double k_max_ball_coordinates = 1e11;
 
-// Every estimate has its own random stream, keyed by (part, what it serves, trial), never by
-// thread: the output does not depend on --threads.
-enum Part : std::uint64_t { disk_error = 0, ball_table = 1, ball_error = 2, picture = 3 };
-constexpr std::uint64_t k_parts = 256, k_indices = 1 << 24, k_trials = 1ull << 32;
-
-Column real(const char* name) { return {name, Column::real, 10}; }
-Column integer(const char* name) { return {name, Column::integer}; }
-
-double sum(const std::vector<std::uint64_t>& grid) {
-  return std::accumulate(grid.begin(), grid.end(), 0.0,
-                         [](double s, std::uint64_t n) { return s + static_cast<double>(n); });
-}
-
 // 1. Error against N in 2D: trials x (4 M / N) at every N of the grid.
 Table disk_study(const std::vector<std::uint64_t>& grid, const Options& o, ProgressBar& progress) {
   Table table({integer("n"), integer("trials"), real("mean_estimate"), real("bias"),
@@ -80,55 +70,6 @@ Table disk_study(const std::vector<std::uint64_t>& grid, const Options& o, Progr
         [&](std::uint64_t t) { return stream_key({{disk_error, k_parts}, {i, k_indices}, {t, k_trials}}); });
     table.add_row({grid[i], o.trials, e.mean(), e.bias(), e.stddev(),
                    disk_area_theory_std(grid[i]), e.rmse()});
-  }
-  return table;
-}
-
-// trials x (2^k M / N) at one N, estimate t from stream (key, t).
-ErrorStats ball_trials(int k, std::uint64_t n, const Options& o, ProgressBar& progress,
-                       std::uint64_t key) {
-  return repeated_estimates(
-      n, o.trials, unit_ball_volume(k), o.common.seed, o.common.threads, progress,
-      [k](std::uint64_t m, Rng& rng) { return estimate_ball_volume(k, m, rng); },
-      [key](std::uint64_t t) { return stream_key({{key, k_parts * k_indices}, {t, k_trials}}); });
-}
-
-// 2. The k-ball at N = --ball-n for each k of --dims.
-Table ball_study(const Options& o, ProgressBar& progress) {
-  Table table({integer("k"), integer("n"), integer("trials"), real("exact_volume"),
-               real("mean_estimate"), real("empirical_std"), real("theory_std"),
-               real("relative_std")});
-  for (int k : o.dims) {
-    const auto kk = static_cast<std::uint64_t>(k);
-    const ErrorStats e = ball_trials(k, o.ball_n, o, progress,
-                                     stream_key({{ball_table, k_parts}, {kk, k_indices}}));
-    const double exact = unit_ball_volume(k), theory = ball_volume_theory_std(k, o.ball_n);
-    table.add_row({k, o.ball_n, o.trials, exact, e.mean(), e.stddev(), theory, theory / exact});
-  }
-  return table;
-}
-
-// 2b. rmse against N for k = 2, 5, 10, and each k's fitted slope of log(rmse) on log(N).
-Table ball_error_study(const std::vector<std::uint64_t>& grid, const Options& o,
-                       ProgressBar& progress, Table& slopes) {
-  Table table({integer("k"), integer("n"), integer("trials"), real("mean_estimate"),
-               real("empirical_std"), real("theory_std"), real("rmse"), real("exact_volume"),
-               real("relative_theory_std"), real("relative_rmse")});
-  for (int k : {2, 5, 10}) {
-    const double exact = unit_ball_volume(k);
-    std::vector<double> n, rmse;
-    for (std::uint64_t i = 0; i < grid.size(); ++i) {
-      const auto kk = static_cast<std::uint64_t>(k);
-      const ErrorStats e = ball_trials(
-          k, grid[i], o, progress, stream_key({{ball_error, k_parts}, {kk, 1 << 16}, {i, 256}}));
-      const double theory = ball_volume_theory_std(k, grid[i]);
-      table.add_row({k, grid[i], o.trials, e.mean(), e.stddev(), theory, e.rmse(), exact,
-                     theory / exact, e.rmse() / exact});
-      n.push_back(static_cast<double>(grid[i]));
-      rmse.push_back(e.rmse());
-    }
-    const LineFit fit = fit_log_log(n, rmse);
-    slopes.add_row({k, fit.slope, fit.slope_standard_error});
   }
   return table;
 }

@@ -135,23 +135,6 @@ Results tabulate(const Plan& plan, const std::vector<Estimate>& estimates, doubl
   return r;
 }
 
-// The three error plots (studies 0 and 1 are the 1D integrands; the disk is the ball at
-// k = 2) and the slopes against k.
-void write_plots(const Options& o, const Plan& plan, const Results& r) {
-  std::size_t disk = 0;
-  for (std::size_t s = 0; s < plan.studies.size(); ++s)
-    if (plan.studies[s].kind == Kind::unit_ball_kd && plan.studies[s].dims == k_disk_dims) disk = s;
-  const auto plot = [&](const char* name, const char* title, std::size_t s, const char* label) {
-    write_plot(o.common.dir, error_plot(name, title, plan.studies[s].name(), plan.studies[s].dims,
-                                        r.lines[2 * s], r.lines[2 * s + 1], label));
-  };
-  plot("smooth_1d", "e^{-x^2} on [0,1]: error against N", 0, "N^{-2}");
-  plot("discontinuous_1d", "ceil(sin x^2) on [0,3]: error against N", 1, "N^{-1}");
-  plot("disk_2d", "Unit disk in [-1,1]^2: error against N", disk, "N^{-1/2} (n^{-1})");
-  write_plot(o.common.dir, slopes_plot(r.budget.numbers("dims")));
-  write_plot(o.common.dir, budget_plot(o.max_evaluations, r.budget));
-}
-
 void run(const CLI::App& app, const Options& o) {
   // No images: the program, its threads and its tables (a failed allocation still says why).
   check_memory_limit(images_in_memory(0.0, 0.0, o.common.threads, "the program and its threads"),

@@ -11,6 +11,8 @@
 #include "io/plot.hpp"
 #include "io/table.hpp"
 
+#include "study_plan.hpp"
+
 namespace mcrt {
 
 // One method's fitted slope, its theory, and c of the guide line c N^theory through the
@@ -124,6 +126,23 @@ inline Plot budget_plot(std::uint64_t budget, const Table& at_budget) {
               "  '' " + series("unit_ball_kd", "monte_carlo_rmse") +
               " pt 11 lw 2 lc rgb '#ff7f0e' title 'Monte Carlo, ball indicator'";
   return plot;
+}
+
+// The three error plots (studies 0 and 1 are the 1D integrands; the disk is the ball at
+// k = 2) and the slopes against k.
+inline void write_plots(const auto& o, const Plan& plan, const auto& r) {
+  std::size_t disk = 0;
+  for (std::size_t s = 0; s < plan.studies.size(); ++s)
+    if (plan.studies[s].kind == Kind::unit_ball_kd && plan.studies[s].dims == k_disk_dims) disk = s;
+  const auto plot = [&](const char* name, const char* title, std::size_t s, const char* label) {
+    write_plot(o.common.dir, error_plot(name, title, plan.studies[s].name(), plan.studies[s].dims,
+                                        r.lines[2 * s], r.lines[2 * s + 1], label));
+  };
+  plot("smooth_1d", "e^{-x^2} on [0,1]: error against N", 0, "N^{-2}");
+  plot("discontinuous_1d", "ceil(sin x^2) on [0,3]: error against N", 1, "N^{-1}");
+  plot("disk_2d", "Unit disk in [-1,1]^2: error against N", disk, "N^{-1/2} (n^{-1})");
+  write_plot(o.common.dir, slopes_plot(r.budget.numbers("dims")));
+  write_plot(o.common.dir, budget_plot(o.max_evaluations, r.budget));
 }
 
 }  // namespace mcrt

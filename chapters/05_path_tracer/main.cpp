@@ -21,7 +21,7 @@
 // their two-render error falling on while their error against the reference levels off.
 //
 // The loop above is estimate_path_radiance (render/path_tracer.hpp). By default the chapter
-// runs it four paths at a time (render/path_tracer_lanes.hpp, --engine lanes): the same image,
+// runs it four paths at a time (engine/path_tracer_lanes.hpp, --engine lanes): the same image,
 // bit for bit, 1.2x to 1.7x as fast (1.7x on the spheres of cornell-spheres, 1.2x on the
 // quads of cornell); --engine loop runs it one path at a time.
 
@@ -46,7 +46,7 @@
 #include "io/summary.hpp"
 #include "io/table.hpp"
 #include "render/path_tracer.hpp"
-#include "render/path_tracer_lanes.hpp"
+#include "engine/path_tracer_lanes.hpp"
 #include "render/relative_error.hpp"
 #include "render/render.hpp"
 #include "render/render_totals.hpp"

@@ -28,9 +28,7 @@
 
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
-#include "io/memory_limit.hpp"
 #include "io/output.hpp"
-#include "io/ray_limit.hpp"
 #include "io/table.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
@@ -39,6 +37,7 @@
 #include "render/scene.hpp"
 
 #include "furnace_studies.hpp"
+#include "plan.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 
@@ -53,12 +52,6 @@ const Chapter k_chapter{"ch06_russian_roulette",
                         "roulette's, the variance, rays and time of each q, and the path lengths; "
                         "then the scene rendered both ways."};
 
-// The most rays one run may trace: about 1.4 hours at 2e7 rays per second.
-constexpr double k_max_rays = 1e11;
-// The survival per bounce assumed when predicting the throughput policy's rays outside the
-// furnace (an expectation, not a bound: the Cornell boxes keep at most 0.73 per bounce).
-constexpr double k_typical_survival = 0.8;
-
 struct Options {
   CommonOptions common;
   SceneOptions scene;
@@ -69,41 +62,6 @@ struct Options {
   std::vector<double> q{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};  // the efficiency sweep
   int paths = 200000;  // furnace paths per row of every study
 };
-
-// Every q a flag takes: 0 would stop every path at once, 1 never (the furnace is closed).
-constexpr double k_lowest_q = 0.001, k_highest_q = 0.999;
-
-// The expected rays of a roulette path (d + 1/(1 - q)), at a survival of `q`.
-double roulette_rays(int min_depth, double q) { return min_depth + 1.0 / (1.0 - q); }
-
-// The rays the run is expected to trace: exact bounds for the depth cut, expectations for
-// roulette (its paths have no longest length).
-RayWork predicted_work(const Options& o) {
-  const double a = o.scene.params.furnace_albedo;
-  const double q_throughput = std::max(a, k_typical_survival);
-  const double q_render = o.roulette.policy == RoulettePolicy::fixed ? o.roulette.q : q_throughput;
-  const double pixels = static_cast<double>(o.image.width) * o.image.height;
-  double rays = pixels * o.spp * (o.depth + 1.0 + roulette_rays(o.roulette.min_depth, q_render));
-  double furnace = roulette_rays(o.roulette.min_depth, o.roulette.q);  // path lengths
-  for (int k = 0; k <= o.depth; ++k) furnace += k + 1.0 + roulette_rays(k, q_render);
-  for (double q : o.q) furnace += roulette_rays(o.roulette.min_depth, q);
-  furnace += roulette_rays(o.roulette.min_depth, q_throughput);
-  rays += furnace * o.paths;
-  return {rays, "renders + furnace studies, expected rays for roulette"};
-}
-
-void check_request(const Options& o) {
-  check_image_size(o.image);
-  if (o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
-  check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --spp, --depth",
-                  o.common.threads, "lower one of them, or the image size");
-  // At most 3 images at once (measured: 34 bytes per pixel at 1024x512).
-  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 3.0,
-                                      o.common.threads, "3 images of --width x --height"),
-                     "--width, --height", "lower them");
-}
 
 template <class Estimator>
 RenderResult render_image(const Camera& camera, const Options& o, const char* label,

@@ -49,8 +49,6 @@ const Chapter k_chapter{"ch07_importance_sampling",
                         "each, in the furnace and in a scene, and uniform against cosine at "
                         "equal samples and at equal time."};
 
-constexpr double k_max_rays = 1e11;  // about 1.4 hours at 2e7 rays per second
-
 struct Options {
   CommonOptions common;
   SceneOptions scene;
@@ -100,9 +98,7 @@ struct RenderWithPdf {
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   // The furnace study's closed forms (mean and variance) diverge at albedo 1.
-  if (o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+  check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays,
                   "--spp, --reference-spp, --depth, --width, --height", o.common.threads,
                   "lower one of them");

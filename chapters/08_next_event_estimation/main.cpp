@@ -25,7 +25,6 @@
 #include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/memory_limit.hpp"
-#include "io/ray_limit.hpp"
 #include "io/reference_cache.hpp"
 #include "io/table.hpp"
 #include "render/mis.hpp"
@@ -36,6 +35,7 @@
 #include "render/scene.hpp"
 
 #include "estimators.hpp"
+#include "plan.hpp"
 #include "plates.hpp"
 #include "plots.hpp"
 #include "report.hpp"
@@ -51,9 +51,6 @@ const Chapter k_chapter{"ch08_next_event_estimation",
                         "shoot-out of every estimator of chapters 05-08 on the furnace, the "
                         "Cornell box at light scales 0.1, 1 and 3, and the sphere Cornell box."};
 
-constexpr double k_max_rays = 1e11;          // about 1.4 hours at 2e7 rays per second
-constexpr double k_rays_per_sample = 32.0;   // a generous mean for NEE and MIS paths (2 per vertex)
-
 struct Options {
   CommonOptions common;
   SceneOptions scene;
@@ -65,36 +62,6 @@ struct Options {
   std::vector<int> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
   int plates_spp = 16;                     // samples per pixel of Veach's plates (plates.hpp)
 };
-
-ReferenceSpec reference_spec(const Options& o, const std::string& scene, double light_scale) {
-  ReferenceSpec spec;
-  spec.scene = o.scene;
-  spec.scene.scene = scene;
-  spec.scene.params.light_scale = light_scale;
-  spec.width = o.image.width;
-  spec.height = o.image.height;
-  spec.spp = o.reference_spp;
-  spec.max_depth = o.depth;
-  spec.seed = o.common.seed;
-  spec.threads = o.common.threads;
-  spec.quiet = o.common.quiet;
-  return spec;
-}
-
-// The references (at most 5, one per scene of the shoot-out and the chosen one, if not cached),
-// the two images at --spp, and the shoot-out: 6 estimators x 5 scenes, each up to its largest
-// budget plus one pass (at most 65 rays a pixel: the depth-64 baselines).
-RayWork predicted_work(const Options& o) {
-  const double pixels = static_cast<double>(o.image.width) * o.image.height;
-  const double references = 5.0 * reference_predicted_rays(reference_spec(o, "cornell", 1.0),
-                                                            k_rays_per_sample);
-  const double images = 2.0 * o.spp * pixels * k_rays_per_sample;
-  const double shootout = 30.0 * (o.budgets.back() + 65.0) * pixels;
-  const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
-  return {references + images + shootout + plates,
-          "(5 references x reference spp + 2 x spp) x pixels x 32 rays + 30 x (largest "
-          "--ray-budgets + 65) x pixels + 36 x --plates-spp x pixels x 3 rays"};
-}
 
 // nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
 Table render_chosen_scene(const Options& o, const Reference& reference, RenderTotals& total) {
@@ -120,11 +87,9 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
 void run(const CLI::App& app, const Options& o) {
   check_image_size(o.image);
   // The shoot-out's furnace ends paths by roulette only: at albedo 1 they never end.
-  if (o.scene.params.furnace_albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+  check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays,
-                  "--spp, --reference-spp, --plates-spp, --width, --height",
+                  "--spp, --reference-spp, --plates-spp, --width, --height, --albedo",
                   o.common.threads, "lower one of them");
   // Every scene's estimators and references, their snapshots and the contact sheet (measured:
   // 3.4 KB per pixel at 512x256 whatever --ray-budgets; counted 170 images, 4 KB).

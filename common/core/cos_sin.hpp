@@ -11,7 +11,7 @@
 ///   (the first term left out is below (pi/4)^17 / 17! < 5e-17), and the quarter turns q only
 ///   swap and negate them.
 ///
-/// Both values are within 3e-16 of the exact ones for u in [0, 1] (tests/cos_sin_test.cpp
+/// Both values are within 3e-16 of the exact ones for u in [0, 1] (tests/core/cos_sin_test.cpp
 /// checks it against long double): as close as std::cos(2 pi u), whose argument is already
 /// rounded by up to 4.4e-16.
 

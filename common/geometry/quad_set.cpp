@@ -5,12 +5,9 @@
 #include <cstdint>
 #include <limits>
 
-#include "core/cpu_features.hpp"
 #include "geometry/avx2_lanes.hpp"
 
 namespace mcrt {
-
-const bool QuadSet::k_has_avx2 = cpu_has_avx2();
 
 void QuadSet::add(const Quad& q) {
   // Quads added one by one share a run, which grows a block at a time.

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/nearest_dispatch.hpp"
 #include "geometry/quad.hpp"
 #include "geometry/ray_lanes.hpp"
 
@@ -22,7 +23,7 @@ namespace mcrt {
 /// by zero of quads whose vectors have zero coordinates, such as a box's walls: for finite
 /// rays and t_min >= 0 that changes no answer, only, at most, the sign of a zero that no test
 /// can tell apart.)
-class QuadSet {
+class QuadSet : public NearestDispatch<QuadSet> {
  public:
   static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
 
@@ -41,34 +42,20 @@ class QuadSet {
   void add_group(std::span<const Quad> quads);
   std::size_t size() const { return size_; }
 
-  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere; no call at all
-  /// for a scene without quads (inline, so that costs one predictable branch).
-  Nearest nearest(const Ray& ray, Interval range) const {
-    if (size_ == 0) return {0, range.max};
-    return k_has_avx2 ? nearest_avx2(ray, range) : nearest_portable(ray, range);
-  }
+  /// nearest(ray, range) (NearestDispatch) runs one of these two.
   /// Plain C++, one quad at a time.
   Nearest nearest_portable(const Ray& ray, Interval range) const;
   /// Four quads per instruction; only call it if has_avx2().
   Nearest nearest_avx2(const Ray& ray, Interval range) const;
 
-  /// Four rays at once: each lane of `nearest` becomes the nearest quad of its ray hit in
-  /// (t_min, nearest.t[lane]), if there is one nearer than what the lane holds; the same t and
-  /// index, bit for bit, as nearest() of each ray alone (for finite rays and t_min >= 0).
-  void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
-    if (size_ == 0) return;
-    if (k_has_avx2) nearest_lanes_avx2(rays, t_min, nearest);
-    else nearest_lanes_portable(rays, t_min, nearest);
-  }
+  /// nearest_lanes(rays, t_min, nearest) (NearestDispatch) runs one of these two: for finite
+  /// rays and t_min >= 0, the same t and index, bit for bit, as nearest() of each ray alone.
   /// Plain C++, one ray and one quad at a time.
   void nearest_lanes_portable(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
   /// One quad against the four rays per instruction; only call it if has_avx2().
   void nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
 
-  static bool has_avx2() { return k_has_avx2; }
-
  private:
-  static const bool k_has_avx2;
 
   /// Slots [begin, end) (whole blocks) holding quads first, first + 1, ..., first + count - 1,
   /// then padding: quads added one by one, or a group behind its box.

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/cpu_features.hpp"
 #include "geometry/avx2_lanes.hpp"
 
 namespace mcrt {
@@ -22,8 +21,6 @@ inline double sqrt_non_negative(double x) {
 }
 
 }  // namespace
-
-const bool SphereSet::k_has_avx2 = cpu_has_avx2();
 
 void SphereSet::add(const Sphere& s) {
   // Fill the first padding slot if there is one, else open a new block of padding.

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/nearest_dispatch.hpp"
 #include "geometry/ray_lanes.hpp"
 #include "geometry/sphere.hpp"
 
@@ -13,7 +14,7 @@ namespace mcrt {
 /// that never hit (r^2 = -infinity), so the nearest-root search runs k_block spheres at a
 /// time with no remainder loop. Each sphere's t is computed with the same operations, in the
 /// same order, as intersect_distance (sphere.hpp), so the answer is the same bit for bit.
-class SphereSet {
+class SphereSet : public NearestDispatch<SphereSet> {
  public:
   static constexpr std::size_t k_block = 4;  ///< doubles in one AVX2 register
 
@@ -29,35 +30,19 @@ class SphereSet {
   /// 1 / radius of sphere i, kept so that hit_at need not divide.
   double inverse_radius(std::size_t i) const { return inverse_radius_[i]; }
 
-  /// nearest_avx2 where the processor has AVX2, nearest_portable elsewhere; no call at all
-  /// for a scene without spheres (inline, so that costs one predictable branch).
-  Nearest nearest(const Ray& ray, Interval range) const {
-    if (size_ == 0) return {0, range.max};
-    return k_has_avx2 ? nearest_avx2(ray, range) : nearest_portable(ray, range);
-  }
+  /// nearest(ray, range) (NearestDispatch) runs one of these two.
   /// Plain C++, one sphere at a time.
   Nearest nearest_portable(const Ray& ray, Interval range) const;
   /// Four spheres per instruction; only call it if has_avx2().
   Nearest nearest_avx2(const Ray& ray, Interval range) const;
 
-  /// Four rays at once: each lane of `nearest` becomes the nearest sphere of its ray with a
-  /// root in (t_min, nearest.t[lane]), if there is one nearer than what the lane holds; the
-  /// same t and index, bit for bit, as nearest() of each ray alone.
-  void nearest_lanes(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
-    if (size_ == 0) return;
-    if (k_has_avx2) nearest_lanes_avx2(rays, t_min, nearest);
-    else nearest_lanes_portable(rays, t_min, nearest);
-  }
+  /// nearest_lanes(rays, t_min, nearest) (NearestDispatch) runs one of these two.
   /// Plain C++, one ray and one sphere at a time.
   void nearest_lanes_portable(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
   /// One sphere against the four rays per instruction; only call it if has_avx2().
   void nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
 
-  /// Whether this processor runs AVX2 (checked once, at start-up).
-  static bool has_avx2() { return k_has_avx2; }
-
  private:
-  static const bool k_has_avx2;
   std::size_t size_ = 0;
   std::vector<double> center_x_, center_y_, center_z_, radius_squared_;
   std::vector<double> inverse_radius_;  ///< not padded: only read for a sphere that was hit

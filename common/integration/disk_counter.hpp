@@ -5,7 +5,7 @@
 /// The loop draws point i from lane i mod 16 of DiskPoints. Here every lane advances a whole
 /// round (16 points) at once, four lanes per AVX2 register when the processor has AVX2, and
 /// the inside test i^2 + j^2 <= 2^62 is the same exact integer test. So from the same `rng`
-/// the count is the same, and the generator is left in the same state (tests/disk_area_test).
+/// the count is the same, and the generator is left in the same state (tests/integration/disk_area_test).
 
 #include <cstdint>
 

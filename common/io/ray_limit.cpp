@@ -23,6 +23,12 @@ std::string readable_duration(double seconds) {
 
 }  // namespace
 
+void check_furnace_albedo(double albedo) {
+  if (albedo >= 1.0)
+    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
+                     "is infinite");
+}
+
 // One line under 200 characters besides the program's name: what `counted` names is in the
 // chapter's source and docs, not in the message.
 void check_ray_limit(const RayWork& work, double limit, std::string_view flags, int threads,

@@ -12,7 +12,7 @@
 /// (the reflection keeps x, so each light's highlight lies between the eye's x and its own).
 /// The steps are shallow and the lights high so that the ray from a highlight to its light
 /// passes over the plates behind, and the eye sees each highlight on its own plate
-/// (tests/glossy_direct_test.cpp checks both).
+/// (tests/render/glossy_direct_test.cpp checks both).
 ///
 /// Equal power: a sphere of radius r and radiance Le emits Phi = 4 pi^2 r^2 Le, so
 /// Le = k_plates_light_power / (4 pi^2 r^2) gives each the same Phi.

@@ -1,4 +1,4 @@
-// The graders' diagnoses name the right bug: each known-wrong variant of tests/known_bugs/ run
+// The graders' diagnoses name the right bug: each known-wrong variant of tests/<layer>/*_known_bugs.hpp run
 // through an assignment's grading procedure fails it, with the diagnosis written for that bug.
 // (CTest label assignments, and the default suite: about 3 s of CPU, 7 s wall on 2 loaded cores.)
 
@@ -20,18 +20,18 @@
 #include "assignments/a6/a6_produce.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
-#include "known_bugs/a6_mis.hpp"
-#include "known_bugs/assignments.hpp"
-#include "known_bugs/disk_area.hpp"
-#include "known_bugs/estimators.hpp"
-#include "known_bugs/importance_sampling.hpp"
-#include "known_bugs/nee.hpp"
-#include "known_bugs/path_tracers.hpp"
-#include "known_bugs/russian_roulette.hpp"
-#include "known_bugs/samplers.hpp"
+#include "render/mis_known_bugs_a6.hpp"
+#include "render/recursive_estimator_known_bugs_a3.hpp"
+#include "integration/disk_area_known_bugs.hpp"
+#include "integration/monte_carlo_known_bugs.hpp"
+#include "render/importance_path_tracer_known_bugs.hpp"
+#include "render/next_event_estimation_known_bugs.hpp"
+#include "render/path_tracer_known_bugs.hpp"
+#include "render/russian_roulette_known_bugs.hpp"
+#include "sampling/sampling_known_bugs.hpp"
 #include "io/image_file.hpp"
 #include "stats/report.hpp"
-#include "support/image_decoding.hpp"
+#include "io/image_file_decoding.hpp"
 
 namespace mcrt::testing::assignment {
 namespace {
@@ -564,7 +564,7 @@ TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
 
 
 // ---------------------------------------------------------------- a6
-// The known-wrong variants are in known_bugs/a6_mis.hpp.
+// The known-wrong variants are in render/mis_known_bugs_a6.hpp.
 
 TEST_F(Diagnoses, A6SolutionPasses) {
   const A6Variant<> solution;

@@ -74,8 +74,8 @@ grep -rq "// ASSIGNMENT" "$kit/common" "$kit/chapters" "$kit/tests" && fail "a m
 [ -e "$kit/tests/assignments/hidden" ] && fail "hidden tests are in the kit"
 [ -e "$kit/docs/assignments/$a.md" ] || fail "the handout is missing"
 [ "$(ls "$kit/docs/assignments")" = "$a.md" ] || fail "another handout is in the kit: $(ls "$kit/docs/assignments")"
-[ -e "$kit/tests/known_bugs/assignments.hpp" ] && fail "a3's known-wrong recursions are in the kit"
-[ -e "$kit/tests/known_bugs/a6_mis.hpp" ] && fail "a6's known-wrong variants are in the kit"
+[ -e "$kit/tests/render/recursive_estimator_known_bugs_a3.hpp" ] && fail "a3's known-wrong recursions are in the kit"
+[ -e "$kit/tests/render/mis_known_bugs_a6.hpp" ] && fail "a6's known-wrong variants are in the kit"
 
 # The token-level check: no window of the answers of aN and later (names and comments aside)
 python3 "$root/scripts/leak_check.py" "$a" "$kit" || fail "the token-level leak check found a copy"
@@ -93,7 +93,7 @@ case "$a" in
     # cos^m at m = 0 is a2.1's sampler, at m = 1 a2.2's (by inversion); its pdf both pdfs
     leak common/sampling/cosine_power.hpp 'std::pow(u.x, 1.0 / (m + 1.0))' "the cosine-power sampler"
     leak common/sampling/cosine_power.hpp '(m + 1.0) * k_inv_two_pi' "the cosine-power pdf"
-    leak tests 'inline Vec2 disk_with_radius_u' "known_bugs/samplers.hpp (a2.4 but for one line)"
+    leak tests 'inline Vec2 disk_with_radius_u' "sampling/sampling_known_bugs.hpp (a2.4 but for one line)"
     # a2.5's inversion, in its own file and in the sphere light's cone sampler
     leak common/sampling/cone.hpp 'u.x * (1.0 - cos_theta_max)' "a2.5's sampler"
     leak common/sampling/light.hpp 'const double cos_theta = 1.0 - u.x * one_minus_cos_max;' "the sphere light's cone (a2.5)"
@@ -115,13 +115,13 @@ case "$a" in
     leak common/render/path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "a4.1's loop"
     leak common/render/importance_path_tracer.hpp 'beta *= material.brdf() * cos_theta_i / p_wi;' "the importance-sampled path tracer"
     leak common/render/russian_roulette.hpp 'beta *= material.brdf() * cos_theta_i / uniform_hemisphere_pdf();' "the roulette path tracer"
-    leak tests 'path_radiance_with(' "known_bugs/path_tracers.hpp's path loop"
-    leak tests 'roulette_path_with(' "known_bugs/russian_roulette.hpp's path loop"
-    leak tests 'reference_radiance(const ReferenceQuadBox' "support/quad_box_reference.hpp's path tracer"
-    leak tests 'plain_path_radiance(' "support/plain_path_tracer.hpp (a4.1's loop, a2.1's sampler)"
-    leak common/render/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
-    leak common/render/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
-    leak common/render/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
+    leak tests 'path_radiance_with(' "render/path_tracer_known_bugs.hpp's path loop"
+    leak tests 'roulette_path_with(' "render/russian_roulette_known_bugs.hpp's path loop"
+    leak tests 'reference_radiance(const ReferenceQuadBox' "render/scene_quad_box_reference.hpp's path tracer"
+    leak tests 'plain_path_radiance(' "render/path_tracer_plain_layers.hpp (a4.1's loop, a2.1's sampler)"
+    leak common/engine/path_tracer_lanes.cpp 'path.radiance += beta(l) * material.emission;' "the four-lane path loop"
+    leak common/engine/bounce_lanes.cpp 'sub(one, mul(cos_theta, cos_theta))' "the four-lane hemisphere sample"
+    leak common/engine/bounce_lanes.cpp 'brdf * cos_theta_i / uniform_hemisphere_pdf()' "the four-lane weight update"
     ;;
 esac
 case "$a" in
@@ -129,8 +129,8 @@ case "$a" in
     leak common 'beta /= q;' "Russian roulette's 1/q"
     leak common 'beta *= material.albedo;' "the cosine-sampled weight f_r cos / p = rho"
     leak common/render/light_sampling.hpp 'area_to_solid_angle_pdf(y.pdf_area' "the light sample's change of measure"
-    leak tests 'wrong_nee_radiance(' "known_bugs/nee.hpp's NEE loop"
-    leak tests 'path_radiance_cosine_pdf_without_inv_pi' "known_bugs/importance_sampling.hpp"
+    leak tests 'wrong_nee_radiance(' "render/next_event_estimation_known_bugs.hpp's NEE loop"
+    leak tests 'path_radiance_cosine_pdf_without_inv_pi' "render/importance_path_tracer_known_bugs.hpp"
     # the chapter pages quote the loops: their code blocks are left out too
     leak docs 'beta /= q;' "chapter 06's page quoting the roulette"
     leak docs 'if (bounce == 0) radiance += material.emission;' "chapter 08's page quoting NEE"
@@ -146,9 +146,9 @@ case "$a" in
     leak common/render/mis.hpp 'return sum > 0.0 ? p_s2 / sum : 0.0;' "a6.2's power heuristic"
     leak common/render/glossy_direct.hpp 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "a6.3's MIS"
     leak common/render/glossy_direct.hpp 's.pdf_light = plates_light_pdf(scene, hit.point, w, j);' "a6.3's light sample"
-    leak tests 'mis_weight(MisHeuristic::balance, b.pdf_bsdf, n * b.pdf_light)' "glossy_direct_test.cpp's known-wrong MIS"
+    leak tests 'mis_weight(MisHeuristic::balance, b.pdf_bsdf, n * b.pdf_light)' "render/glossy_direct_test.cpp's known-wrong MIS"
     leak docs 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "chapter 08's page quoting the plates' MIS"
-    leak tests 'inline Vec3 sample_phong_lobe_cos_u_to_one_over_m' "known_bugs/samplers.hpp (a naive a6.1 lobe sampler)"
+    leak tests 'inline Vec3 sample_phong_lobe_cos_u_to_one_over_m' "sampling/sampling_known_bugs.hpp (a naive a6.1 lobe sampler)"
     ;;
 esac
 

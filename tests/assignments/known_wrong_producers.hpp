@@ -2,7 +2,7 @@
 // Producers of the assignment checks with one of the student's functions replaced by a
 // known-wrong variant: what tests/assignments/diagnosis_test.cpp grades to show each diagnosis
 // names its bug, and tests/assignment_fairness/ measures the detection of. The variants
-// themselves are in tests/known_bugs/; this file only plugs them in where a check expects the
+// themselves are in tests/<layer>/*_known_bugs.hpp; this file only plugs them in where a check expects the
 // student's function.
 
 #include <cstdint>

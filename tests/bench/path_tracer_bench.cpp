@@ -7,7 +7,7 @@
 // (render_path_tracer_lanes, what chapter 05 runs); its counter rays_per_second counts every
 // closest-hit query. BM_LectureLoopPathTracer<Scene> renders the same image with the lecture's
 // loop, one path at a time (render with estimate_path_radiance). BM_ReferencePathTracer<Scene>
-// runs that loop on the plain layers below it (support/plain_path_tracer.hpp: a loop of
+// runs that loop on the plain layers below it (render/path_tracer_plain_layers.hpp: a loop of
 // intersect_distance over every primitive, phi's cosine and sine from the maths library). All
 // three are measured in the same run, so their ratios compare.
 // BM_ClosestHit answers queries for a fixed batch of rays (camera rays and bounced rays of
@@ -26,9 +26,9 @@
 
 #include "bench/host_probe.hpp"
 #include "bench/path_rays.hpp"
-#include "support/plain_path_tracer.hpp"
+#include "render/path_tracer_plain_layers.hpp"
 #include "render/path_tracer.hpp"
-#include "render/path_tracer_lanes.hpp"
+#include "engine/path_tracer_lanes.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
 
@@ -36,7 +36,7 @@ namespace {
 
 constexpr int k_depth = 10;
 
-using mcrt::testing::plain_closest_hit;    // support/plain_path_tracer.hpp
+using mcrt::testing::plain_closest_hit;    // render/path_tracer_plain_layers.hpp
 using mcrt::testing::plain_path_radiance;
 
 enum class Engine { lecture_loop, plain_layers, lanes };

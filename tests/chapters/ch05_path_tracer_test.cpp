@@ -43,7 +43,7 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   }
   // 16 times the samples: a quarter of the error, here within a factor 2 either way (432
   // pixels give the RMS error to about 10% at these spp; the factor is a coarse bound for a
-  // smoke run, the law itself is tested in tests/checks/path_tracer_checks.cpp).
+  // smoke run, the law itself is tested in tests/render/path_tracer_checks.cpp).
   EXPECT_GT(rmse[2], rmse[0] / 8.0);
   EXPECT_LT(rmse[2], rmse[0] / 2.0);
 
@@ -196,6 +196,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--reference-spp 2000000", "--reference-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
+                      // Accepted by the albedo check, but its reference's paths would have a
+                      // million vertices each (3 + 1 / (1 - a)): refused by the work estimate.
+                      BadInput{"--scene furnace --albedo 0.999999 --reference-spp 1024", "--albedo"},
                       BadInput{"--threads 0", "--threads"},
                       // Numbers are read as written: nothing clamped, no hex, finite reals only.
                       BadInput{"--depth 1e3", "--depth"}, BadInput{"--width 0x10", "--width"},

@@ -50,7 +50,7 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
     best += efficiency.number(i, "best_efficiency");
     // 4000 paths: the variance within 25% of its closed form (q = 0.7 and 0.9 have a finite
     // fourth moment, so the sample variance is within ~5%; the law itself is tested in
-    // tests/checks/russian_roulette_checks.cpp); the rays within 5% (their sd is ~1.5%).
+    // tests/render/russian_roulette_checks.cpp); the rays within 5% (their sd is ~1.5%).
     EXPECT_NEAR(efficiency.number(i, "variance") / efficiency.number(i, "variance_theory"), 1.0, 0.25);
     EXPECT_NEAR(efficiency.number(i, "rays_per_path") / efficiency.number(i, "rays_per_path_theory"),
                 1.0, 0.05);

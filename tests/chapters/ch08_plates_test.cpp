@@ -1,7 +1,7 @@
 // Chapter 08's study of Veach's plates (chapters/08_next_event_estimation/plates.hpp) as a
 // student runs it: plates.png and plates.csv written, equal rays for every strategy, the
 // summary's "plates" table, byte-identical outputs at 1 and 2 threads, and --plates-spp refused
-// where it is out of range. (The study's statistics: tests/glossy_direct_test.cpp.)
+// where it is out of range. (The study's statistics: tests/render/glossy_direct_test.cpp.)
 
 #include <algorithm>
 #include <filesystem>

@@ -1,6 +1,6 @@
 // Every image a chapter writes twice, as a PNG for people and a PFM for analysis, says the same
 // thing in both: each PNG code value (decoded by stb_image) is the sRGB encoding of the PFM's
-// linear value beside it (read by the independent reader of tests/support/image_decoding.hpp),
+// linear value beside it (read by the independent reader of tests/io/image_file_decoding.hpp),
 // within one code value (the PFM holds floats, the PNG was encoded from doubles: rounding the
 // float can move a value across a code boundary, never further).
 //
@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "chapters/run_program.hpp"
-#include "support/image_decoding.hpp"
+#include "io/image_file_decoding.hpp"
 
 using namespace mcrt::testing;
 namespace fs = std::filesystem;

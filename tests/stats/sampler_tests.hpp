@@ -1,7 +1,7 @@
 #pragma once
 // The chi-square tests every sampler of common/sampling/ is held to. The statistical checks
-// (tests/checks/sampling_checks.cpp) run them on the real samplers and the known-bug tests
-// (tests/known_bugs_test.cpp) on deliberately wrong ones: the same test, the same seed.
+// (tests/sampling/sampling_checks.cpp) run them on the real samplers and the known-bug tests
+// (tests/stats/known_bugs_test.cpp) on deliberately wrong ones: the same test, the same seed.
 //
 // Each draws 1e5 points and bins them into about 230 equal-measure cells, ~430 expected per
 // cell: enough for the chi-square approximation everywhere but the cosine sampler's grazing

@@ -1,6 +1,6 @@
 #pragma once
 // The closest hit on the plain layers: intersect_distance looped over every primitive. The
-// reference of tests/closest_hit_test.cpp and the loop of support/plain_path_tracer.hpp.
+// reference of tests/render/scene_closest_hit_test.cpp and the loop of render/path_tracer_plain_layers.hpp.
 
 #include <cstddef>
 #include <optional>

@@ -1,8 +1,8 @@
 #pragma once
 // Independent trials of a small Monte Carlo estimate, against the closed forms of its mean and
 // variance. Written for any estimator and any trial runner, so the check
-// (tests/checks/trial_checks.cpp) runs it on the project's and the known-bug tests on the wrong
-// ones of tests/known_bugs/ (which it must reject).
+// (tests/stats/trials_checks.cpp) runs it on the project's and the known-bug tests on the wrong
+// ones of tests/integration/monte_carlo_known_bugs.hpp (which it must reject).
 //
 // F_N = 1/N sum e^(-X_i^2), X_i uniform on [0, 1] (Gaussian1D of common/integration/integrands.hpp):
 //   E[F_N] = I = sqrt(pi)/2 erf(1),   V[F_N] = (J - I^2) / N,   J = sqrt(pi/8) erf(sqrt 2).

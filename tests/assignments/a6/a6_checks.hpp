@@ -12,7 +12,7 @@
 //        the single strategies (light sampling alone, BSDF sampling alone).
 // Measured by measure_assignment_fairness (docs/assignments/fairness.json; README "Fairness"):
 // the single-seed p-values of the lobe's chi-square (m = 10 and m = 3) and of both region
-// tests on the solution, every known bug of known_bugs/a6_mis.hpp through the check that
+// tests on the solution, every known bug of render/mis_known_bugs_a6.hpp through the check that
 // catches it, and the efficiency ratio on the solution and on light sampling passed off as MIS.
 
 #include <algorithm>

@@ -85,7 +85,7 @@ class KitContents(unittest.TestCase):
                 self.assertEqual(stubbed, {t for t in self.tasks if int(t[1:].split(".")[0]) >= n})
                 withheld = make.withheld_files(files, stubbed)
                 # a4.1's loop with a2.1's sampler in it: out of every kit that stubs either
-                self.assertEqual("tests/support/plain_path_tracer.hpp" in withheld, n < 5)
+                self.assertEqual("tests/render/path_tracer_plain_layers.hpp" in withheld, n < 5)
                 # the closest hit it used to hold stays, and so does every public test
                 self.assertNotIn("tests/support/plain_closest_hit.hpp", withheld)
                 self.assertFalse([f for f in withheld if f.startswith("tests/assignments/")])

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """scripts/leak_check.py finds a copied answer whatever its names and comments, finds
-support/plain_path_tracer.hpp (a4.1's loop on other helpers) against a4.1's region itself, and
+render/path_tracer_plain_layers.hpp (a4.1's loop on other helpers) against a4.1's region itself, and
 flags no ordinary code. Run: leak_check_test.py ROOT (CTest label unit, about a second)."""
 
 import functools
@@ -66,20 +66,20 @@ class LeakCheck(unittest.TestCase):
         self.assertTrue(found)
 
     def test_plain_path_tracer_is_caught_against_a4_1_itself(self):
-        with open(os.path.join(ROOT, "tests/support/plain_path_tracer.hpp")) as f:
+        with open(os.path.join(ROOT, "tests/render/path_tracer_plain_layers.hpp")) as f:
             text = f.read()
         # without its own withheld-file entry: the answer's region alone must find it
         for kit in ("a2", "a4"):
-            found = leaks_in(kit, {"tests/support/plain_path_tracer.hpp": text},
+            found = leaks_in(kit, {"tests/render/path_tracer_plain_layers.hpp": text},
                              drop=("plain_path_tracer",))
             self.assertIn("a4.1", {ref.split()[0] for _, _, _, ref in found}, (kit, found))
         # a5 releases a4.1: the same file is no leak there
-        self.assertEqual(leaks_in("a5", {"tests/support/plain_path_tracer.hpp": text}), [])
+        self.assertEqual(leaks_in("a5", {"tests/render/path_tracer_plain_layers.hpp": text}), [])
 
     def test_ordinary_code_is_not_flagged(self):
         files = {}
         for rel in ("common/geometry/sphere.hpp", "common/render/scene.hpp", "common/io/table.cpp",
-                    "tests/camera_test.cpp", "chapters/05_path_tracer/main.cpp",
+                    "tests/geometry/camera_test.cpp", "chapters/05_path_tracer/main.cpp",
                     "common/render/render.hpp", "docs/architecture.md", "docs/01_ray_tracing.md"):
             with open(os.path.join(ROOT, rel)) as f:
                 files[rel] = f.read()

@@ -1,0 +1,144 @@
+#include "engine/path_tracer_lanes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/hit.hpp"
+#include "engine/bounce_lanes.hpp"
+#include "engine/path_lanes.hpp"
+#include "engine/path_starts.hpp"
+#include "render/path_tracer.hpp"
+
+namespace mcrt {
+
+// ASSIGNMENT a4.1 BEGIN needs=a2.1 withheld stub: RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera, const RenderSettings& settings, int max_depth) { return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) { return estimate_path_radiance(scene, ray, max_depth, rng, count); }); }
+namespace {
+
+constexpr int k_lanes = RayLanes::k_lanes;
+
+// The paths of one row in flight: a row's samples are numbered task = x spp + s and taken in
+// that order, a chunk at a time. A chunk's radiances are kept until its last path ends, then
+// added to their pixels in task order, which is each pixel's sample order.
+class RowOfPaths {
+ public:
+  // Paths per chunk: enough that the lanes left idle while a chunk's last paths finish (at
+  // most max_depth + 1 bounces) are a small part of its work.
+  static constexpr std::uint64_t k_chunk = 1024;
+
+  RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+             int max_depth, int y)
+      : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y),
+        tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {
+    // A diffuse scene spares shade_lanes the look at each lane's lobe.
+    const bool lobes = std::ranges::any_of(scene.materials, &Material::has_lobe);
+    for (PathGroup& g : groups_) g.bounce.lobes_possible = lobes;
+  }
+
+  // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
+  void trace(std::vector<Color>& pixel_sums, RayCount& count, std::uint64_t& non_finite) {
+    RowSample added;  // the pixel and sample of the task whose radiance is added next
+    for (std::uint64_t first = 0; first < tasks_; first += k_chunk) {
+      chunk_first_ = first;
+      chunk_end_ = std::min(tasks_, first + k_chunk);  // the last chunk took up to `first`
+      trace_chunk(count);
+      for (std::uint64_t task = first; task < chunk_end_; ++task) {
+        const Color& radiance = radiance_[task - first];
+        if (!is_finite(radiance)) ++non_finite;
+        pixel_sums[added.x] += radiance;
+        added.advance(settings_.spp);
+      }
+    }
+  }
+
+ private:
+  // Four paths in flight, one per lane.
+  struct PathGroup {
+    RayLanes rays;
+    BounceLanes bounce;
+    PathLanes paths;
+    std::array<std::uint64_t, k_lanes> task{};  // each lane's path: x spp + s
+  };
+
+  // Each group's bounce is one chain of dependent steps (the search, the hits, the shading,
+  // the bounce, then the next search), so two groups take turns: the processor works on one
+  // group's search while the other's bounce waits on its latencies.
+  static constexpr int k_groups = 2;
+
+  // Lane l of group g (ready for a new path: engine/path_lanes.hpp) starts the chunk's next
+  // path, if any is left: its generator and its camera ray, as render() makes them. Tasks are
+  // taken in order, so their starts are made a block at a time (engine/path_starts.hpp).
+  void start_path(PathGroup& g, int l) {
+    if (next_task_ == chunk_end_) {
+      g.paths.stop(l);
+      return;
+    }
+    if (next_start_ == PathStarts::k_capacity) {
+      const auto left = static_cast<int>(std::min<std::uint64_t>(tasks_ - next_task_, PathStarts::k_capacity));
+      make_path_starts(camera_, settings_, y_, next_sample_, left, starts_);
+      next_start_ = 0;
+    }
+    g.task[l] = next_task_++;
+    g.paths.start_at(l, starts_.state[next_start_], starts_.increment[next_start_]);
+    g.rays.set(l, starts_.ray(next_start_));
+    ++next_start_;
+  }
+
+  // One pass of estimate_path_radiance's loop for the group's four paths (engine/path_lanes.hpp);
+  // a lane whose path ends hands its radiance in and takes the chunk's next path. False when
+  // the group has no path left.
+  bool step(PathGroup& g, RayCount& count) {
+    const unsigned live = g.paths.live_lanes();
+    if (live == 0) return false;
+    scene_.hits_in_lanes(scene_.closest_hits(g.rays), g.rays, g.bounce.hit);
+    shade_lanes(scene_.materials, max_depth_, g.paths, g.bounce);
+    bounce_lanes(g.bounce, g.rays);
+    count.rays += static_cast<std::uint64_t>(std::popcount(live));
+    for (unsigned ended = end_lanes(g.paths, g.bounce); ended != 0; ended &= ended - 1) {
+      const int l = std::countr_zero(ended);
+      radiance_[g.task[l] - chunk_first_] = g.paths.finished_of(l);
+      start_path(g, l);
+    }
+    return true;
+  }
+
+  void trace_chunk(RayCount& count) {
+    for (PathGroup& g : groups_)
+      for (int l = 0; l < k_lanes; ++l) start_path(g, l);
+    for (bool any = true; any;) {
+      any = false;
+      for (PathGroup& g : groups_) any = step(g, count) || any;
+    }
+  }
+
+  const Scene& scene_;
+  const Camera& camera_;
+  const RenderSettings& settings_;
+  const int max_depth_;
+  const int y_;
+  const std::uint64_t tasks_;  // the row's paths: width x spp
+  std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
+  PathStarts starts_;  // the starts of the tasks from next_task_ on, from entry next_start_
+  int next_start_ = PathStarts::k_capacity;
+  RowSample next_sample_;  // the sample of the first task after those in starts_
+  std::array<PathGroup, k_groups> groups_;
+  std::array<Color, k_chunk> radiance_;
+};
+
+}  // namespace
+
+RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
+                                      const RenderSettings& settings, int max_depth) {
+  return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
+                                           std::uint64_t& non_finite) {
+    std::vector<Color> sums(camera.width(), Color(0.0));
+    RowOfPaths(scene, camera, settings, max_depth, y).trace(sums, rays, non_finite);
+    for (int x = 0; x < camera.width(); ++x) row[x] = sums[x] / static_cast<double>(settings.spp);
+  });
+}
+
+// ASSIGNMENT a4.1 END
+
+}  // namespace mcrt
