@@ -30,9 +30,9 @@ inline ReferenceSpec reference_spec(const auto& o) {
   return spec;
 }
 
-// The reference folder: --reference-dir, else the reference folder beside --out.
+// The reference cache: --reference-dir, else the user's cache folder (io/reference_cache.hpp).
 inline std::filesystem::path reference_dir(const auto& o) {
-  return o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
+  return reference_folder(o.reference_dir);
 }
 
 // The most rays the run can trace: two renders per spp, at most depth + 1 rays per sample,
@@ -58,7 +58,6 @@ inline void refuse_impossible_work(const auto& o) {
   if (o.scene.scene == "furnace" && o.scene.params.furnace_albedo >= 1.0)
     throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
                      "is infinite");
-  if (o.reference_spp > 0) check_reference_folder(reference_dir(o));
   check_ray_limit(predicted_work(o), k_max_rays, "--spp, --depth, --width, --height",
                   o.common.threads, "lower one of them");
   // A pair of renders, the reference's three and one kept per spp for the noise strip (measured:
@@ -67,6 +66,8 @@ inline void refuse_impossible_work(const auto& o) {
                                       7.0 + static_cast<double>(o.spp.size()), o.common.threads,
                                       "7 + spp values images"),
                      "--width, --height, --spp", "lower them");
+  // Last: it makes the cache folder if it is missing.
+  if (o.reference_spp > 0) check_reference_folder(reference_dir(o), o.common.out);
 }
 
 }  // namespace mcrt
