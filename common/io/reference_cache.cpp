@@ -144,19 +144,9 @@ FileBytes read_cache_file(int dir_fd, const std::string& name, off_t limit) {
   return {std::move(bytes), ""};
 }
 
-// Writes `bytes` as `name` in the cache: a new temporary file (io/exclusive_file.hpp), then
-// renamed. Throws IoError naming the file. For the tag and the index, which only name files.
-void write_small_file(const CacheFolder& folder, std::string_view name, std::string_view bytes) {
-  const NewFile file = create_temporary(folder.fd(), name);
-  const std::string path = (folder.path() / name).string();
-  if (file.fd < 0) throw IoError("cannot write '" + path + "': " + file.error.message());
-  std::error_code failure = write_all(file.fd, bytes);
-  if (!failure && ::renameat(folder.fd(), file.name.c_str(), folder.fd(), std::string(name).c_str()) != 0)
-    failure = {errno, std::generic_category()};
-  if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);
-  ::close(file.fd);
-  if (failure) throw IoError("cannot write '" + path + "': " + failure.message());
-}
+using NamedBytes = std::pair<std::string, std::string_view>;
+void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
+                 std::set<std::string>* index = nullptr);
 
 bool has_tag(int dir_fd) {
   const FileBytes tag = read_cache_file(dir_fd, std::string(k_tag_name), 4096);
@@ -210,10 +200,10 @@ std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
     if (!is_empty(fd))
       refuse_folder(dir, fmt::format("it holds files and no {} (not a cache)", k_tag_name),
                     "give a new or empty folder");
-    write_small_file(folder, k_tag_name,
-                     fmt::format("{}\n# The cache of mcrt-companion's reference images: safe to "
-                                 "delete, rebuilt when needed.\n",
-                                 k_tag_signature));
+    const std::string tag = fmt::format(
+        "{}\n# The cache of mcrt-companion's reference images: safe to delete.\n",
+        k_tag_signature);
+    write_files(folder, {{std::string(k_tag_name), tag}});
   }
   return folder;
 }
@@ -263,10 +253,46 @@ std::set<std::string> read_index(int dir_fd) {
   return names;
 }
 
-void write_index(const CacheFolder& folder, const std::set<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += name + "\n";
-  write_small_file(folder, k_index_name, text);
+// Writes each file through a new temporary (io/exclusive_file.hpp), every one created and
+// written before any is renamed: a failure to make one (EMFILE, a full disk) changes no file,
+// and only our temporaries are then removed. With `index`, the temporaries are named in it
+// first (a killed writer's are then known as ours). Throws IoError naming the file.
+void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
+                 std::set<std::string>* index) {
+  std::vector<NewFile> temporaries;
+  std::error_code failure;
+  std::string failed = std::string(k_index_name);
+  for (const auto& [name, bytes] : files) {
+    temporaries.push_back(create_temporary(folder.fd(), name));
+    if (temporaries.back().fd < 0) {
+      failure = temporaries.back().error, failed = name;
+      temporaries.pop_back();
+      break;
+    }
+    if (index) index->insert({name, temporaries.back().name});
+  }
+  if (index && !failure) {
+    std::string text;
+    for (const std::string& name : *index) text += name + "\n";
+    try {
+      write_files(folder, {{std::string(k_index_name), text}});
+    } catch (const IoError&) {
+      failure = {EIO, std::generic_category()};
+    }
+  }
+  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
+    if ((failure = write_all(temporaries[i].fd, files[i].second))) failed = files[i].first;
+  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
+    if (::renameat(folder.fd(), temporaries[i].name.c_str(), folder.fd(),
+                   files[i].first.c_str()) != 0)
+      failure = {errno, std::generic_category()}, failed = files[i].first;
+  for (const NewFile& file : temporaries) {
+    if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);  // ours: we hold its lock
+    ::close(file.fd);  // after the rename: the lock marks a live writer until then
+  }
+  if (failure)
+    throw IoError(fmt::format("cannot write '{}': {}", (folder.path() / failed).string(),
+                              failure.message()));
 }
 
 // Whether `name` is a regular file of ours with one link, open-checked as `fd` (-1 when not).
@@ -314,7 +340,8 @@ void remove_leftovers(const CacheFolder& folder) {
   }
   if (kept != named) {
     try {
-      write_index(folder, kept);
+      std::set<std::string> index = kept;
+      write_files(folder, {}, &index);
     } catch (const IoError&) {  // a stale index only names files that are gone
     }
   }
@@ -388,47 +415,6 @@ std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
   info.erase("pfm");
   r.info = std::move(info);
   return r;
-}
-
-// Writes a reference's PFM then its JSON, under the exclusive lock: both temporaries are made
-// (and named in the index) before either is renamed, so a failure to create one (EMFILE, a full
-// disk) leaves the previous entry whole. On failure only our temporaries are removed.
-void write_entry(const CacheFolder& folder, const std::string& stem, const std::string& pfm,
-                 const std::string& json) {
-  const FolderLock lock(folder.fd(), LOCK_EX);  // no reader takes this PFM with another's JSON
-  const std::pair<std::string, const std::string*> files[] = {{stem + ".pfm", &pfm},
-                                                             {stem + ".json", &json}};
-  std::set<std::string> index = read_index(folder.fd());
-  std::vector<NewFile> temporaries;
-  std::error_code failure;
-  std::string failed_name;
-  for (const auto& [name, bytes] : files) {
-    temporaries.push_back(create_temporary(folder.fd(), name));
-    if (temporaries.back().fd < 0) {
-      failure = temporaries.back().error, failed_name = name;
-      temporaries.pop_back();
-      break;
-    }
-    index.insert({name, temporaries.back().name});
-  }
-  try {
-    if (!failure) write_index(folder, index);
-  } catch (const IoError&) {
-    failure = {EIO, std::generic_category()}, failed_name = std::string(k_index_name);
-  }
-  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
-    if ((failure = write_all(temporaries[i].fd, *files[i].second))) failed_name = files[i].first;
-  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
-    if (::renameat(folder.fd(), temporaries[i].name.c_str(), folder.fd(),
-                   files[i].first.c_str()) != 0)
-      failure = {errno, std::generic_category()}, failed_name = files[i].first;
-  for (const NewFile& file : temporaries) {
-    if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);  // ours: we hold its lock
-    ::close(file.fd);  // after the rename: the lock marks a live writer until then
-  }
-  if (failure)
-    throw IoError(fmt::format("cannot write '{}': {}", (folder.path() / failed_name).string(),
-                              failure.message()));
 }
 
 // Two independent halves A and B (spp/2 each, at least 1): the reference is their mean, and
@@ -545,7 +531,10 @@ Reference load_or_render_reference(const fs::path& dir, const ReferenceSpec& spe
   // again.
   nlohmann::ordered_json description = r.info;
   description["pfm"] = {{"bytes", pfm.size()}, {"fnv1a64", checksum(pfm)}};
-  write_entry(folder, reference_stem(spec), pfm, description.dump(2) + "\n");
+  const std::string json = description.dump(2) + "\n", stem = reference_stem(spec);
+  const FolderLock lock(folder.fd(), LOCK_EX);  // no reader takes this PFM with another's JSON
+  std::set<std::string> index = read_index(folder.fd());
+  write_files(folder, {{stem + ".pfm", pfm}, {stem + ".json", json}}, &index);
   return r;
 }
 
