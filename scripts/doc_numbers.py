@@ -509,7 +509,8 @@ def read_pfm_values(path):
 
 def rms_error_against_reference(label, image, reference):
     """The RMS difference over pixels and channels between run `label`'s PFM `image` and the
-    reference PFM that chapter 05's runs cached beside the run folders (reference/)."""
+    reference PFM that chapter 05's runs cached in the scratch folder's reference/ (make-figures
+    gives them --reference-dir there)."""
     def read(runs):
         a = read_pfm_values(os.path.join(runs.scratch, label, image))
         r = read_pfm_values(os.path.join(runs.scratch, "reference", reference))

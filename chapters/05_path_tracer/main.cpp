@@ -74,7 +74,7 @@ struct Options {
   int reference_spp = 1024;                 // 0: no reference, no error against it
   std::vector<int> bias_depths{0, 1, 2};    // shallow depths rendered again against the reference
   bool lanes = true;                        // --engine lanes (true) or loop
-  std::filesystem::path reference_dir;      // default: --out's parent / reference
+  std::filesystem::path reference_dir;      // default: the user's cache folder
 };
 
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
@@ -172,6 +172,6 @@ int main(int argc, char** argv) {
                   "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
                   "off at their bias (a list: 0,1,2; only with a reference)", 0, 1000);
   add_path_option(app, "--reference-dir", o.reference_dir,
-                  "Folder of the cached references (default: the reference folder beside --out)");
+                  "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -36,9 +36,9 @@ inline ReferenceSpec reference_spec(const auto& o) {
   return spec;
 }
 
-// The reference folder: --reference-dir, else the reference folder beside --out.
+// The reference cache: --reference-dir, else the user's cache folder (io/reference_cache.hpp).
 inline std::filesystem::path reference_dir(const auto& o) {
-  return o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
+  return reference_folder(o.reference_dir);
 }
 
 // The most rays the run can trace: two renders per spp, at most depth + 1 rays per sample,
@@ -62,7 +62,6 @@ inline void refuse_impossible_work(const auto& o) {
   check_image_size(o.image);
   // The furnace's reference has no depth cut: at albedo 1 its paths never end.
   if (o.scene.scene == "furnace") check_furnace_albedo(o.scene.params.furnace_albedo);
-  if (o.reference_spp > 0) check_reference_folder(reference_dir(o));
   check_ray_limit(predicted_work(o), k_max_rays,
                   "--spp, --depth, --width, --height, --reference-spp, --albedo", o.common.threads,
                   "lower one of them");
@@ -72,6 +71,8 @@ inline void refuse_impossible_work(const auto& o) {
                                       7.0 + static_cast<double>(o.spp.size()), o.common.threads,
                                       "7 + spp values images"),
                      "--width, --height, --spp", "lower them");
+  // Last: it makes the cache folder if it is missing.
+  if (o.reference_spp > 0) check_reference_folder(reference_dir(o), o.common.out);
 }
 
 }  // namespace mcrt

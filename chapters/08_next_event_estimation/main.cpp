@@ -58,7 +58,7 @@ struct Options {
   int spp = 16;                            // samples per pixel of nee.pfm and mis.pfm
   int depth = -1;                          // bounces after the first hit; -1: roulette only
   int reference_spp = 1024;                // samples per pixel of every reference
-  std::filesystem::path reference_dir;     // default: --out's parent / reference
+  std::filesystem::path reference_dir;     // default: the user's cache folder
   std::vector<int> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
   int plates_spp = 16;                     // samples per pixel of Veach's plates (plates.hpp)
 };
@@ -96,9 +96,8 @@ void run(const CLI::App& app, const Options& o) {
   check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 170.0,
                                       o.common.threads, "about 170 images of --width x --height"),
                      "--width, --height", "lower them");
-  const std::filesystem::path reference_dir =
-      o.reference_dir.empty() ? o.common.out.parent_path() / "reference" : o.reference_dir;
-  check_reference_folder(reference_dir);
+  const std::filesystem::path reference_dir = reference_folder(o.reference_dir);
+  check_reference_folder(reference_dir, o.common.out);
 
   const Reference reference = load_or_render_reference(
       reference_dir, reference_spec(o, o.scene.scene, o.scene.params.light_scale));
@@ -151,7 +150,7 @@ int main(int argc, char** argv) {
                     "Samples per pixel of each reference image (cached under --reference-dir)",
                     2, 1 << 20);
   add_path_option(app, "--reference-dir", o.reference_dir,
-                  "Folder of the cached references (default: the reference folder beside --out)");
+                  "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
                   "each scene (a list: 64,128,256,512)", 1, 1000000);

@@ -1,13 +1,19 @@
 #include "io/reference_cache.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <cstring>
 #include <iostream>
 #include <optional>
+#include <set>
+#include <string_view>
 #include <utility>
 #include <variant>
+#include <vector>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -20,7 +26,6 @@
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
-#include "io/sha256.hpp"
 #include "io/usage_error.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
@@ -53,6 +58,13 @@ Reference furnace_reference(const ReferenceSpec& spec) {
   return r;
 }
 
+// The Cache Directory Tagging convention's signature: a folder whose CACHEDIR.TAG begins with
+// it holds a cache (backup tools skip it). Ours is the only kind of folder the cache writes in.
+constexpr std::string_view k_tag_name = "CACHEDIR.TAG";
+constexpr std::string_view k_tag_signature = "Signature: 8a477f597d28d172789f06886806bc55";
+// The names of every file the cache wrote or is writing, one a line: the only files it deletes.
+constexpr std::string_view k_index_name = "index.txt";
+
 // The cache folder, open: every file is read and written relative to this descriptor, so the
 // folder checked is the folder used, whatever is renamed or planted meanwhile.
 class CacheFolder {
@@ -72,63 +84,15 @@ class CacheFolder {
   fs::path path_;
 };
 
-// Why the folder open as `fd` may not hold a cache, or "" if it may.
-std::string folder_problem(int fd) {
-  struct stat status {};
-  if (::fstat(fd, &status) != 0) return std::strerror(errno);
-  if (!S_ISDIR(status.st_mode)) return "it is not a folder";
-  if (status.st_uid != ::geteuid())
-    return fmt::format("it belongs to another user (uid {})", status.st_uid);
-  if ((status.st_mode & S_IWOTH) && !(status.st_mode & S_ISVTX))
-    return "anyone may write in it (o+w, no sticky bit)";
-  return "";
-}
-
-[[noreturn]] void refuse_folder(const fs::path& dir, const std::string& why) {
-  throw UsageError(fmt::format("--reference-dir: the reference cache '{}' is refused: {}; give "
-                               "a folder of your own",
-                               dir.string(), why));
-}
-
-// Opens `dir` without following a link at its last component; nullopt if it does not exist.
-// Throws UsageError (exit 2, before any work) if it is a link, not a folder, another user's,
-// or writable by others without the sticky bit.
-std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) {
-    const int reason = errno;
-    struct stat status {};
-    if (::lstat(dir.c_str(), &status) != 0 && (errno == ENOENT || errno == ENOTDIR))
-      return std::nullopt;
-    if (S_ISLNK(status.st_mode))
-      refuse_folder(dir, "it is a symbolic link");
-    if (reason == ENOTDIR) refuse_folder(dir, "it is not a folder");
-    throw IoError(fmt::format("cannot open the reference cache '{}': {}", dir.string(),
-                              std::strerror(reason)));
-  }
-  CacheFolder folder(fd, dir);
-  if (const std::string why = folder_problem(fd); !why.empty()) refuse_folder(dir, why);
-  return folder;
-}
-
-// The cache folder, created (mode 0755, parents as needed) if missing; `created` says so.
-CacheFolder create_cache_folder(const fs::path& dir, bool& created) {
-  created = false;
-  if (auto folder = open_cache_folder(dir)) return std::move(*folder);
-  std::error_code ec;
-  if (!dir.parent_path().empty()) fs::create_directories(dir.parent_path(), ec);
-  if (::mkdir(dir.c_str(), 0755) == 0)
-    created = true;
-  else if (errno != EEXIST)
-    throw IoError(fmt::format("cannot create the reference cache '{}': {}", dir.string(),
-                              std::strerror(errno)));
-  if (auto folder = open_cache_folder(dir)) return std::move(*folder);
-  throw IoError(fmt::format("cannot create the reference cache '{}': it vanished", dir.string()));
+[[noreturn]] void refuse_folder(const fs::path& dir, const std::string& why,
+                                const std::string& what_to_do = "give a folder of your own") {
+  throw UsageError(fmt::format("--reference-dir: the reference cache '{}' is refused: {}; {}",
+                               dir.string(), why, what_to_do));
 }
 
 // A shared (readers) or exclusive (writers) lock on the folder, so that a reader sees a PFM and
 // its JSON from one writer. Waits a bounded time: anyone who can read the folder can lock it,
-// and the hash check keeps the cache correct without the lock.
+// and the checksum keeps the cache correct without the lock.
 class FolderLock {
  public:
   FolderLock(int fd, int operation) : fd_(fd) {
@@ -180,6 +144,217 @@ FileBytes read_cache_file(int dir_fd, const std::string& name, off_t limit) {
   return {std::move(bytes), ""};
 }
 
+using NamedBytes = std::pair<std::string, std::string_view>;
+void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
+                 std::set<std::string>* index = nullptr);
+
+bool has_tag(int dir_fd) {
+  const FileBytes tag = read_cache_file(dir_fd, std::string(k_tag_name), 4096);
+  return tag.bytes && tag.bytes->starts_with(k_tag_signature);
+}
+
+bool is_empty(int dir_fd) {
+  const int fd = ::openat(dir_fd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  DIR* listing = fd < 0 ? nullptr : ::fdopendir(fd);
+  if (listing == nullptr) {  // not known to be empty: treated as holding files
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  bool empty = true;
+  while (const dirent* entry = ::readdir(listing))
+    if (std::strcmp(entry->d_name, ".") != 0 && std::strcmp(entry->d_name, "..") != 0) empty = false;
+  ::closedir(listing);
+  return empty;
+}
+
+// Opens `dir` without following a link at its last component; nullopt if it does not exist.
+// Throws UsageError (exit 2, before any work) if it is a link, not a folder, another user's,
+// writable by others without the sticky bit, or holds files without our CACHEDIR.TAG. An empty
+// folder is adopted: tagged.
+std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) {
+    const int reason = errno;
+    struct stat status {};
+    if (::lstat(dir.c_str(), &status) != 0 && (errno == ENOENT || errno == ENOTDIR))
+      return std::nullopt;
+    if (S_ISLNK(status.st_mode)) refuse_folder(dir, "it is a symbolic link");
+    if (reason == ENOTDIR) refuse_folder(dir, "it is not a folder");
+    throw IoError(fmt::format("cannot open the reference cache '{}': {}", dir.string(),
+                              std::strerror(reason)));
+  }
+  CacheFolder folder(fd, dir);
+  struct stat status {};
+  if (::fstat(fd, &status) != 0)
+    throw IoError(fmt::format("cannot open the reference cache '{}': {}", dir.string(),
+                              std::strerror(errno)));
+  if (status.st_uid != ::geteuid())
+    refuse_folder(dir, fmt::format("it belongs to another user (uid {})", status.st_uid));
+  if ((status.st_mode & S_IWOTH) && !(status.st_mode & S_ISVTX))
+    refuse_folder(dir, "anyone may write in it (o+w, no sticky bit)");
+  if (!has_tag(fd)) {
+    // Under the exclusive lock: two runs adopting one new folder see each other's tag (or its
+    // temporary file after the check), not a folder of someone else's files.
+    const FolderLock lock(fd, LOCK_EX);
+    if (has_tag(fd)) return folder;
+    if (!is_empty(fd))
+      refuse_folder(dir, fmt::format("it holds files and no {} (not a cache)", k_tag_name),
+                    "give a new or empty folder");
+    const std::string tag = fmt::format(
+        "{}\n# The cache of mcrt-companion's reference images: safe to delete.\n",
+        k_tag_signature);
+    write_files(folder, {{std::string(k_tag_name), tag}});
+  }
+  return folder;
+}
+
+// $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion (a relative XDG_CACHE_HOME is
+// ignored, as the XDG Base Directory specification says). Throws UsageError if neither is set.
+fs::path default_cache_folder() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg != nullptr && fs::path(xdg).is_absolute()) return fs::path(xdg) / "mcrt-companion";
+  const char* home = std::getenv("HOME");
+  if (home != nullptr && fs::path(home).is_absolute())
+    return fs::path(home) / ".cache" / "mcrt-companion";
+  throw UsageError("--reference-dir: no folder for the reference cache: neither XDG_CACHE_HOME "
+                   "nor HOME is set to an absolute path; give --reference-dir a folder of your own");
+}
+
+// The cache folder, created if missing (the XDG base folder mode 0700, as the specification
+// asks; other parents as needed), opened and tagged. Throws IoError, saying what to do, if it
+// cannot be made (a read-only home).
+CacheFolder create_cache_folder(const fs::path& dir) {
+  if (auto folder = open_cache_folder(dir)) return std::move(*folder);
+  std::error_code ec;
+  if (!dir.parent_path().empty() && !fs::exists(dir.parent_path(), ec)) {
+    fs::create_directories(dir.parent_path().parent_path(), ec);
+    ::mkdir(dir.parent_path().c_str(), 0700);
+  }
+  if (::mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
+    throw IoError(fmt::format("cannot create the reference cache '{}': {}; give --reference-dir a "
+                              "folder you can write",
+                              dir.string(), std::strerror(errno)));
+  if (auto folder = open_cache_folder(dir)) return std::move(*folder);
+  throw IoError(fmt::format("cannot create the reference cache '{}': it vanished", dir.string()));
+}
+
+// The index: the names of the files the cache wrote or is writing. Missing or unreadable, it
+// names nothing (the cache then deletes nothing). Read and written under the exclusive lock.
+std::set<std::string> read_index(int dir_fd) {
+  std::set<std::string> names;
+  const FileBytes index = read_cache_file(dir_fd, std::string(k_index_name), 1 << 20);
+  if (!index.bytes) return names;
+  std::size_t start = 0;
+  for (std::size_t end; (end = index.bytes->find('\n', start)) != std::string::npos; start = end + 1) {
+    std::string name = index.bytes->substr(start, end - start);
+    if (!name.empty() && name.find('/') == std::string::npos && name != "." && name != "..")
+      names.insert(std::move(name));
+  }
+  return names;
+}
+
+// Writes each file through a new temporary (io/exclusive_file.hpp), every one created and
+// written before any is renamed: a failure to make one (EMFILE, a full disk) changes no file,
+// and only our temporaries are then removed. With `index`, the temporaries are named in it
+// first (a killed writer's are then known as ours). Throws IoError naming the file.
+void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
+                 std::set<std::string>* index) {
+  std::vector<NewFile> temporaries;
+  std::error_code failure;
+  std::string failed = std::string(k_index_name);
+  for (const auto& [name, bytes] : files) {
+    temporaries.push_back(create_temporary(folder.fd(), name));
+    if (temporaries.back().fd < 0) {
+      failure = temporaries.back().error, failed = name;
+      temporaries.pop_back();
+      break;
+    }
+    if (index) index->insert({name, temporaries.back().name});
+  }
+  if (index && !failure) {
+    std::string text;
+    for (const std::string& name : *index) text += name + "\n";
+    try {
+      write_files(folder, {{std::string(k_index_name), text}});
+    } catch (const IoError&) {
+      failure = {EIO, std::generic_category()};
+    }
+  }
+  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
+    if ((failure = write_all(temporaries[i].fd, files[i].second))) failed = files[i].first;
+  for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
+    if (::renameat(folder.fd(), temporaries[i].name.c_str(), folder.fd(),
+                   files[i].first.c_str()) != 0)
+      failure = {errno, std::generic_category()}, failed = files[i].first;
+  for (const NewFile& file : temporaries) {
+    if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);  // ours: we hold its lock
+    ::close(file.fd);  // after the rename: the lock marks a live writer until then
+  }
+  if (failure)
+    throw IoError(fmt::format("cannot write '{}': {}", (folder.path() / failed).string(),
+                              failure.message()));
+}
+
+// Whether `name` is a regular file of ours with one link, open-checked as `fd` (-1 when not).
+int open_own_file(int dir_fd, const std::string& name) {
+  struct stat before {}, opened {};
+  if (::fstatat(dir_fd, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0 ||
+      !S_ISREG(before.st_mode) || before.st_uid != ::geteuid() || before.st_nlink != 1)
+    return -1;
+  const int fd = ::openat(dir_fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd >= 0 && (::fstat(fd, &opened) != 0 || opened.st_ino != before.st_ino ||
+                  opened.st_dev != before.st_dev)) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+bool missing(int dir_fd, const std::string& name) {
+  struct stat status {};
+  return ::fstatat(dir_fd, name.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT;
+}
+
+// Removes what killed writers left, and only that: files the index names, regular and ours,
+// that are a temporary whose lock is free (its writer is gone, in whatever PID namespace or
+// machine it ran: a live writer holds the lock) or a PFM whose JSON is missing (a writer killed
+// between its two renames). Any error (EMFILE, EIO) leaves the file. Under the exclusive lock.
+void remove_leftovers(const CacheFolder& folder) {
+  const FolderLock lock(folder.fd(), LOCK_EX);
+  if (!lock.held()) return;
+  const std::set<std::string> named = read_index(folder.fd());
+  std::set<std::string> kept;
+  for (const std::string& name : named) {
+    if (missing(folder.fd(), name)) continue;  // renamed or removed: dropped from the index
+    const bool temporary = name.starts_with(".") && name.find(".tmp-") != std::string::npos;
+    const bool orphan_pfm = !temporary && name.ends_with(".pfm") &&
+                            missing(folder.fd(), name.substr(0, name.size() - 4) + ".json");
+    bool removed = false;
+    if (temporary || orphan_pfm) {
+      const int fd = open_own_file(folder.fd(), name);
+      if (fd >= 0 && (orphan_pfm || ::flock(fd, LOCK_EX | LOCK_NB) == 0))
+        removed = ::unlinkat(folder.fd(), name.c_str(), 0) == 0;
+      if (fd >= 0) ::close(fd);
+    }
+    if (!removed) kept.insert(name);
+  }
+  if (kept != named) {
+    try {
+      std::set<std::string> index = kept;
+      write_files(folder, {}, &index);
+    } catch (const IoError&) {  // a stale index only names files that are gone
+    }
+  }
+}
+
+// The checksum of the PFM its description records: FNV-1a, 64 bits. It tells a PFM from
+// another writer's or a spoiled one; nothing here needs a cryptographic hash.
+std::string checksum(std::string_view bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;  // the offset basis
+  for (const unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;  // the prime
+  return fmt::format("{:016x}", hash);
+}
+
 // The cache's PFM: exactly the bytes encode_pfm writes for an image of the spec's size.
 std::size_t expected_pfm_bytes(const ReferenceSpec& spec) {
   return fmt::format("PF\n{} {}\n-1.0\n", spec.width, spec.height).size() +
@@ -191,7 +366,7 @@ constexpr off_t k_largest_description = 64 * 1024;
 
 // The cached reference, or why it cannot be used ("" when there is none or its settings are
 // other than the spec's: a normal miss). Checked in order: the JSON (a regular file, its
-// settings, its record of the PFM), the PFM's size before it is read, its SHA-256, then every
+// settings, its record of the PFM), the PFM's size before it is read, its checksum, then every
 // value finite and non-negative.
 std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
                                                  const ReferenceSpec& spec) {
@@ -210,8 +385,8 @@ std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
   if (info["settings"] != reference_settings(spec)) return "";
   const auto& record = info.contains("pfm") ? info["pfm"] : nlohmann::ordered_json();
   if (!record.is_object() || !record.contains("bytes") || !record["bytes"].is_number_unsigned() ||
-      !record.contains("sha256") || !record["sha256"].is_string())
-    return json_name + " records no size and hash of its PFM (an older or partial cache)";
+      !record.contains("fnv1a64") || !record["fnv1a64"].is_string())
+    return json_name + " records no size and checksum of its PFM (an older or partial cache)";
   const std::size_t expected = expected_pfm_bytes(spec);
   if (record["bytes"].get<std::size_t>() != expected)
     return fmt::format("{} records a PFM of {} bytes, not the {} of a {}x{} image", json_name,
@@ -222,8 +397,8 @@ std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
   if (pfm.bytes->size() != expected)
     return fmt::format("{} holds {} bytes, not the {} its description records", pfm_name,
                        pfm.bytes->size(), expected);
-  if (sha256_hex(*pfm.bytes) != record["sha256"].get<std::string>())
-    return pfm_name + " does not match the SHA-256 its description records";
+  if (checksum(*pfm.bytes) != record["fnv1a64"].get<std::string>())
+    return pfm_name + " does not match the checksum its description records";
   Reference r;
   try {
     r.image = decode_pfm(*pfm.bytes, pfm_name);
@@ -240,40 +415,6 @@ std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
   info.erase("pfm");
   r.info = std::move(info);
   return r;
-}
-
-// Writes `bytes` as `name` in the cache: a new temporary file (io/exclusive_file.hpp), then
-// renamed. Throws IoError naming the file.
-void write_cache_file(const CacheFolder& folder, const std::string& name, std::string_view bytes) {
-  const NewFile file = create_temporary(folder.fd(), name);
-  const std::string path = (folder.path() / name).string();
-  if (file.fd < 0) throw IoError("cannot write '" + path + "': " + file.error.message());
-  std::error_code failure = write_all(file.fd, bytes);
-  if (!failure && ::renameat(folder.fd(), file.name.c_str(), folder.fd(), name.c_str()) != 0)
-    failure = {errno, std::generic_category()};
-  if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);
-  ::close(file.fd);  // after the rename: the lock marks a live writer until then
-  if (failure) throw IoError("cannot write '" + path + "': " + failure.message());
-}
-
-// Removes what killed writers left: temporary files no one holds, and a PFM whose JSON is
-// missing (a writer killed between the two renames). Only under the exclusive lock, when no
-// writer is between its two renames.
-void remove_leftovers(const CacheFolder& folder) {
-  const FolderLock lock(folder.fd(), LOCK_EX);
-  if (!lock.held()) return;
-  remove_abandoned_temporaries(folder.fd());
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder.path(), ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() < 5 || name.compare(name.size() - 4, 4, ".pfm") != 0 || name[0] == '.')
-      continue;
-    const std::string json = name.substr(0, name.size() - 4) + ".json";
-    struct stat status {};
-    if (::fstatat(folder.fd(), json.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 &&
-        errno == ENOENT)
-      ::unlinkat(folder.fd(), name.c_str(), 0);
-  }
 }
 
 // Two independent halves A and B (spp/2 each, at least 1): the reference is their mean, and
@@ -348,7 +489,29 @@ nlohmann::ordered_json reference_settings(const ReferenceSpec& spec) {
           {"estimator", "mis_power"}};
 }
 
-void check_reference_folder(const fs::path& dir) { open_cache_folder(dir); }
+fs::path reference_folder(const fs::path& flag) {
+  return flag.empty() ? default_cache_folder() : flag;
+}
+
+void check_reference_folder(const fs::path& dir, const fs::path& out) {
+  // The run replaces --out as a whole: a cache inside it would be lost (or block the swap), and
+  // a run inside the cache would fill it with files it does not own.
+  const auto resolved = [](const fs::path& path) {  // links and `..` resolved, as far as it exists
+    std::error_code ec;
+    return fs::weakly_canonical(fs::absolute(path, ec), ec).lexically_normal();
+  };
+  const auto inside = [](const fs::path& inner, const fs::path& outer) {
+    const auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+    return o == outer.end() || (std::next(o) == outer.end() && o->empty());  // "a/" in "a"
+  };
+  const fs::path cache = resolved(dir), run = resolved(out);
+  if (!out.empty() && (inside(cache, run) || inside(run, cache)))
+    throw UsageError(fmt::format("--reference-dir: the reference cache '{}' and --out '{}' may "
+                                 "not lie inside one another (each run replaces --out); give a "
+                                 "cache folder outside --out",
+                                 dir.string(), out.string()));
+  create_cache_folder(dir);
+}
 
 Reference load_or_render_reference(const fs::path& dir, const ReferenceSpec& spec) {
   if (is_furnace(spec)) return furnace_reference(spec);
@@ -361,25 +524,17 @@ Reference load_or_render_reference(const fs::path& dir, const ReferenceSpec& spe
                 << " again: the cached one is not used (" << why << ")\n";
   }
   Reference r = render_reference(spec);
-  bool created = false;
-  const CacheFolder folder = create_cache_folder(dir, created);
-  const std::string stem = reference_stem(spec);
+  const CacheFolder folder = create_cache_folder(dir);
   const std::string pfm = encode_pfm(r.image);
-  // The description is written last and records the PFM's size and hash: a reader that finds
-  // them disagreeing (a writer killed between the two, or two writers crossing) renders again.
+  // The description is written last and records the PFM's size and checksum: a reader that
+  // finds them disagreeing (a writer killed between the two, or two writers crossing) renders
+  // again.
   nlohmann::ordered_json description = r.info;
-  description["pfm"] = {{"bytes", pfm.size()}, {"sha256", sha256_hex(pfm)}};
-  try {
-    // Exclusive: no reader takes a PFM of this writer with a JSON of another.
-    const FolderLock lock(folder.fd(), LOCK_EX);
-    write_cache_file(folder, stem + ".pfm", pfm);
-    write_cache_file(folder, stem + ".json", description.dump(2) + "\n");
-  } catch (...) {
-    // The cache holds whole references only: no PFM without its JSON, no folder left empty.
-    ::unlinkat(folder.fd(), (stem + ".pfm").c_str(), 0);
-    if (created) ::rmdir(dir.c_str());  // removes it only if empty
-    throw;
-  }
+  description["pfm"] = {{"bytes", pfm.size()}, {"fnv1a64", checksum(pfm)}};
+  const std::string json = description.dump(2) + "\n", stem = reference_stem(spec);
+  const FolderLock lock(folder.fd(), LOCK_EX);  // no reader takes this PFM with another's JSON
+  std::set<std::string> index = read_index(folder.fd());
+  write_files(folder, {{stem + ".pfm", pfm}, {stem + ".json", json}}, &index);
   return r;
 }
 

@@ -82,7 +82,7 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
 // reflected light, and at 256 spp that bias dominates the error against the reference.
 TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
   const auto dir = fresh_dir("ch05_reference");
-  const std::string reference_dir = (dir.parent_path() / "ch05_reference_cache").string();
+  const std::string reference_dir = (dir.parent_path() / "ch05_cache").string();
   const ProgramRun run = run_program(
       k_program, "--width 32 --height 24 --spp 4,256 --depth 0 --reference-spp 64 --quiet "
                  "--reference-dir " + reference_dir + " --out " + dir.string());

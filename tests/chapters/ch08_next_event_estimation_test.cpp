@@ -23,7 +23,7 @@ const std::string k_tiny = "--width 12 --height 9 --spp 2 --reference-spp 4 --ra
 
 TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   const auto dir = fresh_dir("ch08_smoke");
-  const auto refs = dir.parent_path() / "ch08_smoke_refs";
+  const auto refs = dir.parent_path() / "ch08_smoke_cache";
   std::filesystem::remove_all(refs);
   const ProgramRun run = run_program(
       k_program, k_tiny + "--threads 2 --reference-dir " + refs.string() + " --out " + dir.string());
@@ -87,8 +87,8 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
 
 TEST(Ch08Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   const auto one = fresh_dir("ch08_threads1"), two = fresh_dir("ch08_threads2");
-  const auto refs1 = one.parent_path() / "ch08_threads1_refs";
-  const auto refs2 = one.parent_path() / "ch08_threads2_refs";
+  const auto refs1 = one.parent_path() / "ch08_threads1_cache";
+  const auto refs2 = one.parent_path() / "ch08_threads2_cache";
   std::filesystem::remove_all(refs1);
   std::filesystem::remove_all(refs2);
   const std::string flags = k_tiny + "--scene cornell-spheres --seed 5 --quiet";

@@ -26,7 +26,7 @@ const std::string k_tiny =
 
 TEST(Ch08PlatesTest, RunWritesTheFigureAndTheTableAtEqualRays) {
   const auto dir = fresh_dir("ch08_plates");
-  const auto refs = dir.parent_path() / "ch08_plates_refs";
+  const auto refs = dir.parent_path() / "ch08_plates_cache";
   const ProgramRun run = run_program(k_program, k_tiny + "--quiet --threads 2 --reference-dir " +
                                                     refs.string() + " --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -56,7 +56,7 @@ TEST(Ch08PlatesTest, RunWritesTheFigureAndTheTableAtEqualRays) {
 
 TEST(Ch08PlatesTest, SameSeedGivesByteIdenticalPlatesWhateverTheThreadCount) {
   const auto one = fresh_dir("ch08_plates_threads1"), two = fresh_dir("ch08_plates_threads2");
-  const auto refs = one.parent_path() / "ch08_plates_threads_refs";
+  const auto refs = one.parent_path() / "ch08_plates_threads_cache";
   const std::string flags = k_tiny + "--seed 7 --quiet --reference-dir " + refs.string();
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);

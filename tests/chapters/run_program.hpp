@@ -30,7 +30,9 @@ inline ProgramRun run_program(const std::string& program, const std::string& arg
   static int counter = 0;
   const std::string stem = (tmp / (program + "-" + std::to_string(::getpid()) + "-" +
                                    std::to_string(counter++))).string();
-  const std::string command = std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments +
+  // The default reference cache (--reference-dir not given) is this build's, never the user's.
+  const std::string command = "XDG_CACHE_HOME='" + (tmp / "xdg-cache").string() + "' " +
+                              std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments +
                               " >" + stem + ".out 2>" + stem + ".err";
   const int status = std::system(command.c_str());
   ProgramRun run;

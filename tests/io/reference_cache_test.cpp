@@ -1,5 +1,5 @@
-// The reference cache as one verified unit and the files it is made of (issue 34): SHA-256
-// against the standard's examples, a PFM whose header and size disagree refused before any
+// The reference cache as one verified unit and the files it is made of (issue 34), a folder
+// of its own that deletes only what it wrote (issue 43): a PFM whose header and size disagree refused before any
 // allocation, a FIFO refused without blocking, temporaries that never follow a planted link,
 // dead writers' temporaries removed and live ones kept, and a spoiled cache rendered again.
 
@@ -8,12 +8,15 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <cstdlib>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -21,7 +24,6 @@
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
-#include "io/sha256.hpp"
 #include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -33,23 +35,6 @@ fs::path fresh_dir(const std::string& name) { return fresh_temp_dir("reference_c
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
-}
-
-// The examples of FIPS 180-4's appendix, and lengths on both sides of the padding's edges
-// (55, 56 and 64 bytes fill one block, spill into a second, and fill one exactly).
-TEST(Sha256Test, MatchesTheStandardsExamples) {
-  EXPECT_EQ(mcrt::sha256_hex(""),
-            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(mcrt::sha256_hex("abc"),
-            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(mcrt::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
-            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-  EXPECT_EQ(mcrt::sha256_hex(std::string(1000000, 'a')),
-            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
-  EXPECT_EQ(mcrt::sha256_hex(std::string(55, 'a')),
-            "9f4390f8d30c2dd92ec9f095b65e2b9ae9b0a925a5258e241c9f1e910f734318");
-  EXPECT_EQ(mcrt::sha256_hex(std::string(64, 'a')),
-            "ffe054fe7ae0cb6dc65c3af9b61d5209f439851db43d0ba5997337df154668eb");
 }
 
 // A 30-byte file whose header claims 10000 x 10000 pixels (1.2 GB of floats) is refused at
@@ -161,14 +146,139 @@ TEST(ReferenceCacheTest, ALinkOrAnOpenFolderIsRefusedWithExitTwo) {
   const fs::path parent = fresh_dir("refused");
   fs::create_directory(parent / "real");
   fs::create_directory_symlink(parent / "real", parent / "link");
-  EXPECT_THROW(mcrt::check_reference_folder(parent / "link"), mcrt::UsageError);
+  EXPECT_THROW(mcrt::check_reference_folder(parent / "link", ""), mcrt::UsageError);
   EXPECT_THROW(mcrt::load_or_render_reference(parent / "link", tiny_spec()), mcrt::UsageError);
   EXPECT_TRUE(fs::is_empty(parent / "real"));
   fs::permissions(parent / "real", fs::perms::all);  // 0777, no sticky bit
-  EXPECT_THROW(mcrt::check_reference_folder(parent / "real"), mcrt::UsageError);
+  EXPECT_THROW(mcrt::check_reference_folder(parent / "real", ""), mcrt::UsageError);
   fs::permissions(parent / "real", fs::perms::all | fs::perms::sticky_bit);  // like /tmp
-  EXPECT_NO_THROW(mcrt::check_reference_folder(parent / "real"));
-  EXPECT_NO_THROW(mcrt::check_reference_folder(parent / "missing"));  // created when written
+  EXPECT_NO_THROW(mcrt::check_reference_folder(parent / "real", ""));
+  EXPECT_NO_THROW(mcrt::check_reference_folder(parent / "missing", ""));
+  EXPECT_TRUE(fs::is_regular_file(parent / "missing" / "CACHEDIR.TAG"));  // made and tagged
+}
+
+// The exact signature line of the Cache Directory Tagging convention.
+TEST(ReferenceCacheTest, TheFolderIsTaggedAsACache) {
+  const fs::path dir = fresh_dir("tagged") / "cache";
+  mcrt::load_or_render_reference(dir, tiny_spec());
+  EXPECT_EQ(read_text(dir / "CACHEDIR.TAG").substr(0, 44),
+            "Signature: 8a477f597d28d172789f06886806bc55\n");
+}
+
+// A folder holding files and no tag (a user's pictures) is not a cache: refused, untouched.
+TEST(ReferenceCacheTest, AnUntaggedFolderWithFilesIsRefused) {
+  const fs::path dir = fresh_dir("untagged");
+  write_bytes(dir / "holiday.pfm", "a user's picture");
+  write_bytes(dir / ".notes.tmp-draft", "a user's draft");
+  try {
+    mcrt::check_reference_folder(dir, "");
+    ADD_FAILURE() << "an untagged folder with files was accepted";
+  } catch (const mcrt::UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--reference-dir"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("CACHEDIR.TAG"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(mcrt::load_or_render_reference(dir, tiny_spec()), mcrt::UsageError);
+  EXPECT_EQ(read_text(dir / "holiday.pfm"), "a user's picture");
+  EXPECT_EQ(read_text(dir / ".notes.tmp-draft"), "a user's draft");
+  EXPECT_FALSE(fs::exists(dir / "CACHEDIR.TAG"));
+}
+
+// Each run replaces --out whole: a cache inside it (or a run inside the cache) is refused.
+TEST(ReferenceCacheTest, ACacheAndAnOutputInsideOneAnotherAreRefused) {
+  const fs::path parent = fresh_dir("nested");
+  EXPECT_THROW(mcrt::check_reference_folder(parent / "run" / "cache", parent / "run"),
+               mcrt::UsageError);
+  EXPECT_THROW(mcrt::check_reference_folder(parent / "cache", parent / "cache" / "run"),
+               mcrt::UsageError);
+  EXPECT_THROW(mcrt::check_reference_folder(parent / "same", parent / "same/."), mcrt::UsageError);
+  EXPECT_FALSE(fs::exists(parent / "run"));
+  EXPECT_NO_THROW(mcrt::check_reference_folder(parent / "cache", parent / "cache-run"));
+}
+
+// $XDG_CACHE_HOME/mcrt-companion (absolute only), else ~/.cache/mcrt-companion, else refused.
+TEST(ReferenceCacheTest, TheDefaultFolderFollowsTheXdgBaseDirectories) {
+  const auto saved = [](const char* name) -> std::optional<std::string> {
+    const char* value = std::getenv(name);
+    return value ? std::optional<std::string>(value) : std::nullopt;
+  };
+  const std::optional<std::string> xdg = saved("XDG_CACHE_HOME"), home = saved("HOME");
+  ::setenv("XDG_CACHE_HOME", "/x/cache", 1);
+  ::setenv("HOME", "/h", 1);
+  EXPECT_EQ(mcrt::reference_folder(""), fs::path("/x/cache/mcrt-companion"));
+  EXPECT_EQ(mcrt::reference_folder("mine"), fs::path("mine"));
+  ::setenv("XDG_CACHE_HOME", "relative", 1);  // ignored, as the specification says
+  EXPECT_EQ(mcrt::reference_folder(""), fs::path("/h/.cache/mcrt-companion"));
+  ::unsetenv("XDG_CACHE_HOME");
+  EXPECT_EQ(mcrt::reference_folder(""), fs::path("/h/.cache/mcrt-companion"));
+  ::unsetenv("HOME");
+  EXPECT_THROW(mcrt::reference_folder(""), mcrt::UsageError);
+  EXPECT_EQ(mcrt::reference_folder("mine"), fs::path("mine"));
+  if (xdg) ::setenv("XDG_CACHE_HOME", xdg->c_str(), 1);
+  if (home) ::setenv("HOME", home->c_str(), 1);
+}
+
+// Only files the index names are ever deleted: a user's files planted in the cache stay, a
+// dead writer's temporary the index names goes, a live writer's (its lock held) stays, and a
+// PFM the index names whose JSON is gone goes.
+TEST(ReferenceCacheTest, OnlyFilesTheIndexNamesAreDeleted) {
+  const fs::path dir = fresh_dir("index") / "cache";
+  const mcrt::ReferenceSpec spec = tiny_spec();
+  mcrt::load_or_render_reference(dir, spec);
+  const std::string stem = mcrt::reference_stem(spec);
+  for (const char* name : {"ground_truth_4096spp.pfm", ".notes.tmp-draft",
+                           ".cornell_ls1_4x3.pfm.tmp-0123456789abcdef", "measured.pfm"})
+    write_bytes(dir / name, "a user's file");
+  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(dir_fd, 0);
+  const mcrt::NewFile dead = mcrt::create_temporary(dir_fd, stem + ".pfm");
+  const mcrt::NewFile live = mcrt::create_temporary(dir_fd, stem + ".json");
+  ASSERT_GE(dead.fd, 0);
+  ASSERT_GE(live.fd, 0);
+  ::close(dead.fd);  // its writer died: the lock is free
+  std::ofstream(dir / "index.txt", std::ios::app) << dead.name << "\n" << live.name << "\n";
+  const mcrt::Reference cached = mcrt::load_or_render_reference(dir, spec);
+  EXPECT_FALSE(cached.rendered);
+  EXPECT_FALSE(fs::exists(dir / dead.name));
+  EXPECT_TRUE(fs::exists(dir / live.name));
+  for (const char* name : {"ground_truth_4096spp.pfm", ".notes.tmp-draft",
+                           ".cornell_ls1_4x3.pfm.tmp-0123456789abcdef", "measured.pfm"})
+    EXPECT_EQ(read_text(dir / name), "a user's file") << name;
+  ::close(live.fd);
+  ::close(dir_fd);
+  fs::remove(dir / (stem + ".json"));  // a writer killed between its two renames
+  const mcrt::Reference again = mcrt::load_or_render_reference(dir, spec);
+  EXPECT_TRUE(again.rendered);
+  EXPECT_TRUE(fs::exists(dir / (stem + ".json")));
+  EXPECT_EQ(read_text(dir / "ground_truth_4096spp.pfm"), "a user's file");
+}
+
+// Out of descriptors (EMFILE) at every step of a read and a write: the valid entry stays. With
+// k descriptors free for k = 0..15, every open of the cache fails in turn (15 is more than a
+// whole read and write take: the last runs succeed).
+TEST(ReferenceCacheTest, RunningOutOfDescriptorsNeverDeletesAValidEntry) {
+  const fs::path dir = fresh_dir("emfile") / "cache";
+  const mcrt::ReferenceSpec spec = tiny_spec();
+  const mcrt::Reference first = mcrt::load_or_render_reference(dir, spec);
+  const std::string pfm = read_text(dir / (mcrt::reference_stem(spec) + ".pfm"));
+  rlimit saved {};
+  ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &saved), 0);
+  for (rlim_t free = 0; free <= 15; ++free) {
+    const int lowest = ::open("/dev/null", O_RDONLY);  // the lowest free descriptor
+    ASSERT_GE(lowest, 0);
+    ::close(lowest);
+    rlimit limited = saved;
+    limited.rlim_cur = static_cast<rlim_t>(lowest) + free;
+    ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &limited), 0);
+    try {
+      mcrt::load_or_render_reference(dir, spec);
+    } catch (const std::exception&) {  // a failure is allowed; a lost entry is not
+    }
+    ::setrlimit(RLIMIT_NOFILE, &saved);
+    const mcrt::Reference after = mcrt::load_or_render_reference(dir, spec);
+    EXPECT_FALSE(after.rendered) << "the entry was lost with " << free << " descriptors free";
+    EXPECT_EQ(after.image.pixels, first.image.pixels);
+    EXPECT_EQ(read_text(dir / (mcrt::reference_stem(spec) + ".pfm")), pfm);
+  }
 }
 
 }  // namespace

@@ -7,14 +7,20 @@ README guarantee it checks:
                    a reference/ full of links named like the cache's temporaries, a `reference`
                    link, a folder anyone may write: refused (exit 2, one line naming
                    --reference-dir) and the file the links point at untouched; links planted in
-                   a sticky shared cache are never followed. Root only (the attacker is nobody):
-                   skipped with one line otherwise.
+                   a sticky shared cache or in our own are never followed nor deleted; as root,
+                   another user's files in a 1777 cache are never deleted. Root only (the
+                   attacker is nobody): skipped with one line otherwise. No pid is predicted.
   cache-integrity  [The reference cache] a cached PFM of NaN, +Inf or negative values (with a
-                   matching hash), of zeros, with trailing bytes, a 30-byte PFM claiming
+                   matching checksum), of zeros, with trailing bytes, a 30-byte PFM claiming
                    10000x10000, a PFM and a JSON of two writers, a FIFO for the JSON, leftovers
                    of killed writers, two runs with different --reference-spp at once: each run
                    uses the reference it asked for, says why it rendered one again, and leaves a
-                   cache that the next run uses as it is.
+                   cache that the next run uses as it is. The cache is a folder of its own
+                   (issue 43): `cd proj; ch05 --out run` leaves proj/reference/ alone; a user's
+                   files planted in the cache stay; an untagged --reference-dir with files, a
+                   cache inside --out (or --out inside it), no HOME: refused up front; a HOME
+                   where no folder can be made: one line, exit 1; a live writer in another PID
+                   namespace (unshare; skipped with a line where not allowed) keeps its file.
   gnuplot-env      [Plots] a ~/.gnuplot that prints and sets decimal commas changes nothing; a
                    hanging gnuplot and one that cannot draw PNG leave the run written with a note.
   divergent        [Refused work] --albedo 1 where a furnace's paths would never end: exit 2,
@@ -28,7 +34,6 @@ README guarantee it checks:
 
 import concurrent.futures
 import fcntl
-import hashlib
 import json
 import os
 import pwd
@@ -44,9 +49,10 @@ from pathlib import Path
 base = None  # robustness.py, given by register()
 
 CH05 = "ch05_path_tracer"
-# A tiny ch05 run whose reference (16x12 at 16 spp) takes milliseconds.
+# A tiny ch05 run whose reference (16x12 at 16 spp) takes milliseconds, cached in reference/
+# of the folder it runs in.
 TINY05 = ["--width", "16", "--height", "12", "--spp", "1,4", "--depth", "3",
-          "--reference-spp", "16", "--quiet"]
+          "--reference-spp", "16", "--quiet", "--reference-dir", "reference"]
 STEM05 = "cornell_ls1_16x12"
 
 
@@ -116,23 +122,30 @@ def victim_file(tmp):
     return victim
 
 
-def plant_links(folder, target, first_pid, stem):
-    """Links to target under names like the temporaries an older writer used (".NAME.tmp-<pid>-
-    <n>" for the next pids): the attacker's guess at the names a run will open."""
+def temporary_like_names(stem):
+    """Names like the cache's temporaries, old (".NAME.tmp-<pid>-<n>") and new (".NAME.tmp-<16
+    hex digits>"): an attacker's guesses. No pid is predicted: the names are drawn."""
+    names = []
+    for name in (f"{stem}.pfm", f"{stem}.json"):
+        names += [f".{name}.tmp-{pid}-0" for pid in range(1, 200)]
+        names += [f".{name}.tmp-{os.urandom(8).hex()}" for _ in range(200)]
+    return names
+
+
+def plant_links(folder, target, stem):
+    """Links to target under names like the cache's temporaries."""
     os.makedirs(folder, exist_ok=True)
-    for pid in range(first_pid, first_pid + 400):
-        for name in (f"{stem}.pfm", f"{stem}.json"):
-            for n in range(2):
-                os.symlink(target, os.path.join(folder, f".{name}.tmp-{pid}-{n}"))
+    for name in temporary_like_names(stem):
+        os.symlink(target, os.path.join(folder, name))
 
 
 def plant_link(target, name):
     os.symlink(target, name)
 
 
-def next_pid():
-    with open("/proc/sys/kernel/ns_last_pid") as f:
-        return int(f.read()) + 1
+def plant_files(folder, names):
+    for name in names:
+        Path(folder, name).write_bytes(b"another user's file")
 
 
 def link_problems(code, err, victim, parent):
@@ -153,7 +166,7 @@ def group_cache_links(chapters, tmp, checks):
         # 1. nobody pre-creates shared/reference/ full of links named like temporaries.
         shared, victim = shared_folder(tmp), victim_file(tmp)
         made += [shared, victim.parent]
-        as_nobody(plant_links, shared / "reference", victim, next_pid(), STEM05)
+        as_nobody(plant_links, shared / "reference", victim, STEM05)
         code, _, err, seconds = base.run([exe] + TINY05 + ["--out", str(shared / "myrun")],
                                          cwd=shared)
         problems = base.exit_problems(code, 2, err) + base.one_line_problems(err, [shared])
@@ -194,8 +207,8 @@ def group_cache_links(chapters, tmp, checks):
             problems.append("the refused cache was written")
         checks.case(f"{guarantee} ch05 with a reference/ of mode 0777", problems)
 
-        # 4. A sticky cache of ours (mode 1777) where nobody planted links under temporary-like
-        # names: accepted, and the links are removed or left, never followed.
+        # 4. A sticky cache of ours (mode 1777, tagged by a first run) where nobody planted
+        # links under temporary-like names: accepted, the links never followed.
         sticky = shared_folder(tmp)
         made.append(sticky)
         victim2 = victim_file(tmp)
@@ -203,7 +216,9 @@ def group_cache_links(chapters, tmp, checks):
         os.chown(sticky, 0, 0)
         (sticky / "reference").mkdir()
         os.chmod(sticky / "reference", 0o1777)
-        as_nobody(plant_links, sticky / "reference", victim2, next_pid(), STEM05)
+        prime_cache(exe, sticky)
+        as_nobody(plant_links, sticky / "reference", victim2, STEM05)
+        (sticky / "reference" / f"{STEM05}.json").unlink()  # the run renders and writes
         code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(sticky / "run")], cwd=sticky)
         problems = base.exit_problems(code, 0, err) + link_problems(code, err, victim2, sticky)
         if code == 0 and not (sticky / "reference" / f"{STEM05}.json").is_file():
@@ -211,25 +226,40 @@ def group_cache_links(chapters, tmp, checks):
         checks.case(f"{guarantee} ch05 with a sticky reference/ (1777) holding links named like "
                     "temporaries", problems)
 
-        # 5. Every file of a run's own folder is created new: links planted in --out's parent
-        # under old-style temporary names of the cache and of the run are never followed.
+        # 5. Root, a 1777 cache of root's: another user's files in it, under names like the
+        # cache's own (a PFM without JSON, temporaries whose lock is free), are never deleted
+        # (the sticky bit does not stop root; the index does).
+        theirs = ["holiday.pfm", ".notes.tmp-draft", "cornell_ls1_16x12_d3.pfm",
+                  f".{STEM05}.pfm.tmp-0123456789abcdef", f".{STEM05}.json.tmp-4242-0"]
+        as_nobody(plant_files, sticky / "reference", theirs)
+        (sticky / "reference" / f"{STEM05}.json").unlink()
+        code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(sticky / "run2")], cwd=sticky)
+        problems = base.exit_problems(code, 0, err)
+        gone = [n for n in theirs if not (sticky / "reference" / n).is_file()]
+        if gone:
+            problems.append(f"another user's files deleted from the cache: {gone}")
+        checks.case("[The reference cache] root's ch05 with a 1777 cache holding another user's "
+                    "files named like leftovers", problems)
+
+        # 6. Links planted in a cache of ours under temporary-like names: never followed, and
+        # left where they are (the index does not name them).
         victim3 = victim_file(tmp)
         made.append(victim3.parent)
         own = base.fresh(tmp / "own")
-        (own / "reference").mkdir()
-        pid = next_pid()
-        for p in range(pid, pid + 400):
-            for name in (f"{STEM05}.pfm", f"{STEM05}.json"):
-                os.symlink(victim3, own / "reference" / f".{name}.tmp-{p}-0")
+        prime_cache(exe, own)
+        planted = temporary_like_names(STEM05)
+        for name in planted:
+            os.symlink(victim3, own / "reference" / name)
+        (own / "reference" / f"{STEM05}.json").unlink()
         code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(own / "run")], cwd=own)
         problems = base.exit_problems(code, 0, err) + link_problems(code, err, victim3, own)
-        left = [n for n in os.listdir(own / "reference") if n.startswith(".")]
-        if left:
-            problems.append(f"{len(left)} temporary-like names left in the cache, e.g. {left[0]}")
+        left = [n for n in planted if (own / "reference" / n).is_symlink()]
+        if len(left) != len(planted):
+            problems.append(f"{len(planted) - len(left)} planted names deleted from the cache")
         checks.case(f"{guarantee} ch05 with links named like temporaries in its own cache "
-                    "(removed, not followed)", problems)
+                    "(left, not followed)", problems)
 
-        # 6. scripts/make-gallery in a shared out/ where nobody planted a link under the name it
+        # 7. scripts/make-gallery in a shared out/ where nobody planted a link under the name it
         # used (.index.html.tmp): refused before writing (issue 43: folders of your own only).
         gallery = Path(__file__).resolve().parents[2] / "scripts" / "make-gallery"
         shared3, victim4 = shared_folder(tmp), victim_file(tmp)
@@ -265,14 +295,21 @@ def prime_cache(exe, parent, extra=()):
     return json.loads((parent / "reference" / f"{STEM05}.json").read_text())
 
 
+def fnv1a64(data):
+    """FNV-1a, 64 bits: the checksum the cache records."""
+    value = 0xcbf29ce484222325
+    for byte in data:
+        value = ((value ^ byte) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return value
+
+
 def rehash(parent, pfm_bytes):
     """Writes pfm_bytes as the cached PFM and records its size and hash in the JSON, as a
     writer would: only the value checks can then find it wrong."""
     folder = parent / "reference"
     (folder / f"{STEM05}.pfm").write_bytes(pfm_bytes)
     description = json.loads((folder / f"{STEM05}.json").read_text())
-    description["pfm"] = {"bytes": len(pfm_bytes),
-                          "sha256": hashlib.sha256(pfm_bytes).hexdigest()}
+    description["pfm"] = {"bytes": len(pfm_bytes), "fnv1a64": f"{fnv1a64(pfm_bytes):016x}"}
     (folder / f"{STEM05}.json").write_text(json.dumps(description, indent=2) + "\n")
 
 
@@ -361,20 +398,24 @@ def group_cache_integrity(chapters, tmp, checks):
         os.mkfifo(folder(parent) / f"{STEM05}.json")
 
     def killed_writers(parent):
-        # What killed writers leave: temporaries of every naming, and a PFM without its JSON.
-        for name in (f".{STEM05}.pfm.tmp-0123456789abcdef", f".{STEM05}.json.tmp-4242-0",
-                     f".{STEM05}_d3.pfm.tmp-fedcba9876543210"):
+        # What killed writers leave, named in the index as they named it: temporaries, and a
+        # PFM without its JSON.
+        names = [f".{STEM05}.pfm.tmp-0123456789abcdef", f".{STEM05}.json.tmp-fedcba9876543210",
+                 f".{STEM05}_d3.pfm.tmp-00112233445566aa"]
+        for name in names:
             (folder(parent) / name).write_bytes(b"half a reference")
         shutil.copy(pfm(parent), folder(parent) / "cornell_ls1_16x12_d3.pfm")
+        with open(folder(parent) / "index.txt", "a") as index:
+            index.write("".join(f"{n}\n" for n in names + ["cornell_ls1_16x12_d3.pfm"]))
 
     cases = [
         (values(float("nan")), "finite", "a PFM of NaN with a matching hash"),
         (values(float("inf")), "finite", "a PFM of +Inf with a matching hash"),
         (values(-0.25), "non-negative", "a PFM of negative values with a matching hash"),
-        (zeros, "SHA-256", "a PFM of zeros its JSON does not describe"),
+        (zeros, "checksum", "a PFM of zeros its JSON does not describe"),
         (append_bytes, "bytes", "a PFM with trailing bytes"),
         (huge_header, "bytes", "a 30-byte PFM whose header claims 10000x10000"),
-        (other_writers_pfm, "SHA-256", "another writer's 32-spp PFM beside the 16-spp JSON"),
+        (other_writers_pfm, "checksum", "another writer's 32-spp PFM beside the 16-spp JSON"),
         (fifo_json, "not a regular file", "a FIFO in place of the JSON"),
         (killed_writers, None, "leftovers of killed writers (temporaries, a PFM without JSON)"),
     ]
@@ -421,6 +462,137 @@ def group_cache_integrity(chapters, tmp, checks):
     problems += cache_problems(parent)
     checks.case(f"{guarantee} two ch05 runs at once with --reference-spp 16 and 32, "
                 f"{rounds} rounds", problems)
+    own_folder_cases(exe, tmp, checks, guarantee)
+
+
+USER_FILES = {"ground_truth_4096spp.pfm": b"PF\n1 1\n-1.0\n" + b"\0" * 12,
+              "measured.pfm": b"a user's measurement", ".notes.tmp-draft": b"a user's draft",
+              f".{STEM05}.pfm.tmp-0123456789abcdef": b"a user's file under a cache-like name"}
+
+
+def plant_user_files(folder):
+    os.makedirs(folder, exist_ok=True)
+    for name, data in USER_FILES.items():
+        (Path(folder) / name).write_bytes(data)
+
+
+def user_files_problems(folder):
+    gone = [n for n, data in USER_FILES.items()
+            if not (Path(folder) / n).is_file() or (Path(folder) / n).read_bytes() != data]
+    return [f"a user's files deleted or changed: {gone}"] if gone else []
+
+
+def refusal_problems(code, err, seconds, parent, *words):
+    problems = base.exit_problems(code, 2, err) + base.one_line_problems(err, [parent])
+    for word in words:
+        if word not in base.text(err):
+            problems.append(f"the line does not say {word!r}: {base.text(err)!r}")
+    if seconds > 1.0:
+        problems.append(f"took {seconds:.2f} s to refuse (limit 1 s)")
+    return problems
+
+
+def own_folder_cases(exe, tmp, checks, guarantee):
+    """The cache is a folder of its own and deletes only what its index names (issue 43)."""
+    tiny = [a for a in TINY05 if a not in ("--reference-dir", "reference")]
+
+    # `cd proj; ch05 --out run` where proj/reference/ is the user's folder of pictures: the
+    # default cache is elsewhere ($XDG_CACHE_HOME), proj/reference/ untouched.
+    parent = base.fresh(tmp / "proj")
+    plant_user_files(parent / "reference")
+    code, _, err, _ = base.run([exe] + tiny + ["--out", "run"], cwd=parent)
+    problems = base.exit_problems(code, 0, err) + user_files_problems(parent / "reference")
+    if sorted(os.listdir(parent / "reference")) != sorted(USER_FILES):
+        problems.append(f"written into the user's reference/: {os.listdir(parent / 'reference')}")
+    xdg = Path(os.environ["XDG_CACHE_HOME"]) / "mcrt-companion"
+    if code == 0 and not (xdg / "CACHEDIR.TAG").is_file():
+        problems.append(f"no tagged cache in $XDG_CACHE_HOME/mcrt-companion: {xdg}")
+    checks.case(f"{guarantee} cd proj; ch05 --out run, proj/reference/ a user's pictures",
+                problems)
+
+    # The user's files planted in the cache itself (a tagged folder): never deleted.
+    parent = base.fresh(tmp / "planted")
+    prime_cache(exe, parent)
+    plant_user_files(parent / "reference")
+    (parent / "reference" / f"{STEM05}.json").unlink()  # the run renders and writes
+    code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(parent / "run")], cwd=parent)
+    problems = base.exit_problems(code, 0, err) + user_files_problems(parent / "reference")
+    checks.case(f"{guarantee} ch05 with a user's files planted in its cache", problems)
+
+    # --reference-dir mypics: a non-empty folder without CACHEDIR.TAG is refused up front.
+    parent = base.fresh(tmp / "mypics")
+    plant_user_files(parent / "mypics")
+    code, _, err, seconds = base.run([exe] + tiny + ["--reference-dir", "mypics", "--out", "run"],
+                                     cwd=parent)
+    problems = refusal_problems(code, err, seconds, parent, "--reference-dir", "CACHEDIR.TAG")
+    problems += user_files_problems(parent / "mypics")
+    if sorted(os.listdir(parent / "mypics")) != sorted(USER_FILES) or (parent / "run").exists():
+        problems.append(f"written: {sorted(os.listdir(parent))}, {os.listdir(parent / 'mypics')}")
+    checks.case(f"{guarantee} ch05 --reference-dir mypics (a user's files, no tag)", problems)
+
+    # A cache inside --out (which each run replaces): refused before any work.
+    parent = base.fresh(tmp / "inside")
+    for flags in (["--out", "run", "--reference-dir", "run/cache"],
+                  ["--out", "cache/run", "--reference-dir", "cache"]):
+        code, _, err, seconds = base.run([exe] + tiny + flags, cwd=parent)
+        problems = refusal_problems(code, err, seconds, parent, "--reference-dir", "--out")
+        if os.listdir(parent):
+            problems.append(f"left: {os.listdir(parent)}")
+        checks.case(f"{guarantee} ch05 {' '.join(flags)}", problems)
+
+    # No HOME, no XDG_CACHE_HOME: refused with a line; a HOME where no folder can be made: one
+    # line, exit 1; both before any work.
+    parent = base.fresh(tmp / "nohome")
+    env = {k: v for k, v in os.environ.items() if k not in ("HOME", "XDG_CACHE_HOME")}
+    code, _, err, seconds = run_env([exe] + tiny + ["--out", "run"], parent, env)
+    problems = refusal_problems(code, err, seconds, parent, "--reference-dir", "HOME")
+    checks.case(f"{guarantee} ch05 without HOME nor XDG_CACHE_HOME", problems)
+    (parent / "home").write_text("a file, not a folder\n")
+    env["HOME"] = str(parent / "home")
+    code, _, err, seconds = run_env([exe] + tiny + ["--out", "run"], parent, env)
+    problems = base.exit_problems(code, 1, err) + base.one_line_problems(err, [parent])
+    if "--reference-dir" not in base.text(err) or seconds > 1.0:
+        problems.append(f"not one prompt line naming --reference-dir: {base.text(err)!r}, "
+                        f"{seconds:.2f} s")
+    if sorted(os.listdir(parent)) != ["home"]:
+        problems.append(f"left: {os.listdir(parent)}")
+    checks.case(f"{guarantee} ch05 with a HOME where no cache folder can be made", problems)
+
+    # A live writer in another PID namespace (a container sharing the folder): its temporary,
+    # named in the index, holds its lock and stays; once it is gone, the next run removes it.
+    if not shutil.which("unshare") or subprocess.run(
+            ["unshare", "--pid", "--fork", "true"], stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL).returncode != 0:
+        print("SKIP: unshare --pid is not allowed here; the other-namespace writer did not run")
+        return
+    parent = base.fresh(tmp / "namespace")
+    prime_cache(exe, parent)
+    name = f".{STEM05}.pfm.tmp-{os.urandom(8).hex()}"
+    writer_code = ("import fcntl, sys\n"
+                   f"f = open({str(parent / 'reference' / name)!r}, 'wb')\n"
+                   "fcntl.flock(f, fcntl.LOCK_EX)\n"
+                   f"open({str(parent / 'reference' / 'index.txt')!r}, 'a').write({name!r} + '\\n')\n"
+                   "print('ready', flush=True)\n"
+                   "sys.stdin.read()\n")
+    writer = subprocess.Popen(["unshare", "--pid", "--fork", "--kill-child", sys.executable, "-c",
+                               writer_code], stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    problems = []
+    try:
+        if writer.stdout.readline().strip() != b"ready":
+            problems.append("the writer in another PID namespace did not start")
+        (parent / "reference" / f"{STEM05}.json").unlink()
+        code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(parent / "run")], cwd=parent)
+        problems += base.exit_problems(code, 0, err)
+        if not (parent / "reference" / name).exists():
+            problems.append("a live writer's temporary (another PID namespace) was removed")
+    finally:
+        writer.stdin.close()
+        writer.wait(timeout=10)
+    code, _, err, _ = base.run([exe] + TINY05 + ["--out", str(parent / "run2")], cwd=parent)
+    problems += base.exit_problems(code, 0, err)
+    if (parent / "reference" / name).exists():
+        problems.append("a dead writer's temporary, named in the index, was left")
+    checks.case(f"{guarantee} ch05 beside a live writer in another PID namespace", problems)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -67,15 +67,16 @@ TINY = {
 # Chapters that render an image of a scene (they take --scene, --width, --height, --emission).
 RENDERERS = ["ch01_ray_tracing", "ch04_recursive_nk", "ch05_path_tracer",
              "ch06_russian_roulette", "ch07_importance_sampling"]
-# The folder of cached reference images (chapters 05 and 08): it sits beside --out on purpose,
-# shared between runs. It may stay only if it holds whole references, each PFM with its JSON.
+# The folder of cached reference images (chapters 05 and 08) when a case gives --reference-dir
+# beside --out. It may stay only if it holds whole references, each PFM with its JSON (and the
+# cache's tag and index).
 REFERENCE_CACHE = "reference"
 
 
 def reference_cache_problems(folder):
-    names = sorted(os.listdir(folder))
+    names = sorted(set(os.listdir(folder)) - {"CACHEDIR.TAG", "index.txt"})
     stems = {n.rsplit(".", 1)[0] for n in names}
-    whole = names and all(n.endswith((".pfm", ".json")) and not n.startswith(".") for n in names) \
+    whole = all(n.endswith((".pfm", ".json")) and not n.startswith(".") for n in names) \
         and all(f"{s}.pfm" in names and f"{s}.json" in names for s in stems)
     return [] if whole else [f"a reference cache that is not whole: {names}"]
 
@@ -808,6 +809,8 @@ def main():
     chapters = {name: str(Path(path).resolve())
                 for name, path in (item.split("=", 1) for item in options.chapter)}
     tmp = fresh(Path(options.tmp).resolve())
+    # The chapters' default reference cache: this group's, never the user's ~/.cache.
+    os.environ["XDG_CACHE_HOME"] = str(fresh(Path(f"{tmp}-xdg-cache")))
     checks = Checks()
     for name, path in list(chapters.items()):
         if not os.access(path, os.X_OK):  # a failure, but the other chapters still run
@@ -825,6 +828,7 @@ def main():
     print(f"{options.group} {options.which or ''}: {checks.cases} cases, "
           f"{len(checks.failures)} failures, {time.monotonic() - start:.1f} s")
     shutil.rmtree(tmp, ignore_errors=True)
+    shutil.rmtree(os.environ["XDG_CACHE_HOME"], ignore_errors=True)
     return 1 if checks.failures else 0
 
 
