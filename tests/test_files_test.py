@@ -44,7 +44,6 @@ NOT_YET_OWN_FILE = {
     "integration/integrands": "tests/integration/monte_carlo_test.cpp",
     "integration/log_grid": "tests/integration/quadrature_test.cpp",
     "io/exclusive_file": "tests/io/reference_cache_test.cpp",
-    "io/sha256": "tests/io/reference_cache_test.cpp",
     "io/labelled_grid": "tests/io/contact_sheet_test.cpp",
     "io/text": "tests/io/contact_sheet_test.cpp",
     "io/ray_limit": "tests/io/work_limit_test.cpp",

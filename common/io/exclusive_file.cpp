@@ -7,7 +7,6 @@
 
 #include <ctime>
 
-#include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/random.h>
@@ -89,40 +88,6 @@ std::size_t read_all(int fd, std::string& bytes) {
     got += static_cast<std::size_t>(n);
   }
   return got;
-}
-
-int remove_abandoned_temporaries(int dir_fd) {
-  const int list_fd = ::openat(dir_fd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (list_fd < 0) return 0;
-  DIR* folder = ::fdopendir(list_fd);
-  if (folder == nullptr) {
-    ::close(list_fd);
-    return 0;
-  }
-  int removed = 0;
-  while (const dirent* entry = ::readdir(folder)) {
-    const std::string_view name = entry->d_name;
-    if (name.size() < 2 || name[0] != '.' || name.find(".tmp-") == std::string_view::npos)
-      continue;
-    const std::string path(name);
-    struct stat before {};
-    if (::fstatat(dir_fd, path.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0) continue;
-    if (!S_ISREG(before.st_mode)) {
-      removed += ::unlinkat(dir_fd, path.c_str(), 0) == 0;
-      continue;
-    }
-    // O_NONBLOCK: a file swapped for a FIFO in between is not waited on.
-    const int fd = ::openat(dir_fd, path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) continue;
-    struct stat opened {};
-    // Its writer holds the lock while it lives: a free lock is a dead writer's file.
-    if (::fstat(fd, &opened) == 0 && opened.st_ino == before.st_ino &&
-        opened.st_dev == before.st_dev && ::flock(fd, LOCK_EX | LOCK_NB) == 0)
-      removed += ::unlinkat(dir_fd, path.c_str(), 0) == 0;
-    ::close(fd);
-  }
-  ::closedir(folder);
-  return removed;
 }
 
 }  // namespace mcrt

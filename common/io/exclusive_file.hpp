@@ -25,7 +25,7 @@ struct NewFile {
 
 /// Creates `.<stem>.tmp-<random_suffix()>` in the folder open as `dir_fd` (O_CREAT|O_EXCL|
 /// O_NOFOLLOW|O_CLOEXEC, mode 0644) and locks it (flock, exclusive): a lock nobody holds marks
-/// the file of a writer that died (remove_abandoned_temporaries). Tries another name if the
+/// the file of a writer that died (the reference cache's clean-up). Tries another name if the
 /// one drawn exists.
 NewFile create_temporary(int dir_fd, std::string_view stem);
 
@@ -36,10 +36,5 @@ std::error_code write_all(int fd, std::string_view bytes);
 /// Its reading counterpart: reads into `bytes` until it is full or the file ends (read() may
 /// return less than asked, or be interrupted); returns how many bytes it got.
 std::size_t read_all(int fd, std::string& bytes);
-
-/// Removes the temporary files (`.*.tmp-*`) in the folder open as `dir_fd` whose writer is
-/// gone: their lock can be taken. Links and other non-files under such names are removed too
-/// (unlinkat removes the link, never its target). Returns how many were removed.
-int remove_abandoned_temporaries(int dir_fd);
 
 }  // namespace mcrt

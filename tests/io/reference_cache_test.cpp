@@ -92,25 +92,6 @@ TEST(ExclusiveFileTest, TemporariesNeverFollowAPlantedLink) {
   ::close(dir_fd);
 }
 
-// A dead writer's temporary (its lock free) is removed; a live writer's (its lock held) stays.
-TEST(ExclusiveFileTest, OnlyDeadWritersTemporariesAreRemoved) {
-  const fs::path dir = fresh_dir("leftovers");
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  ASSERT_GE(dir_fd, 0);
-  write_bytes(dir / ".a.pfm.tmp-1234-0", "dead");
-  fs::create_symlink("/nonexistent", dir / ".a.json.tmp-99");
-  const mcrt::NewFile live = mcrt::create_temporary(dir_fd, "b.pfm");
-  ASSERT_GE(live.fd, 0);
-  write_bytes(dir / "kept.pfm", "not a temporary");
-  EXPECT_EQ(mcrt::remove_abandoned_temporaries(dir_fd), 2);
-  EXPECT_TRUE(fs::exists(dir / live.name));
-  EXPECT_TRUE(fs::exists(dir / "kept.pfm"));
-  EXPECT_FALSE(fs::exists(dir / ".a.pfm.tmp-1234-0"));
-  ::close(live.fd);
-  EXPECT_EQ(mcrt::remove_abandoned_temporaries(dir_fd), 1);  // its writer is gone now
-  ::close(dir_fd);
-}
-
 mcrt::ReferenceSpec tiny_spec() {
   mcrt::ReferenceSpec spec;
   spec.scene.scene = "cornell";
