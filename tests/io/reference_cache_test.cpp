@@ -243,7 +243,15 @@ TEST(ReferenceCacheTest, RunningOutOfDescriptorsNeverDeletesAValidEntry) {
   const std::string pfm = read_text(dir / (mcrt::reference_stem(spec) + ".pfm"));
   rlimit saved {};
   ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &saved), 0);
-  for (rlim_t free = 0; free <= 15; ++free) {
+  // Under the sanitizers, UBSan's vptr check tests memory through a pipe of its own: with
+  // fewer than two descriptors free it reports a valid exception object as invalid. Those
+  // counts are covered by the plain build.
+#if defined(__SANITIZE_ADDRESS__)
+  constexpr rlim_t k_fewest_free = 2;
+#else
+  constexpr rlim_t k_fewest_free = 0;
+#endif
+  for (rlim_t free = k_fewest_free; free <= 15; ++free) {
     const int lowest = ::open("/dev/null", O_RDONLY);  // the lowest free descriptor
     ASSERT_GE(lowest, 0);
     ::close(lowest);
