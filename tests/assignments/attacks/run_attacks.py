@@ -5,7 +5,8 @@ the tests run as `nobody` through scripts/sandbox-run). Each closed attack must 
 than the honest submission it is built on and must not reach its goal; the open one is run and
 reported as open.
 
-  run_attacks.py ROOT BUILD     BUILD: the grader's --build folder, kept between runs
+  run_attacks.py ROOT BUILD [ATTACK...]   BUILD: the grader's --build folder, kept between
+                                          runs; ATTACK: only these (default: every one)
 
 The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp not submitted
 (so a2.3 is graded as its stub and points are lost). The attacks add to it:
@@ -77,10 +78,14 @@ def score(results):
 
 
 def main():
-    if len(sys.argv) != 3:
-        print("run_attacks: usage: run_attacks.py ROOT BUILD", file=sys.stderr)
+    if len(sys.argv) < 3:
+        print("run_attacks: usage: run_attacks.py ROOT BUILD [ATTACK...]", file=sys.stderr)
         sys.exit(2)
-    root, build = (os.path.abspath(p) for p in sys.argv[1:])
+    root, build = (os.path.abspath(p) for p in sys.argv[1:3])
+    only = set(sys.argv[3:])
+
+    def wanted(name):
+        return not only or name in only
     if os.geteuid() != 0:
         print("run_attacks: the sandbox needs root (the tests run as nobody); not run", file=sys.stderr)
         sys.exit(2)
@@ -99,44 +104,66 @@ def main():
         print(run.stdout)
         sys.exit(1)
     print(f"  honest submission (a2.3 not submitted): {base} points", flush=True)
+    secret = "TEST(A2Hidden, CornersOfTheUnitSquare)"  # a line of the hidden test
 
     def include(name):
         with open(os.path.join(HERE, name)) as f:
             return f.read()
 
-    # fork_rewrite: the file must still say what the grader wrote, after the grader is gone
-    run, path, graded = grade(root, build, submission(root, os.path.join(work, "fork"), include("fork_rewrite.inc")))
-    time.sleep(k_wait_after_grading)
-    after = json.load(open(path)) if os.path.exists(path) else None
-    report("fork_rewrite", after == graded and score(after) <= base,
-           f"graded {score(graded)}, the file says {score(after)} {k_wait_after_grading} s later")
+    if wanted("fork_rewrite"):
+        # fork_rewrite: the file must still say what the grader wrote, after the grader is gone
+        run, path, graded = grade(root, build, submission(root, os.path.join(work, "fork"), include("fork_rewrite.inc")))
+        time.sleep(k_wait_after_grading)
+        after = json.load(open(path)) if os.path.exists(path) else None
+        report("fork_rewrite", after == graded and score(after) <= base,
+               f"graded {score(graded)}, the file says {score(after)} {k_wait_after_grading} s later")
 
-    # hidden_read: no feedback carries a line of the hidden test's source
-    run, _, graded = grade(root, build, submission(root, os.path.join(work, "read"), include("hidden_read.inc")))
-    secret = "TEST(A2Hidden, CornersOfTheUnitSquare)"
-    shown = json.dumps(graded) if graded else ""
-    tried = "HIDDEN SOURCE: (unreadable)" in shown  # the attack ran and was refused
-    report("hidden_read", secret not in shown and score(graded) <= base,
-           f"graded {score(graded)}; the hidden source {'is' if secret in shown else 'is not'} in the "
-           f"feedback{' (its read was refused)' if tried else ''}")
+    if wanted("hidden_read"):
+        # hidden_read: no feedback carries a line of the hidden test's source
+        run, _, graded = grade(root, build, submission(root, os.path.join(work, "read"), include("hidden_read.inc")))
+        shown = json.dumps(graded) if graded else ""
+        tried = "HIDDEN SOURCE: (unreadable)" in shown  # the attack ran and was refused
+        report("hidden_read", secret not in shown and score(graded) <= base,
+               f"graded {score(graded)}; the hidden source {'is' if secret in shown else 'is not'} in the "
+               f"feedback{' (its read was refused)' if tried else ''}")
 
-    # hostile_kit: a whole kit of its own; only its editable files (unchanged stubs) are taken
-    kit = os.path.join(work, "hostile-kit")
-    shutil.rmtree(kit, ignore_errors=True)
-    subprocess.run([os.path.join(root, "scripts/make-assignment"), "a2", "--out", kit],
-                   stdout=subprocess.DEVNULL, check=True)
-    with open(os.path.join(kit, "CMakeLists.txt"), "a") as f:
-        f.write('\nexecute_process(COMMAND sh -c "echo owned > /tmp/mcrt-attack-owned")\n')
-    with open(os.path.join(kit, "tests/assignments/a2/a2_test.cpp"), "w") as f:
-        f.write("int main() { return 0; }\n")
-    with open(os.path.join(kit, "tests/assignments/points.json"), "w") as f:
-        f.write('{"a2.A2.Task1UniformHemisphereFollowsItsPdf": 100}\n')
-    if os.path.exists("/tmp/mcrt-attack-owned"):
-        os.remove("/tmp/mcrt-attack-owned")
-    run, _, graded = grade(root, build, kit)
-    report("hostile_kit", score(graded) == 0 and not os.path.exists("/tmp/mcrt-attack-owned"),
-           f"graded {score(graded)} (the stub kit's 0); its execute_process "
-           f"{'ran' if os.path.exists('/tmp/mcrt-attack-owned') else 'did not run'}")
+    if wanted("compiler_read"):
+        # compiler_read: the subject's compiler probes and embeds the hidden test (the checker's
+        # copy and the --hidden folder's) and the answer key; nothing of them reaches the feedback,
+        # no probe finds them, and the submission still builds (it was not refused by chance)
+        paths = {"@CHECKER_HIDDEN@": os.path.join(build, "checker/src/tests/assignments/hidden/a2_hidden_test.cpp"),
+                 "@HIDDEN@": os.path.join(root, "tests/assignments/hidden/a2_hidden_test.cpp"),
+                 "@KEY@": os.path.join(root, "tests/assignments/answers/key.py")}
+        attack = include("compiler_read.inc")
+        for placeholder, path in paths.items():
+            attack = attack.replace(placeholder, path)
+        run, _, graded = grade(root, build, submission(root, os.path.join(work, "compiler"), attack))
+        shown = json.dumps(graded) if graded else ""
+        found = re.findall(r"COMPILER PROBE (\w+): found", shown)
+        absent = re.findall(r"COMPILER PROBE (\w+): absent", shown)
+        report("compiler_read", graded is not None and not found and len(set(absent)) == 3 and secret not in shown
+               and "def params(" not in shown and score(graded) <= base,
+               f"graded {score(graded)}; probes that found their file: {sorted(set(found)) or 'none'}, "
+               f"absent: {sorted(set(absent)) or 'none (the attack did not run)'}")
+
+    if wanted("hostile_kit"):
+        # hostile_kit: a whole kit of its own; only its editable files (unchanged stubs) are taken
+        kit = os.path.join(work, "hostile-kit")
+        shutil.rmtree(kit, ignore_errors=True)
+        subprocess.run([os.path.join(root, "scripts/make-assignment"), "a2", "--out", kit],
+                       stdout=subprocess.DEVNULL, check=True)
+        with open(os.path.join(kit, "CMakeLists.txt"), "a") as f:
+            f.write('\nexecute_process(COMMAND sh -c "echo owned > /tmp/mcrt-attack-owned")\n')
+        with open(os.path.join(kit, "tests/assignments/a2/a2_test.cpp"), "w") as f:
+            f.write("int main() { return 0; }\n")
+        with open(os.path.join(kit, "tests/assignments/points.json"), "w") as f:
+            f.write('{"a2.A2.Task1UniformHemisphereFollowsItsPdf": 100}\n')
+        if os.path.exists("/tmp/mcrt-attack-owned"):
+            os.remove("/tmp/mcrt-attack-owned")
+        run, _, graded = grade(root, build, kit)
+        report("hostile_kit", score(graded) == 0 and not os.path.exists("/tmp/mcrt-attack-owned"),
+               f"graded {score(graded)} (the stub kit's 0); its execute_process "
+               f"{'ran' if os.path.exists('/tmp/mcrt-attack-owned') else 'did not run'}")
 
     def sphere_with(call, inc):
         """The solution's sphere sampler with `call` as its first statement."""
@@ -144,35 +171,36 @@ def main():
         sphere = re.sub(r"(inline Vec3 sample_uniform_sphere\(Vec2 u\) \{\n)", r"\1  " + call + "\n", sphere)
         return sphere.replace('#pragma once\n', '#pragma once\n' + (include(inc) if inc else ""), 1)
 
-    # early_exit and atexit_exit: a status of 0 from a program that did not finish its test, or
-    # whose test failed, scores nothing (gtest's report decides). Their sphere.hpp has the right
-    # pdf, which earns its own test: each is held to a sampler that always returns the pole, the
-    # same submission without the attack (a unit vector but the wrong distribution).
-    run, _, graded = grade(root, build, submission(
-        root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
-    pole = score(graded)
-    print(f"  the same with a sampler that returns the pole: {pole} points", flush=True)
-    run, _, graded = grade(root, build, submission(
-        root, os.path.join(work, "exit"), sphere=sphere_with("mcrt_attack::leave_early();", "early_exit.inc")))
-    report("early_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
-    run, _, graded = grade(root, build, submission(
-        root, os.path.join(work, "atexit"),
-        sphere=sphere_with("mcrt_attack::succeed_at_exit(); return {0.0, 0.0, 1.0};", "atexit_exit.inc")))
-    report("atexit_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
+    if any(wanted(n) for n in ("early_exit", "atexit_exit", "forged_report", "fake_frames")):
+        # early_exit and atexit_exit: a status of 0 from a program that did not finish its test, or
+        # whose test failed, scores nothing (gtest's report decides). Their sphere.hpp has the right
+        # pdf, which earns its own test: each is held to a sampler that always returns the pole, the
+        # same submission without the attack (a unit vector but the wrong distribution).
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
+        pole = score(graded)
+        print(f"  the same with a sampler that returns the pole: {pole} points", flush=True)
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "exit"), sphere=sphere_with("mcrt_attack::leave_early();", "early_exit.inc")))
+        report("early_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "atexit"),
+            sphere=sphere_with("mcrt_attack::succeed_at_exit(); return {0.0, 0.0, 1.0};", "atexit_exit.inc")))
+        report("atexit_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
 
-    # forged_report and fake_frames: the verdicts are the checker's, out of the student code's reach
-    run, _, graded = grade(root, build, submission(
-        root, os.path.join(work, "forged"), sphere=sphere_with("mcrt_attack::forge_report_and_leave();",
-                                                                 "forged_report.inc")))
-    report("forged_report", score(graded) is not None and score(graded) <= pole,
-           f"graded {score(graded)} against the pole sampler's {pole}")
-    run, _, graded = grade(root, build, submission(
-        root, os.path.join(work, "frames"), sphere=sphere_with("mcrt_attack::fake_frames_and_leave();",
-                                                                 "fake_frames.inc")))
-    named = graded is not None and "gave no valid answer to request a2_samples" in json.dumps(graded)
-    report("fake_frames", score(graded) is not None and score(graded) <= pole and named,
-           f"graded {score(graded)} against the pole sampler's {pole}; the feedback "
-           f"{'names' if named else 'does not name'} the unanswered request")
+        # forged_report and fake_frames: the verdicts are the checker's, out of the student code's reach
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "forged"), sphere=sphere_with("mcrt_attack::forge_report_and_leave();",
+                                                                     "forged_report.inc")))
+        report("forged_report", score(graded) is not None and score(graded) <= pole,
+               f"graded {score(graded)} against the pole sampler's {pole}")
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "frames"), sphere=sphere_with("mcrt_attack::fake_frames_and_leave();",
+                                                                     "fake_frames.inc")))
+        named = graded is not None and "gave no valid answer to request a2_samples" in json.dumps(graded)
+        report("fake_frames", score(graded) is not None and score(graded) <= pole and named,
+               f"graded {score(graded)} against the pole sampler's {pole}; the feedback "
+               f"{'names' if named else 'does not name'} the unanswered request")
 
     shutil.rmtree(RESULTS_DIR, ignore_errors=True)
     if failures:
