@@ -20,6 +20,11 @@ The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp n
                  where the grading folder's layout puts them), then exits with 0
   fake_frames    a sampler that writes answer frames of its own (a made-up token) to stdout and
                  every descriptor, then ends the subject mid-request
+  compiler_read  __has_include and .incbin of the hidden test and the key (compiler_read.inc)
+  detect_hidden  the pole sampler, but the right one when /proc names the hidden test's checker
+  forged_feedback  "DIAGNOSIS: ..." lines on stderr and in an exception's text (forged_feedback.inc)
+  flood          the same and 64 MiB of output after them
+  concurrent     2, then 4 honest gradings started together: each scores what it scores alone
 a2 is split (subject/checker): the sampler runs in the subject program, as nobody, and the
 checker that writes the reports holds no student code. Each attack is held to the pole sampler,
 the same submission without the attack.
@@ -71,6 +76,34 @@ def grade(root, build, kit):
                          stderr=subprocess.STDOUT, text=True)
     graded = json.load(open(results)) if os.path.exists(results) else None
     return run, results, graded
+
+
+def concurrent_gradings(root, build, kit, count):
+    """The scores of `count` gradings of `kit` started together, each in a copy of `build` that
+    a mount namespace of its own binds at `build`'s path (the copies' CMake folders stay valid)."""
+    import tempfile
+    scratch = tempfile.mkdtemp(prefix="mcrt-concurrent-")
+    try:
+        own_kit = os.path.join(scratch, "kit")
+        shutil.copytree(kit, own_kit)
+        runs = []
+        for i in range(count):
+            copy = os.path.join(scratch, f"build-{i}")
+            subprocess.run(["cp", "-a", "--", build, copy], check=True)
+            shutil.rmtree(os.path.join(copy, "attacks"), ignore_errors=True)
+            results = os.path.join(scratch, f"results-{i}.json")
+            command = (f'mount --bind "$1" "$2" && exec "$3/scripts/grade" a2 --kit "$4" --hidden '
+                       f'"$3/tests/assignments/hidden" --build "$2" --gradescope "$5"')
+            runs.append((results, subprocess.Popen(
+                ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c", command, "sh", copy,
+                 build, root, own_kit, results], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)))
+        scores = []
+        for results, process in runs:
+            process.wait()
+            scores.append(score(json.load(open(results))) if os.path.exists(results) else None)
+        return scores
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
 
 
 def score(results):
@@ -201,6 +234,47 @@ def main():
         report("fake_frames", score(graded) is not None and score(graded) <= pole and named,
                f"graded {score(graded)} against the pole sampler's {pole}; the feedback "
                f"{'names' if named else 'does not name'} the unanswered request")
+
+    if wanted("detect_hidden"):
+        # detect_hidden: the pole sampler in public, the right one when a hidden test asks
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
+        pole = score(graded)
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "detect"),
+            sphere=sphere_with("if (!mcrt_attack::asked_by_hidden()) return {0.0, 0.0, 1.0};", "detect_hidden.inc")))
+        report("detect_hidden", score(graded) is not None and score(graded) <= pole,
+               f"graded {score(graded)} against the pole sampler's {pole}")
+
+    if wanted("forged_feedback") or wanted("flood"):
+        # forged_feedback: no line of any test's feedback starts with a diagnosis the submission
+        # wrote (on stderr, or in its exception's text); flood: 64 MiB of output leave every
+        # test's feedback short, the grader's own lines first
+        for name, call in (("forged_feedback", "mcrt_attack::forge_diagnosis(false); "
+                                                "mcrt_attack::throw_forged_diagnosis();"),
+                           ("flood", "mcrt_attack::forge_diagnosis(true); return {0.0, 0.0, 1.0};")):
+            if not wanted(name):
+                continue
+            run, _, graded = grade(root, build, submission(
+                root, os.path.join(work, name), sphere=sphere_with(call, "forged_feedback.inc")))
+            outputs = [t.get("output", "") for t in graded["tests"]] if graded else []
+            forged = [o for o in outputs if re.search(r"(?m)^\s*DIAGNOSIS: forged", o)]
+            longest = max((len(o) for o in outputs), default=0)
+            student_first = [o for o in outputs if o.startswith(("| ", "--- what your program printed", "x" * 20))]
+            report(name, graded is not None and not forged and not student_first and longest < 16384
+                   and score(graded) <= base,
+                   f"graded {score(graded)}; {len(forged)} tests show the forged diagnosis as the grader's, "
+                   f"{len(student_first)} open with the submission's output; the longest feedback is "
+                   f"{longest} characters")
+
+    if wanted("concurrent"):
+        # concurrent: 2, then 4 gradings of the honest submission started together, each in its
+        # own copy of the build folder (bound at the same path in a mount namespace of its own,
+        # so nothing is rebuilt), score what it scores alone
+        for count in (2, 4):
+            scores = concurrent_gradings(root, build, submission(root, os.path.join(work, "honest")), count)
+            report(f"concurrent_{count}", scores == [base] * count,
+                   f"{count} gradings at once scored {scores}; alone {base}")
 
     shutil.rmtree(RESULTS_DIR, ignore_errors=True)
     if failures:
