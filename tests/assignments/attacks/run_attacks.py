@@ -51,9 +51,9 @@ def solution_file(root, rel):
         return f.read()
 
 
-def submission(root, folder, extra="", sphere=None):
+def submission(root, folder, extra="", sphere=None, cone=False):
     """An a2 submission: the solution's hemisphere.hpp (with `extra` appended) and plane.hpp;
-    sphere.hpp only when given."""
+    sphere.hpp only when given; the solution's cone.hpp when `cone`."""
     shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder)
     with open(os.path.join(folder, "hemisphere.hpp"), "w") as f:
@@ -63,6 +63,9 @@ def submission(root, folder, extra="", sphere=None):
     if sphere is not None:
         with open(os.path.join(folder, "sphere.hpp"), "w") as f:
             f.write(sphere)
+    if cone:
+        with open(os.path.join(folder, "cone.hpp"), "w") as f:
+            f.write(solution_file(root, "common/sampling/cone.hpp"))
     return folder
 
 
@@ -236,15 +239,18 @@ def main():
                f"{'names' if named else 'does not name'} the unanswered request")
 
     if wanted("detect_hidden"):
-        # detect_hidden: the pole sampler in public, the right one when a hidden test asks
+        # detect_hidden: a sampler whose directions have length 2 (the public unit-vector test
+        # and the hidden corners test fail), the right one when it finds a hidden test asking;
+        # with the cone submitted, the hidden test turns on the sphere alone
+        long_pole = "return {0.0, 0.0, 2.0};"
         run, _, graded = grade(root, build, submission(
-            root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
-        pole = score(graded)
+            root, os.path.join(work, "long"), sphere=sphere_with(long_pole, None), cone=True))
+        plain = score(graded)
         run, _, graded = grade(root, build, submission(
-            root, os.path.join(work, "detect"),
-            sphere=sphere_with("if (!mcrt_attack::asked_by_hidden()) return {0.0, 0.0, 1.0};", "detect_hidden.inc")))
-        report("detect_hidden", score(graded) is not None and score(graded) <= pole,
-               f"graded {score(graded)} against the pole sampler's {pole}")
+            root, os.path.join(work, "detect"), cone=True,
+            sphere=sphere_with(f"if (!mcrt_attack::asked_by_hidden()) {long_pole}", "detect_hidden.inc")))
+        report("detect_hidden", score(graded) is not None and plain is not None and score(graded) <= plain,
+               f"graded {score(graded)} against the same sampler's {plain} without the detection")
 
     if wanted("forged_feedback") or wanted("flood"):
         # forged_feedback: no line of any test's feedback starts with a diagnosis the submission
