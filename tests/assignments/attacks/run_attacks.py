@@ -22,8 +22,10 @@ The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp n
                  every descriptor, then ends the subject mid-request
   compiler_read  __has_include and .incbin of the hidden test and the key (compiler_read.inc)
   detect_hidden  the pole sampler, but the right one when /proc names the hidden test's checker
-  forged_feedback  "DIAGNOSIS: ..." lines on stderr and in an exception's text (forged_feedback.inc)
-  flood          the same and 64 MiB of output after them
+  forged_feedback  "DIAGNOSIS: ..." lines on stderr and in an exception's text, then 64 MiB of
+                 output (forged_feedback.inc)
+  leftovers      16 MiB files in /tmp and /dev/shm and a daemon holding the subject's output
+  dev_zero       `#include "/dev/zero"` (the build's memory limit, named in the feedback)
   concurrent     2, then 4 honest gradings started together: each scores what it scores alone
 a2 is split (subject/checker): the sampler runs in the subject program, as nobody, and the
 checker that writes the reports holds no student code. Each attack is held to the pole sampler,
@@ -109,6 +111,15 @@ def concurrent_gradings(root, build, kit, count):
         shutil.rmtree(scratch, ignore_errors=True)
 
 
+def grading_user_processes():
+    """The processes alive whose user is a grading's (scripts/grading_sandbox.py's range)."""
+    sys.dont_write_bytecode = True  # no __pycache__ left in the tree
+    sys.path.insert(0, os.path.join(os.path.dirname(HERE), "..", "..", "scripts"))
+    import grading_sandbox
+    first, count = grading_sandbox.k_first_uid, grading_sandbox.k_uid_count
+    return [pid for pid, uid in grading_sandbox._processes() if first <= uid < first + count]
+
+
 def score(results):
     return sum(t["score"] for t in results["tests"]) if results else None
 
@@ -134,7 +145,9 @@ def main():
         if not ok:
             failures.append(name)
 
+    started = time.monotonic()
     run, _, honest = grade(root, build, submission(root, os.path.join(work, "honest")))
+    honest_seconds = time.monotonic() - started
     base = score(honest)
     if honest is None:
         print(run.stdout)
@@ -252,26 +265,52 @@ def main():
         report("detect_hidden", score(graded) is not None and plain is not None and score(graded) <= plain,
                f"graded {score(graded)} against the same sampler's {plain} without the detection")
 
-    if wanted("forged_feedback") or wanted("flood"):
-        # forged_feedback: no line of any test's feedback starts with a diagnosis the submission
-        # wrote (on stderr, or in its exception's text); flood: 64 MiB of output leave every
-        # test's feedback short, the grader's own lines first
-        for name, call in (("forged_feedback", "mcrt_attack::forge_diagnosis(false); "
-                                                "mcrt_attack::throw_forged_diagnosis();"),
-                           ("flood", "mcrt_attack::forge_diagnosis(true); return {0.0, 0.0, 1.0};")):
-            if not wanted(name):
-                continue
-            run, _, graded = grade(root, build, submission(
-                root, os.path.join(work, name), sphere=sphere_with(call, "forged_feedback.inc")))
-            outputs = [t.get("output", "") for t in graded["tests"]] if graded else []
-            forged = [o for o in outputs if re.search(r"(?m)^\s*DIAGNOSIS: forged", o)]
-            longest = max((len(o) for o in outputs), default=0)
-            student_first = [o for o in outputs if o.startswith(("| ", "--- what your program printed", "x" * 20))]
-            report(name, graded is not None and not forged and not student_first and longest < 16384
-                   and score(graded) <= base,
-                   f"graded {score(graded)}; {len(forged)} tests show the forged diagnosis as the grader's, "
-                   f"{len(student_first)} open with the submission's output; the longest feedback is "
-                   f"{longest} characters")
+    if wanted("forged_feedback"):
+        # forged_feedback: "DIAGNOSIS:" lines on stderr and in the exception's text, then 64 MiB
+        # of output: no line of any test's feedback starts with the forged diagnosis, none opens
+        # with the submission's output, each stays short (the sampler throws, as the honest
+        # submission's stub does)
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "forged-feedback"),
+            sphere=sphere_with("mcrt_attack::forge_diagnosis(true); mcrt_attack::throw_forged_diagnosis();",
+                               "forged_feedback.inc")))
+        outputs = [t.get("output", "") for t in graded["tests"]] if graded else []
+        forged = [o for o in outputs if re.search(r"(?m)^\s*DIAGNOSIS: forged", o)]
+        longest = max((len(o) for o in outputs), default=0)
+        student_first = [o for o in outputs if o.startswith(("| ", "--- what your program printed", "x" * 20))]
+        report("forged_feedback", graded is not None and not forged and not student_first and longest < 16384
+               and score(graded) <= base,
+               f"graded {score(graded)}; {len(forged)} tests show the forged diagnosis as the grader's, "
+               f"{len(student_first)} open with the submission's output; the longest feedback is "
+               f"{longest} characters")
+
+    if wanted("leftovers"):
+        # leftovers: files in /tmp and /dev/shm and a daemon holding the subject's output: the
+        # files are gone after the grading, the daemon too, and the grading takes about the
+        # honest one's time (the daemon stretched every test to its 60 s limit before)
+        token = f"mcrt-attack-leftover-{os.getpid()}-{int(time.time())}"
+        started = time.monotonic()
+        run, _, graded = grade(root, build, submission(
+            root, os.path.join(work, "leftovers"), include("leftovers.inc").replace("@TOKEN@", token)))
+        took = time.monotonic() - started
+        left = [os.path.join(d, n) for d in ("/tmp", "/dev/shm") for n in os.listdir(d) if n.startswith(token)]
+        daemons = grading_user_processes()
+        for path in left:
+            os.remove(path)
+        report("leftovers", graded is not None and not left and not daemons and score(graded) <= base
+               and took < 3 * honest_seconds + 30,
+               f"graded {score(graded)} in {took:.0f} s (the honest one in {honest_seconds:.0f} s); "
+               f"{len(left)} files left in /tmp and /dev/shm, {len(daemons)} processes of a grading's user alive")
+
+    if wanted("dev_zero"):
+        # dev_zero: `#include "/dev/zero"` stops at the build's memory limit, named in the feedback
+        started = time.monotonic()
+        run, _, graded = grade(root, build, submission(root, os.path.join(work, "zero"), '#include "/dev/zero"\n'))
+        took = time.monotonic() - started
+        named = graded is not None and "memory limit" in graded.get("output", "")
+        report("dev_zero", graded is not None and score(graded) == 0 and named,
+               f"graded {score(graded)} in {took:.0f} s; the feedback {'names' if named else 'does not name'} "
+               f"the memory limit")
 
     if wanted("concurrent"):
         # concurrent: 2, then 4 gradings of the honest submission started together, each in its
