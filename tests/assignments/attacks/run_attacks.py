@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The attack suite of the a2 grader (scripts/test --kits): each attack is a submission that
 tries to gain points it did not earn, graded by scripts/grade as Gradescope would (as root, so
-the tests run as `nobody` through scripts/sandbox-run). Each closed attack must score no more
+the tests run as the grading's own user through scripts/sandbox-run). Each closed attack must score no more
 than the honest submission it is built on and must not reach its goal; the open one is run and
 reported as open.
 
@@ -27,7 +27,7 @@ The honest submission: the solution's hemisphere.hpp and plane.hpp, sphere.hpp n
   leftovers      16 MiB files in /tmp and /dev/shm and a daemon holding the subject's output
   dev_zero       `#include "/dev/zero"` (the build's memory limit, named in the feedback)
   concurrent     2, then 4 honest gradings started together: each scores what it scores alone
-a2 is split (subject/checker): the sampler runs in the subject program, as nobody, and the
+a2 is split (subject/checker): the sampler runs in the subject program, as the grading's user, and the
 checker that writes the reports holds no student code. Each attack is held to the pole sampler,
 the same submission without the attack.
 Exit status: 0 every attack gained nothing, 1 otherwise, 2 not run as root.
@@ -134,7 +134,7 @@ def main():
     def wanted(name):
         return not only or name in only
     if os.geteuid() != 0:
-        print("run_attacks: the sandbox needs root (the tests run as nobody); not run", file=sys.stderr)
+        print("run_attacks: the sandbox needs root (the tests run as a user of the grading's own); not run", file=sys.stderr)
         sys.exit(2)
     work = os.path.join(build, "attacks")
     os.makedirs(work, exist_ok=True)
