@@ -102,6 +102,32 @@ class GradeTree(unittest.TestCase):
         with open(os.path.join(ROOT, "tests/assignments/editable.json")) as f:
             self.assertIn("common/sampling/plane.hpp", json.load(f)["a2"])
 
+    def test_build_refuses_a_folder_it_did_not_make(self):
+        # a user's folder holding their own code in src/: refused before anything is written
+        build = os.path.join(self.out, "users-folder")
+        write(os.path.join(build, "src/my_code.cpp"), "// the user's own code\n")
+        status, output = tree_copy.run_script(os.path.join(self.tree, "scripts/grade"),
+                                              ["a2", "--build", build, "--prepare-only"], self.tree)
+        self.assertEqual(status, 2, output)
+        self.assertIn("not a folder scripts/grade made", output)
+        self.assertEqual(read(os.path.join(build, "src/my_code.cpp")), "// the user's own code\n")
+        self.assertEqual(sorted(os.listdir(build)), ["src"])
+
+    def test_build_folder_moved_starts_its_builds_anew(self):
+        # a folder grade made, moved elsewhere: its CMake folders name the old place, so they
+        # are removed (grade's own, as its marker proves) and the grading goes on
+        made = os.path.join(self.out, "made-here")
+        self.grade("--build", made)
+        write(os.path.join(made, "build/CMakeCache.txt"), f"# made in {made}\n")
+        moved = os.path.join(self.out, "moved-there")
+        os.rename(made, moved)
+        status, output = tree_copy.run_script(os.path.join(self.tree, "scripts/grade"),
+                                              ["a2", "--build", moved, "--prepare-only"], self.tree)
+        self.assertEqual(status, 0, output)
+        self.assertIn("copied or moved", output)
+        self.assertFalse(os.path.exists(os.path.join(moved, "build")))
+        self.assertTrue(os.path.isfile(os.path.join(moved, "src/CMakeLists.txt")))
+
     def test_editable_json_is_what_the_markers_define(self):
         status, output = tree_copy.run_script(os.path.join(self.tree, "scripts/make-assignment"),
                                               ["--editable"], self.tree)
