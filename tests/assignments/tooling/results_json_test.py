@@ -102,7 +102,7 @@ class ResultsJson(unittest.TestCase):
         cls.kit = os.path.join(cls.tmp, "kit")
         write(cls.kit, FAKE)
         os.makedirs(os.path.join(cls.kit, "scripts"))
-        for name in ("grade", "written_answers.py"):
+        for name in ("grade", "written_answers.py", "grading_sandbox.py", "sandbox-run"):
             shutil.copy2(os.path.join(ROOT, "scripts", name), os.path.join(cls.kit, "scripts", name))
         write(os.path.join(cls.tmp, "hidden"), HIDDEN)
         with open(os.path.join(ROOT, "tests/assignments/results.schema.json")) as f:
