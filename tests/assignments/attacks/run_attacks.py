@@ -220,15 +220,24 @@ def main():
         sphere = re.sub(r"(inline Vec3 sample_uniform_sphere\(Vec2 u\) \{\n)", r"\1  " + call + "\n", sphere)
         return sphere.replace('#pragma once\n', '#pragma once\n' + (include(inc) if inc else ""), 1)
 
+    pole_scores = []
+
+    def pole_score():
+        """The score of the solution's sphere.hpp with a sampler that always returns the pole: its
+        pdf is right, which earns its own test, and its sampler is a unit vector of the wrong
+        distribution. Attacks that submit a sphere.hpp are held to it (graded once, when first asked)."""
+        if not pole_scores:
+            _, _, graded = grade(root, build, submission(
+                root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
+            pole_scores.append(score(graded))
+            print(f"  the same with a sampler that returns the pole: {pole_scores[0]} points", flush=True)
+        return pole_scores[0]
+
     if any(wanted(n) for n in ("early_exit", "atexit_exit", "forged_report", "fake_frames")):
         # early_exit and atexit_exit: a status of 0 from a program that did not finish its test, or
-        # whose test failed, scores nothing (gtest's report decides). Their sphere.hpp has the right
-        # pdf, which earns its own test: each is held to a sampler that always returns the pole, the
-        # same submission without the attack (a unit vector but the wrong distribution).
-        run, _, graded = grade(root, build, submission(
-            root, os.path.join(work, "pole"), sphere=sphere_with("return {0.0, 0.0, 1.0};", None)))
-        pole = score(graded)
-        print(f"  the same with a sampler that returns the pole: {pole} points", flush=True)
+        # whose test failed, scores nothing (gtest's report decides). Each is held to the pole
+        # sampler, the same submission without the attack.
+        pole = pole_score()
         run, _, graded = grade(root, build, submission(
             root, os.path.join(work, "exit"), sphere=sphere_with("mcrt_attack::leave_early();", "early_exit.inc")))
         report("early_exit", score(graded) <= pole, f"graded {score(graded)} against the pole sampler's {pole}")
@@ -268,8 +277,8 @@ def main():
     if wanted("forged_feedback"):
         # forged_feedback: "DIAGNOSIS:" lines on stderr and in the exception's text, then 64 MiB
         # of output: no line of any test's feedback starts with the forged diagnosis, none opens
-        # with the submission's output, each stays short (the sampler throws, as the honest
-        # submission's stub does)
+        # with the submission's output, each stays short; the score is held to the pole sampler's
+        # (the same sphere.hpp, whose pdf earns its own test, without the attack)
         run, _, graded = grade(root, build, submission(
             root, os.path.join(work, "forged-feedback"),
             sphere=sphere_with("mcrt_attack::forge_diagnosis(true); mcrt_attack::throw_forged_diagnosis();",
@@ -279,8 +288,8 @@ def main():
         longest = max((len(o) for o in outputs), default=0)
         student_first = [o for o in outputs if o.startswith(("| ", "--- what your program printed", "x" * 20))]
         report("forged_feedback", graded is not None and not forged and not student_first and longest < 16384
-               and score(graded) <= base,
-               f"graded {score(graded)}; {len(forged)} tests show the forged diagnosis as the grader's, "
+               and score(graded) <= pole_score(),
+               f"graded {score(graded)} against the pole sampler's {pole_score()}; {len(forged)} tests show the forged diagnosis as the grader's, "
                f"{len(student_first)} open with the submission's output; the longest feedback is "
                f"{longest} characters")
 
