@@ -1,6 +1,6 @@
 #pragma once
 /// Atomic file writes: every file appears whole or not at all. (A chapter's output folder as
-/// a whole: io/run_folder.hpp.)
+/// a whole: app/run_folder.hpp.)
 
 #include <filesystem>
 #include <stdexcept>

@@ -27,7 +27,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "io/interrupt.hpp"
+#include "io/child_process.hpp"
 #include "io/output.hpp"
 
 extern char** environ;
@@ -178,7 +178,7 @@ struct GnuplotRun {
 // Runs `gnuplot -d arguments...` in `dir` (no shell: the folder's name never reaches a command
 // line or a script), without init files (-d: no gnuplotrc, no ~/.gnuplot), in a process group
 // of its own, for at most gnuplot_time_limit_ms(): then the group is killed. Returns its exit
-// status and what it wrote on stderr. An interruption meanwhile stops it (io/interrupt.hpp).
+// status and what it wrote on stderr. An interruption meanwhile stops it (io/child_process.hpp).
 GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& arguments) {
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
@@ -197,7 +197,7 @@ GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& argu
   ::posix_spawnattr_setpgroup(&attributes, 0);       // its own group: a timeout kills it all
   sigset_t defaults;
   sigemptyset(&defaults);
-  sigaddset(&defaults, SIGXFSZ);  // ignored by the run (io/interrupt.cpp), not by gnuplot
+  sigaddset(&defaults, SIGXFSZ);  // ignored by the run (app/interrupt.cpp), not by gnuplot
   ::posix_spawnattr_setsigdefault(&attributes, &defaults);
   ::posix_spawnattr_setflags(&attributes,
                              POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);

@@ -44,7 +44,7 @@ enum class PlotResult { drawn, no_gnuplot };
 /// (a warning is passed on as one line), and both files are complete (image_file_problem);
 /// otherwise they are removed and IoError names the file or the script and the reason. A
 /// missing gnuplot is reported once on stderr.
-/// A chapter writes into its staging folder (io/run_folder.hpp), so a failed plot never
+/// A chapter writes into its staging folder (app/run_folder.hpp), so a failed plot never
 /// reaches --out.
 PlotResult write_plot(const std::filesystem::path& dir, const Plot& plot);
 

@@ -1,4 +1,4 @@
-#include "io/numbers.hpp"
+#include "app/numbers.hpp"
 
 #include <charconv>
 #include <cmath>

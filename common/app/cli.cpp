@@ -1,4 +1,4 @@
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -14,11 +14,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/interrupt.hpp"
+#include "app/numbers.hpp"
+#include "app/run_folder.hpp"
 #include "core/parallel.hpp"
-#include "io/interrupt.hpp"
-#include "io/numbers.hpp"
 #include "io/output.hpp"
-#include "io/run_folder.hpp"
 
 namespace mcrt {
 

@@ -1,4 +1,4 @@
-#include "io/run_folder.hpp"
+#include "app/run_folder.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -17,10 +17,10 @@
 
 #include <fmt/format.h>
 
+#include "app/interrupt.hpp"
+#include "app/usage_error.hpp"
 #include "io/exclusive_file.hpp"
-#include "io/interrupt.hpp"
 #include "io/output.hpp"
-#include "io/usage_error.hpp"
 
 namespace mcrt {
 

@@ -1,7 +1,7 @@
-// Memory is work too (common/io/memory_limit.hpp): a run over what the machine can give is
+// Memory is work too (common/app/memory_limit.hpp): a run over what the machine can give is
 // refused with its estimate, and a failed allocation says what ran out.
 
-#include "io/memory_limit.hpp"
+#include "app/memory_limit.hpp"
 
 #include <cmath>
 #include <new>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 namespace {
 

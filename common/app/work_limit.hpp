@@ -1,7 +1,7 @@
 #pragma once
 /// Refusing a run too large to finish, before any work is done: a chapter predicts from its
 /// flags how much work the run would do (points drawn, coordinates, rays traced) and compares
-/// that with a limit. io/ray_limit.hpp is the same for rays, with a time estimate.
+/// that with a limit. app/ray_limit.hpp is the same for rays, with a time estimate.
 
 #include <string_view>
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 namespace mcrt {
 

@@ -78,7 +78,7 @@ void check_reference_folder(const std::filesystem::path& dir, const std::filesys
 /// JSON. Throws IoError if it cannot write; a failure never removes a cached entry.
 Reference load_or_render_reference(const std::filesystem::path& dir, const ReferenceSpec& spec);
 
-/// Rays a reference render would trace at most, for io/ray_limit (the estimate the chapter
+/// Rays a reference render would trace at most, for app/ray_limit (the estimate the chapter
 /// refuses too much work by): pixels x spp x rays_per_sample.
 double reference_predicted_rays(const ReferenceSpec& spec, double rays_per_sample);
 

@@ -1,4 +1,4 @@
-#include "io/reference_cache.hpp"
+#include "app/reference_cache.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -21,12 +21,12 @@
 
 #include <fmt/format.h>
 
+#include "app/usage_error.hpp"
 #include "core/progress.hpp"
 #include "geometry/camera.hpp"
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
-#include "io/usage_error.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 #include "render/scene.hpp"
 
 namespace CLI {
@@ -38,7 +38,7 @@ struct Chapter {
 struct CommonOptions {
   std::filesystem::path out;   ///< output folder, default out/<chapter>; messages name it
   /// Where the run writes its files: a staging folder beside `out`, set by ChapterApp::run and
-  /// swapped in as `out` when the run succeeds (io/run_folder.hpp).
+  /// swapped in as `out` when the run succeeds (app/run_folder.hpp).
   std::filesystem::path dir;
   std::uint64_t seed = 1;      ///< the same seed gives byte-identical outputs
   int threads = 1;             ///< default: all cores
@@ -62,7 +62,7 @@ void add_scene_options(CLI::App& app, SceneOptions& options,
                        const std::vector<std::string>& names = diffuse_scene_names());
 void add_image_options(CLI::App& app, ImageOptions& options);
 
-/// A numeric flag read as written (io/numbers.hpp): a whole number in decimal digits from
+/// A numeric flag read as written (app/numbers.hpp): a whole number in decimal digits from
 /// `lowest` (>= 0) to `highest`, or for a double a finite decimal number from `lowest` to
 /// `highest`. Anything else is a usage error, one line naming the flag and the range. --help
 /// shows the type (INT, UINT, FLOAT) and the default; flags_json records the value as given.
@@ -142,9 +142,9 @@ class ChapterApp {
 
   /// run_chapter on this app, with exit code 0 when `body` returns. Before any thread
   /// starts, SIGINT, SIGTERM and the other handled signals are set to end the run cleanly, and
-  /// SIGPIPE to fail a write rather than end the run (io/interrupt.hpp). An empty value
+  /// SIGPIPE to fail a write rather than end the run (app/interrupt.hpp). An empty value
   /// (`--out=`) or one that is not UTF-8 is refused before parsing. After the
-  /// flags are parsed, --out is checked and a staging folder made (io/run_folder.hpp):
+  /// flags are parsed, --out is checked and a staging folder made (app/run_folder.hpp):
   /// `body` writes into common.dir, and only when it returns is that folder swapped in as
   /// --out. Messages about files name them under --out, never under the staging folder.
   /// With --print-flags, `body` is not run: the flags summary.json would record (flags_json)

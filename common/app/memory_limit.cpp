@@ -1,4 +1,4 @@
-#include "io/memory_limit.hpp"
+#include "app/memory_limit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include <sys/resource.h>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 
 namespace mcrt {
 

@@ -1,10 +1,10 @@
-#include "io/ray_limit.hpp"
+#include "app/ray_limit.hpp"
 
 #include <string>
 
 #include <fmt/format.h>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 
 namespace mcrt {
 
