@@ -1,15 +1,20 @@
 // Memory is work too (common/app/memory_limit.hpp): a run over what the machine can give is
-// refused with its estimate, and a failed allocation says what ran out.
+// refused with its estimate, a container's limit (cgroup v2 or v1) counts, and a failed
+// allocation says what ran out.
 
 #include "app/memory_limit.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <new>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "app/cli.hpp"
+#include "support/temp_files.hpp"
 
 namespace {
 
@@ -54,6 +59,45 @@ TEST(MemoryLimitTest, ImagesAreCountedAtTheirSizeInMemory) {
   const mcrt::MemoryUse use = mcrt::images_in_memory(1000.0, 3.0, 2, "3 images");
   // 64 MB base + 2 stacks of 8 MiB + 3 x 1000 pixels x 24 bytes.
   EXPECT_DOUBLE_EQ(use.bytes, 64e6 + 2 * 8.0 * 1024 * 1024 + 72000.0);
+}
+
+}  // namespace
+
+namespace {
+
+// A planted cgroup tree: `files` maps a path under the root to its contents.
+std::filesystem::path cgroup_tree(const std::string& name,
+                                  const std::vector<std::pair<std::string, std::string>>& files) {
+  const std::filesystem::path root = mcrt::testing::fresh_temp_dir("memory_limit_test", name);
+  for (const auto& [path, text] : files) {
+    std::filesystem::create_directories((root / path).parent_path());
+    mcrt::testing::write_text(root / path, text);
+  }
+  return root;
+}
+
+TEST(CgroupLimitTest, VersionTwoLeavesMaxLessCurrent) {
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("v2", {{"memory.max", "1000000\n"},
+                                                    {"memory.current", "250000\n"}})),
+            750000.0);
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("v2_unlimited", {{"memory.max", "max\n"},
+                                                              {"memory.current", "250000\n"}})),
+            HUGE_VAL);
+}
+
+// The OOM killer of a cgroup v1 container ended runs the check had let through (exit 137).
+TEST(CgroupLimitTest, VersionOneIsReadToo) {
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("v1", {{"memory/memory.limit_in_bytes", "2000000\n"},
+                                                    {"memory/memory.usage_in_bytes", "500000\n"}})),
+            1500000.0);
+}
+
+TEST(CgroupLimitTest, NoLimitOrAnUnreadableOneIsInfinity) {
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("none", {})), HUGE_VAL);
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("half", {{"memory.max", "1000000\n"}})), HUGE_VAL);
+  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("used_up", {{"memory.max", "1000\n"},
+                                                         {"memory.current", "5000\n"}})),
+            0.0);
 }
 
 }  // namespace
