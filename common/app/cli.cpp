@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "app/run_folder.hpp"
 #include "core/parallel.hpp"
 #include "io/output.hpp"
+#include "io/plot.hpp"
 
 namespace mcrt {
 
@@ -302,6 +304,13 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
     if (print_flags_) {
       std::cout << flags_json(*app_).dump() << '\n';
       return 0;
+    }
+    try {  // read strictly, before any work: a typo is refused, never ignored
+      if (const char* seconds = std::getenv("MCRT_GNUPLOT_TIMEOUT"))
+        set_gnuplot_time_limit(static_cast<int>(parse_whole_number(
+            seconds, "MCRT_GNUPLOT_TIMEOUT", 1, 3600, "a whole number of seconds")));
+    } catch (const CLI::ValidationError& e) {
+      throw UsageError(e.what());
     }
     std::optional<RunFolder> folder;
     const auto forget = [&] {  // unregistered and removed with no interruption in between

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
+#include <atomic>
 #include <chrono>
 #include <optional>
 #include <vector>
@@ -150,24 +150,16 @@ std::vector<std::string> gnuplot_environment() {
 }
 
 // How long one gnuplot may run: a plot of a few thousand points draws in well under a second,
-// and 30 s leaves room for a machine shared by many. MCRT_GNUPLOT_TIMEOUT (seconds, 1 to 3600)
-// sets another limit (the robustness suite plays a hanging gnuplot with 1).
-int gnuplot_time_limit_ms() {
-  static const int limit = [] {
-    const char* text = std::getenv("MCRT_GNUPLOT_TIMEOUT");
-    int seconds = 30;
-    if (text != nullptr) {
-      const std::string_view value = text;
-      int parsed = 0;
-      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
-      if (error == std::errc() && end == value.data() + value.size() && parsed >= 1 &&
-          parsed <= 3600)
-        seconds = parsed;
-    }
-    return seconds * 1000;
-  }();
-  return limit;
-}
+// and 30 s leaves room for a machine shared by many (set_gnuplot_time_limit sets another).
+std::atomic<int> g_gnuplot_seconds{30};
+
+int gnuplot_time_limit_ms() { return g_gnuplot_seconds * 1000; }
+
+}  // namespace
+
+void set_gnuplot_time_limit(int seconds) { g_gnuplot_seconds = seconds; }
+
+namespace {
 
 struct GnuplotRun {
   int status = 0;

@@ -55,4 +55,8 @@ std::string image_file_problem(const std::filesystem::path& file);
 /// Whether gnuplot is on the PATH.
 bool gnuplot_available();
 
+/// How long one gnuplot may run before its process group is killed (default 30 s; a chapter
+/// takes MCRT_GNUPLOT_TIMEOUT, 1 to 3600 seconds, read strictly by app/cli).
+void set_gnuplot_time_limit(int seconds);
+
 }  // namespace mcrt
