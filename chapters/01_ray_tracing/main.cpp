@@ -12,13 +12,13 @@
 #include <fmt/format.h>
 
 #include "falloff.hpp"
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/image_file.hpp"
-#include "io/memory_limit.hpp"
+#include "app/memory_limit.hpp"
 #include "io/output.hpp"
-#include "io/ray_limit.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
+#include "app/ray_limit.hpp"
+#include "app/render_summary.hpp"
+#include "app/summary.hpp"
 #include "render/render.hpp"
 #include "render/render_totals.hpp"
 #include "render/scene.hpp"

@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include "integration/disk_counter.hpp"
-#include "io/cli.hpp"
-#include "io/summary.hpp"
+#include "app/cli.hpp"
+#include "app/summary.hpp"
 
 namespace mcrt {
 

@@ -11,7 +11,7 @@
 
 #include "integration/integrands.hpp"
 #include "integration/log_grid.hpp"
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 namespace mcrt {
 

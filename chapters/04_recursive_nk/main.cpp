@@ -25,12 +25,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "io/cli.hpp"
-#include "io/memory_limit.hpp"
+#include "app/cli.hpp"
+#include "app/memory_limit.hpp"
 #include "io/output.hpp"
-#include "io/ray_limit.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
+#include "app/ray_limit.hpp"
+#include "app/render_summary.hpp"
+#include "app/summary.hpp"
 #include "io/table.hpp"
 #include "render/recursive_estimator.hpp"
 #include "render/recursive_render.hpp"

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
-#include "io/ray_limit.hpp"
+#include "app/cli.hpp"
+#include "app/ray_limit.hpp"
 #include "render/recursive_estimator.hpp"
 
 namespace mcrt {

@@ -36,14 +36,14 @@
 #include <fmt/format.h>
 
 #include "integration/statistics.hpp"
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/labelled_grid.hpp"
 #include "io/output.hpp"
 #include "io/plot.hpp"
-#include "io/reference_cache.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
+#include "app/reference_cache.hpp"
+#include "app/render_summary.hpp"
+#include "app/summary.hpp"
 #include "io/table.hpp"
 #include "render/path_tracer.hpp"
 #include "engine/path_tracer_lanes.hpp"

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "io/cli.hpp"
-#include "io/memory_limit.hpp"
-#include "io/ray_limit.hpp"
-#include "io/reference_cache.hpp"
+#include "app/cli.hpp"
+#include "app/memory_limit.hpp"
+#include "app/ray_limit.hpp"
+#include "app/reference_cache.hpp"
 #include "render/russian_roulette.hpp"
 
 namespace mcrt {
@@ -36,7 +36,7 @@ inline ReferenceSpec reference_spec(const auto& o) {
   return spec;
 }
 
-// The reference cache: --reference-dir, else the user's cache folder (io/reference_cache.hpp).
+// The reference cache: --reference-dir, else the user's cache folder (app/reference_cache.hpp).
 inline std::filesystem::path reference_dir(const auto& o) {
   return reference_folder(o.reference_dir);
 }

@@ -10,11 +10,11 @@
 #include <fmt/format.h>
 
 #include "integration/statistics.hpp"
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/plot.hpp"
-#include "io/reference_cache.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
+#include "app/reference_cache.hpp"
+#include "app/render_summary.hpp"
+#include "app/summary.hpp"
 #include "io/table.hpp"
 #include "render/image.hpp"
 #include "render/render_totals.hpp"

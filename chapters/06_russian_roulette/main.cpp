@@ -26,7 +26,7 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
 #include "io/table.hpp"

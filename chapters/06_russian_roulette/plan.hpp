@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "io/cli.hpp"
-#include "io/memory_limit.hpp"
-#include "io/ray_limit.hpp"
+#include "app/cli.hpp"
+#include "app/memory_limit.hpp"
+#include "app/ray_limit.hpp"
 #include "render/russian_roulette.hpp"
 
 namespace mcrt {

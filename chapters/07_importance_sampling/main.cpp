@@ -23,10 +23,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/cli.hpp"
-#include "io/memory_limit.hpp"
+#include "app/cli.hpp"
+#include "app/memory_limit.hpp"
 #include "io/output.hpp"
-#include "io/ray_limit.hpp"
+#include "app/ray_limit.hpp"
 #include "io/table.hpp"
 #include "render/importance_path_tracer.hpp"
 #include "render/render.hpp"

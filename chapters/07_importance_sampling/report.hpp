@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
-#include "io/render_summary.hpp"
-#include "io/summary.hpp"
+#include "app/cli.hpp"
+#include "app/render_summary.hpp"
+#include "app/summary.hpp"
 #include "io/table.hpp"
 #include "render/render_totals.hpp"
 

@@ -22,10 +22,10 @@
 
 #include <fmt/format.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/image_file.hpp"
-#include "io/memory_limit.hpp"
-#include "io/reference_cache.hpp"
+#include "app/memory_limit.hpp"
+#include "app/reference_cache.hpp"
 #include "io/table.hpp"
 #include "render/mis.hpp"
 #include "render/next_event_estimation.hpp"

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <string>
 
-#include "io/ray_limit.hpp"
-#include "io/reference_cache.hpp"
+#include "app/ray_limit.hpp"
+#include "app/reference_cache.hpp"
 #include "render/russian_roulette.hpp"
 
 #include "plates.hpp"

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "geometry/camera.hpp"
-#include "io/reference_cache.hpp"
+#include "app/reference_cache.hpp"
 #include "io/table.hpp"
 #include "render/image.hpp"
 #include "render/relative_error.hpp"

@@ -2,39 +2,22 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <cstring>
+#include <random>
 #include <utility>
-
-#include <ctime>
 
 #include <fcntl.h>
 #include <sys/file.h>
-#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <fmt/format.h>
 
 namespace mcrt {
 
 std::string random_suffix() {
-  std::uint64_t bits = 0;
-  std::size_t got = 0;
-  auto* bytes = reinterpret_cast<unsigned char*>(&bits);
-  while (got < sizeof bits) {
-    const ssize_t n = ::getrandom(bytes + got, sizeof bits - got, 0);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // no random source: the address of a local and the time still vary
-    got += static_cast<std::size_t>(n);
-  }
-  if (got < sizeof bits) {
-    timespec now{};
-    ::clock_gettime(CLOCK_REALTIME, &now);
-    bits ^= reinterpret_cast<std::uintptr_t>(&now) ^ static_cast<std::uint64_t>(now.tv_nsec) ^
-            (static_cast<std::uint64_t>(::getpid()) << 32);
-  }
-  static constexpr char k_hex[] = "0123456789abcdef";
-  std::string suffix(16, '0');
-  for (int i = 0; i < 16; ++i) suffix[i] = k_hex[(bits >> (4 * i)) & 0xf];
-  return suffix;
+  std::random_device source;  // getrandom(2) in libstdc++
+  const std::uint64_t bits = (std::uint64_t{source()} << 32) | source();
+  return fmt::format("{:016x}", bits);
 }
 
 NewFile create_temporary(int dir_fd, std::string_view stem) {

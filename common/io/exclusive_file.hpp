@@ -1,7 +1,6 @@
 #pragma once
-/// Files created, never reused: every temporary file the project writes (then renames) is new,
-/// made with O_CREAT|O_EXCL|O_NOFOLLOW under a name nobody can predict, so a link or file
-/// planted under that name by someone else is never written through (issue 34).
+/// Files created, never reused: every temporary is made O_CREAT|O_EXCL|O_NOFOLLOW under a name
+/// nobody can predict, so a link or file planted under that name is never written through.
 
 #include <string>
 #include <string_view>
@@ -9,8 +8,7 @@
 
 namespace mcrt {
 
-/// Sixteen hexadecimal digits from the system's random source (getrandom): 64 bits nobody can
-/// guess, for the names of temporary files.
+/// Sixteen hexadecimal digits from the system's random source: 64 bits nobody can guess.
 std::string random_suffix();
 
 /// The mode of every temporary file: readable by others, writable by its owner only.
@@ -23,18 +21,14 @@ struct NewFile {
   std::error_code error;
 };
 
-/// Creates `.<stem>.tmp-<random_suffix()>` in the folder open as `dir_fd` (O_CREAT|O_EXCL|
-/// O_NOFOLLOW|O_CLOEXEC, mode 0644) and locks it (flock, exclusive): a lock nobody holds marks
-/// the file of a writer that died (the reference cache's clean-up). Tries another name if the
-/// one drawn exists.
+/// Creates `.<stem>.tmp-<random_suffix()>` in the folder open as `dir_fd` and locks it (flock):
+/// a lock nobody holds marks the file of a writer that died (the reference cache's clean-up).
 NewFile create_temporary(int dir_fd, std::string_view stem);
 
-/// Writes all of `bytes` to `fd` (write() may write less than asked). The system's reason on
-/// failure; a write of nothing is reported as a full disk.
+/// Writes all of `bytes` to `fd`; the system's reason on failure (a write of nothing: a full disk).
 std::error_code write_all(int fd, std::string_view bytes);
 
-/// Its reading counterpart: reads into `bytes` until it is full or the file ends (read() may
-/// return less than asked, or be interrupted); returns how many bytes it got.
+/// Reads into `bytes` until it is full or the file ends; returns how many bytes it got.
 std::size_t read_all(int fd, std::string& bytes);
 
 }  // namespace mcrt

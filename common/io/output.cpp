@@ -45,24 +45,12 @@ void commit_file(const fs::path& from, const fs::path& to) {
   throw IoError("cannot write '" + to.string() + "': " + renamed.message());
 }
 
-namespace {
-
-// Writes all of `bytes` to a new file at `path` (never one planted under this name) and
-// closes it; the system's reason otherwise.
-std::error_code write_new_file(const fs::path& path, std::string_view bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-                        k_temporary_mode);
-  if (fd < 0) return {errno, std::generic_category()};
-  std::error_code failure = write_all(fd, bytes);
-  if (::close(fd) != 0 && !failure) failure = {errno, std::generic_category()};
-  return failure;
-}
-
-}  // namespace
-
 void write_file_atomic(const fs::path& path, std::string_view bytes) {
-  const fs::path temporary = temporary_path_for(path);
-  const std::error_code failure = write_new_file(temporary, bytes);
+  const fs::path temporary = temporary_path_for(path);  // new: never one planted under this name
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                        k_temporary_mode);
+  std::error_code failure = fd < 0 ? std::error_code(errno, std::generic_category()) : write_all(fd, bytes);
+  if (fd >= 0 && ::close(fd) != 0 && !failure) failure = {errno, std::generic_category()};
   if (failure) {
     std::error_code ignored;
     fs::remove(temporary, ignored);

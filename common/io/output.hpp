@@ -1,6 +1,6 @@
 #pragma once
 /// Atomic file writes: every file appears whole or not at all. (A chapter's output folder as
-/// a whole: io/run_folder.hpp.)
+/// a whole: app/run_folder.hpp.)
 
 #include <filesystem>
 #include <stdexcept>
@@ -20,10 +20,9 @@ class IoError : public std::runtime_error {
 /// naming the folder otherwise.
 void prepare_output_dir(const std::filesystem::path& dir);
 
-/// Writes `bytes` to a new temporary file beside `path` (created with O_EXCL | O_NOFOLLOW under
-/// an unpredictable name, so a planted file or link is never written through), then renames it over `path`: readers see
-/// the old file or the new one, never half of one. Throws IoError on failure (a short write, a
-/// full disk, a failed close or rename), naming the file and the system's reason, leaving nothing.
+/// Writes `bytes` to a new temporary beside `path` (O_EXCL | O_NOFOLLOW, an unpredictable name),
+/// then renames it over `path`: readers see the old file or the new one. Throws IoError naming
+/// the file and the reason (a short write, a full disk, a failed close or rename), leaving nothing.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 /// A temporary name beside `path` (same folder, so rename() is atomic) that no one can guess:

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
+#include <atomic>
 #include <chrono>
 #include <optional>
 #include <vector>
@@ -27,7 +27,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "io/interrupt.hpp"
+#include "io/child_process.hpp"
 #include "io/output.hpp"
 
 extern char** environ;
@@ -150,24 +150,16 @@ std::vector<std::string> gnuplot_environment() {
 }
 
 // How long one gnuplot may run: a plot of a few thousand points draws in well under a second,
-// and 30 s leaves room for a machine shared by many. MCRT_GNUPLOT_TIMEOUT (seconds, 1 to 3600)
-// sets another limit (the robustness suite plays a hanging gnuplot with 1).
-int gnuplot_time_limit_ms() {
-  static const int limit = [] {
-    const char* text = std::getenv("MCRT_GNUPLOT_TIMEOUT");
-    int seconds = 30;
-    if (text != nullptr) {
-      const std::string_view value = text;
-      int parsed = 0;
-      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
-      if (error == std::errc() && end == value.data() + value.size() && parsed >= 1 &&
-          parsed <= 3600)
-        seconds = parsed;
-    }
-    return seconds * 1000;
-  }();
-  return limit;
-}
+// and 30 s leaves room for a machine shared by many (set_gnuplot_time_limit sets another).
+std::atomic<int> g_gnuplot_seconds{30};
+
+int gnuplot_time_limit_ms() { return g_gnuplot_seconds * 1000; }
+
+}  // namespace
+
+void set_gnuplot_time_limit(int seconds) { g_gnuplot_seconds = seconds; }
+
+namespace {
 
 struct GnuplotRun {
   int status = 0;
@@ -178,7 +170,7 @@ struct GnuplotRun {
 // Runs `gnuplot -d arguments...` in `dir` (no shell: the folder's name never reaches a command
 // line or a script), without init files (-d: no gnuplotrc, no ~/.gnuplot), in a process group
 // of its own, for at most gnuplot_time_limit_ms(): then the group is killed. Returns its exit
-// status and what it wrote on stderr. An interruption meanwhile stops it (io/interrupt.hpp).
+// status and what it wrote on stderr. An interruption meanwhile stops it (io/child_process.hpp).
 GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& arguments) {
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
@@ -197,7 +189,7 @@ GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& argu
   ::posix_spawnattr_setpgroup(&attributes, 0);       // its own group: a timeout kills it all
   sigset_t defaults;
   sigemptyset(&defaults);
-  sigaddset(&defaults, SIGXFSZ);  // ignored by the run (io/interrupt.cpp), not by gnuplot
+  sigaddset(&defaults, SIGXFSZ);  // ignored by the run (app/interrupt.cpp), not by gnuplot
   ::posix_spawnattr_setsigdefault(&attributes, &defaults);
   ::posix_spawnattr_setflags(&attributes,
                              POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);

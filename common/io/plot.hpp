@@ -44,7 +44,7 @@ enum class PlotResult { drawn, no_gnuplot };
 /// (a warning is passed on as one line), and both files are complete (image_file_problem);
 /// otherwise they are removed and IoError names the file or the script and the reason. A
 /// missing gnuplot is reported once on stderr.
-/// A chapter writes into its staging folder (io/run_folder.hpp), so a failed plot never
+/// A chapter writes into its staging folder (app/run_folder.hpp), so a failed plot never
 /// reaches --out.
 PlotResult write_plot(const std::filesystem::path& dir, const Plot& plot);
 
@@ -54,5 +54,9 @@ std::string image_file_problem(const std::filesystem::path& file);
 
 /// Whether gnuplot is on the PATH.
 bool gnuplot_available();
+
+/// How long one gnuplot may run before its process group is killed (default 30 s; a chapter
+/// takes MCRT_GNUPLOT_TIMEOUT, 1 to 3600 seconds, read strictly by app/cli).
+void set_gnuplot_time_limit(int seconds);
 
 }  // namespace mcrt

@@ -36,6 +36,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/cli.hpp"
+#include "app/summary.hpp"
 #include "assignment_fairness/known_bug_checks.hpp"
 #include "assignment_fairness/measured_check.hpp"
 #include "assignment_fairness/p_value_summary.hpp"
@@ -43,9 +45,7 @@
 #include "assignments/hidden/fairness_p_values.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
-#include "io/cli.hpp"
 #include "io/output.hpp"
-#include "io/summary.hpp"
 #include "io/table.hpp"
 #include "stats/report.hpp"
 
@@ -449,7 +449,7 @@ int main(int argc, char** argv) {
   add_number_option(app, "--bug-seeds", o.bug_seeds, "Seeds per known bug", 1, 1000);
   add_number_option(app, "--variant-seeds", o.variant_seeds,
                     "Seeds per point of a hidden test's variant grid (with --variants)", 1, 1000);
-  CLI::App& flags = app;  // a text flag: no add_*_option of io/cli.hpp reads one
+  CLI::App& flags = app;  // a text flag: no add_*_option of app/cli.hpp reads one
   flags.add_option("--filter", o.filter, "Only the rows (checks, bugs, thresholds) whose name contains this text");
   add_path_option(app, "--variants", o.variants,
                   "The hidden tests' variant grid: the file `tests/assignments/answers/key.py --hidden-grid` "

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "app/run_folder.hpp"
 #include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
-#include "io/run_folder.hpp"
 #include "io/image_file.hpp"
 
 using namespace mcrt::testing;
@@ -166,7 +166,7 @@ TEST(Ch05Test, HelpNamesEveryFlag) {
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
-// --print-flags (every chapter's, from io/cli): the flags a run with these flags records in
+// --print-flags (every chapter's, from app/cli): the flags a run with these flags records in
 // summary.json, printed without running; nothing is written. scripts/make-figures records them
 // and the figure-drift test compares them with the program's.
 TEST(Ch05Test, PrintFlagsPrintsWhatSummaryRecordsAndRunsNothing) {

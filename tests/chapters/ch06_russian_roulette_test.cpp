@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "app/run_folder.hpp"
 #include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
-#include "io/run_folder.hpp"
 #include "integration/statistics.hpp"
 #include "io/image_file.hpp"
 

@@ -34,10 +34,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "core/rng.hpp"
-#include "io/cli.hpp"
 #include "io/output.hpp"
 #include "io/plot.hpp"
 #include "stats/check.hpp"

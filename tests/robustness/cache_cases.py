@@ -673,6 +673,21 @@ def group_gnuplot_env(chapters, tmp, checks):
         what = "hangs" if name == "hanging" else "cannot draw PNG"
         checks.case(f"{guarantee} {PLOTTER} with a gnuplot that {what}", problems)
 
+    # MCRT_GNUPLOT_TIMEOUT is read strictly: anything but 1 to 3600 seconds is refused up front
+    # (exit 2, one line naming the variable and what it accepts), never ignored.
+    for value in ["abc", "0", "3601", "1.5", " 5", "-1", ""]:
+        parent, code, err, _ = run_with(f"timeout-{value.strip() or 'empty'}",
+                                        dict(os.environ, MCRT_GNUPLOT_TIMEOUT=value))
+        problems = base.exit_problems(code, 2, err)
+        lines = base.lines_of(err)
+        if len(lines) != 1 or "MCRT_GNUPLOT_TIMEOUT: give a whole number of seconds from 1 to 3600" \
+                not in lines[0]:
+            problems.append(f"expected one line naming MCRT_GNUPLOT_TIMEOUT: {base.text(err)!r}")
+        if os.path.exists(parent / "out"):
+            problems.append("--out was written")
+        checks.case(f"{guarantee} {PLOTTER} with MCRT_GNUPLOT_TIMEOUT={value!r} is refused",
+                    problems)
+
 
 def run_with(command, cwd, timeout=20.0, **options):
     """robustness.run with subprocess.run's other options (env, preexec_fn): (exit code or

@@ -12,8 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "app/cli.hpp"
 #include "assignments/a2/warp.hpp"
-#include "io/cli.hpp"
 #include "io/image_file.hpp"
 #include "sampling/cone.hpp"
 #include "sampling/hemisphere.hpp"

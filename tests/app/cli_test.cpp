@@ -1,7 +1,7 @@
-// The list-option parser of common/io/cli.hpp (--dims, --sizes, ...): sorted, deduplicated,
+// The list-option parser of common/app/cli.hpp (--dims, --sizes, ...): sorted, deduplicated,
 // decimal digits only, every value in range, and a message that names the flag.
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 #include <string>
 #include <vector>

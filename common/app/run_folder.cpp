@@ -1,10 +1,12 @@
-#include "io/run_folder.hpp"
+#include "app/run_folder.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
+#include <sstream>
 #include <system_error>
 #include <tuple>
 #include <utility>
@@ -17,14 +19,29 @@
 
 #include <fmt/format.h>
 
+#include "app/interrupt.hpp"
+#include "app/usage_error.hpp"
 #include "io/exclusive_file.hpp"
-#include "io/interrupt.hpp"
 #include "io/output.hpp"
-#include "io/usage_error.hpp"
 
 namespace mcrt {
 
 namespace fs = std::filesystem;
+
+bool is_within(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+    if (i == inner.end() || *i != *o) return false;
+  return true;
+}
+
+fs::path resolved(const fs::path& path) {
+  std::error_code ec;
+  fs::path result = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) result = fs::absolute(path, ec).lexically_normal();
+  if (result.filename().empty()) result = result.parent_path();  // "out/" is "out"
+  return result;
+}
 
 namespace {
 
@@ -43,23 +60,6 @@ std::string quoted(const fs::path& path) {
 
 std::string reason_of(int error) { return std::error_code(error, std::generic_category()).message(); }
 
-// `inner` is `outer` or lies inside it (both absolute and normal).
-bool is_within(const fs::path& inner, const fs::path& outer) {
-  auto i = inner.begin();
-  for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
-    if (i == inner.end() || *i != *o) return false;
-  return true;
-}
-
-// `path` absolute, links followed as far as they exist, without a trailing '/'.
-fs::path resolved(const fs::path& path) {
-  std::error_code ec;
-  fs::path result = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  if (ec) result = fs::absolute(path, ec).lexically_normal();
-  if (result.filename().empty()) result = result.parent_path();  // "out/" is "out"
-  return result;
-}
-
 // The user's home folders: $HOME and the password database's entry (they may differ).
 std::vector<fs::path> home_folders() {
   std::vector<fs::path> homes;
@@ -70,29 +70,23 @@ std::vector<fs::path> home_folders() {
 }
 
 // The folder a run into `out` replaces, links followed; UsageError for the folders that are
-// never replaced whatever they hold. Whether its contents may be replaced is checked later.
+// never replaced whatever they hold.
 fs::path checked_target(const fs::path& out) {
   if (out.empty()) throw UsageError("--out: give a folder name");
+  const auto refuse = [&](const std::string& why) {
+    throw UsageError("--out " + quoted(out) + " is " + why);
+  };
   std::error_code ec;
-  const fs::file_status link = fs::symlink_status(out, ec);
-  if (fs::is_symlink(link) && !fs::exists(fs::status(out, ec)))
-    throw UsageError("--out " + quoted(out) +
-                     " is a symbolic link to nothing (a dangling link); remove it or choose "
-                     "another folder");
-  const fs::path target = resolved(out);
-  const fs::path cwd = fs::current_path(ec);
+  if (fs::is_symlink(fs::symlink_status(out, ec)) && !fs::exists(fs::status(out, ec)))
+    refuse("a symbolic link to nothing (a dangling link); remove it or choose another folder");
+  const fs::path target = resolved(out), cwd = fs::current_path(ec);
+  const std::string whole = "; a run replaces its --out whole, so give a folder of its own";
   if (target == target.root_path() || (!ec && is_within(cwd, target)))
-    throw UsageError("--out " + quoted(out) +
-                     " is the current folder, one above it or the root; a run replaces its "
-                     "--out whole, so give a folder of its own");
+    refuse("the current folder, one above it or the root" + whole);
   for (const fs::path& home : home_folders())
-    if (target == home)
-      throw UsageError("--out " + quoted(out) +
-                       " is your home folder; a run replaces its --out whole, so give a folder "
-                       "of its own");
-  const fs::file_status status = fs::status(target, ec);
-  if (fs::exists(status) && !fs::is_directory(status))
-    throw UsageError("--out " + quoted(out) + " is a file, not a folder; choose another name");
+    if (target == home) refuse("your home folder" + whole);
+  if (fs::exists(fs::status(target, ec)) && !fs::is_directory(fs::status(target, ec)))
+    refuse("a file, not a folder; choose another name");
   return target;
 }
 
@@ -135,17 +129,11 @@ void remove_tree(const fs::path& dir) noexcept {
   }
 }
 
-// A staging folder's name: `.<name>.staging-<16 hex digits>`, with "-previous" while it holds
-// the run a commit set aside. A name the user chose (`.draft.staging-999999`) does not match.
+// A staging folder's name, with "-previous" while it holds the run a commit set aside. A name
+// the user chose (`.draft.staging-999999`) does not match.
 bool is_staging_name(const std::string& name) {
-  const std::size_t at = name.rfind(k_staging_infix);
-  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at == 0) return false;
-  std::string suffix = name.substr(at + std::char_traits<char>::length(k_staging_infix));
-  if (suffix.ends_with(k_previous_suffix))
-    suffix.resize(suffix.size() - std::char_traits<char>::length(k_previous_suffix));
-  return suffix.size() == 16 && std::all_of(suffix.begin(), suffix.end(), [](char c) {
-           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
-         });
+  static const std::regex k_staging(R"(\..*\.staging-[0-9a-f]{16}(-previous)?)");
+  return std::regex_match(name, k_staging);
 }
 
 // Opens the manifest of the staging folder `dir` (a regular file of this user in a folder of
@@ -166,25 +154,18 @@ int lock_abandoned_staging(const fs::path& dir) {
   return fd;
 }
 
-// Why a folder a run writes in is not one it can own ("" when it can): owned by another user
+// UsageError naming --out when the folder at `path` (--out, or the folder it is made in) is not
+// one this run can own, as git refuses a repository another user owns: owned by another user
 // (root may own a parent), or writable by a user other than this one and root (the sticky bit
 // of a parent such as /tmp keeps others from renaming what the run makes in it).
-std::string why_not_ours(const struct stat& info, bool parent) {
-  const uid_t me = ::geteuid();
-  if (info.st_uid != me && !(parent && info.st_uid == 0)) return "is owned by another user";
-  const bool sticky = parent && (info.st_mode & S_ISVTX);
-  const bool group_writable = (info.st_mode & S_IWGRP) && info.st_gid != ::getegid();
-  if (!sticky && ((info.st_mode & S_IWOTH) || group_writable))
-    return "can be written by other users";
-  return "";
-}
-
-// UsageError naming --out when the folder at `path` (--out itself, or the folder it is made
-// in) is not one this run can own, as git refuses a repository another user owns.
 void refuse_unless_ours(const fs::path& path, const fs::path& out, bool parent) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) return;  // a missing folder is made by this run
-  const std::string why = why_not_ours(info, parent);
+  const bool sticky = parent && (info.st_mode & S_ISVTX);
+  const bool group_writable = (info.st_mode & S_IWGRP) && info.st_gid != ::getegid();
+  std::string why;
+  if (info.st_uid != ::geteuid() && !(parent && info.st_uid == 0)) why = "is owned by another user";
+  else if (!sticky && ((info.st_mode & S_IWOTH) || group_writable)) why = "can be written by other users";
   if (!why.empty())
     throw UsageError("--out " + quoted(out) + ": " + (parent ? "the folder it is in " : "it ") +
                      why + "; a run only writes in folders of your own, so choose one");
@@ -259,20 +240,41 @@ std::vector<std::string> names_in(const fs::path& dir) {
   return names;
 }
 
-}  // namespace
-
+// What dir's manifest lists; nothing without a regular manifest.
 std::vector<std::string> manifest_entries(const fs::path& dir) {
   std::vector<std::string> entries;
-  const std::optional<std::string> text = read_manifest(dir);
-  if (!text) return entries;
-  std::size_t start = 0;
-  while (start < text->size()) {
-    const std::size_t end = std::min(text->find('\n', start), text->size());
-    if (end > start) entries.push_back(text->substr(start, end - start));
-    start = end + 1;
-  }
+  std::istringstream lines(read_manifest(dir).value_or(""));
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) entries.push_back(line);
   return entries;
 }
+
+// The manifest of `dir`: everything under it, the manifest itself included.
+std::string manifest_text(const fs::path& dir) {
+  std::string text = std::string(k_manifest_name) + "\n";
+  for (const auto& entry : entries_under(dir))  // a name with a newline cannot be listed
+    if (entry.first != k_manifest_name && entry.first.find('\n') == std::string::npos)
+      text += entry.first + "\n";
+  return text;
+}
+
+// Removes, in `dir`, the staging folders of runs that are gone: named as staging_name() makes
+// them, holding a manifest of this user whose lock can be taken (a live run, in any PID
+// namespace or machine, holds it). Nothing else is touched.
+void remove_stale_staging(const fs::path& dir) noexcept {
+  try {
+    for (const std::string& name : names_in(dir)) {
+      if (!is_staging_name(name)) continue;
+      const int lock = lock_abandoned_staging(dir / name);
+      if (lock < 0) continue;
+      remove_tree(dir / name);  // under its lock: no run can be using it
+      ::close(lock);
+    }
+  } catch (...) {  // a folder that cannot be listed has nothing to clean
+  }
+}
+
+}  // namespace
 
 std::optional<std::string> first_foreign_entry(const fs::path& dir) {
   const std::vector<std::string> listed = manifest_entries(dir);
@@ -281,14 +283,6 @@ std::optional<std::string> first_foreign_entry(const fs::path& dir) {
         std::find(listed.begin(), listed.end(), relative) == listed.end())
       return relative;
   return std::nullopt;
-}
-
-std::string manifest_text(const fs::path& dir) {
-  std::string text = std::string(k_manifest_name) + "\n";
-  for (const auto& entry : entries_under(dir))  // a name with a newline cannot be listed
-    if (entry.first != k_manifest_name && entry.first.find('\n') == std::string::npos)
-      text += entry.first + "\n";
-  return text;
 }
 
 std::string staging_name(const std::string& name, const std::string& suffix) {
@@ -301,19 +295,6 @@ std::string staging_name(const std::string& name, const std::string& suffix) {
     --keep;  // never cut a UTF-8 character in two
   std::string result(1, '.');  // appended: "." + a temporary trips a false -Wrestrict
   return result.append(name, 0, keep).append(tail);
-}
-
-void remove_stale_staging(const fs::path& dir) noexcept {
-  try {
-    for (const std::string& name : names_in(dir)) {
-      if (!is_staging_name(name)) continue;
-      const int lock = lock_abandoned_staging(dir / name);
-      if (lock < 0) continue;
-      remove_tree(dir / name);  // under its lock: no run can be using it
-      ::close(lock);
-    }
-  } catch (...) {  // a folder that cannot be listed has nothing to clean
-  }
 }
 
 RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_target(out_)) {

@@ -2,8 +2,8 @@
 /// The summary.json entries every rendering chapter shares: what was rendered (scene and
 /// image size), what it cost (rays, non-finite samples) and, for timings.json, how long it took.
 
-#include "io/cli.hpp"
-#include "io/summary.hpp"
+#include "app/cli.hpp"
+#include "app/summary.hpp"
 #include "render/render_totals.hpp"
 #include "render/scene.hpp"
 

@@ -3,7 +3,7 @@
 // allocation, a FIFO refused without blocking, temporaries that never follow a planted link,
 // dead writers' temporaries removed and live ones kept, and a spoiled cache rendered again.
 
-#include "io/reference_cache.hpp"
+#include "app/reference_cache.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -20,7 +20,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"

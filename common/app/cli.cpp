@@ -1,8 +1,9 @@
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -14,11 +15,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/interrupt.hpp"
+#include "app/numbers.hpp"
+#include "app/run_folder.hpp"
 #include "core/parallel.hpp"
-#include "io/interrupt.hpp"
-#include "io/numbers.hpp"
 #include "io/output.hpp"
-#include "io/run_folder.hpp"
+#include "io/plot.hpp"
 
 namespace mcrt {
 
@@ -34,148 +36,112 @@ void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& ch
   app.add_flag("--quiet", options.quiet, "No progress bar and no table on stdout");
 }
 
-void add_scene_options(CLI::App& app, SceneOptions& options,
-                       const std::vector<std::string>& names) {
-  app.add_option("--scene", options.scene, "Scene to render")->check(CLI::IsMember(names));
-  add_number_option(app, "--albedo", options.params.furnace_albedo,
+void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image,
+                        const std::vector<std::string>& scenes) {
+  app.add_option("--scene", scene.scene, "Scene to render")->check(CLI::IsMember(scenes));
+  add_number_option(app, "--albedo", scene.params.furnace_albedo,
                     "Furnace scene: albedo everywhere", 0.0, 1.0);
-  add_number_option(app, "--emission", options.params.furnace_emission,
+  add_number_option(app, "--emission", scene.params.furnace_emission,
                     "Furnace scene: emitted radiance everywhere", 0.0, 1e6);
-}
-
-void add_image_options(CLI::App& app, ImageOptions& options) {
-  add_number_option(app, "--width", options.width, "Image width in pixels", 1, k_max_image_side);
-  add_number_option(app, "--height", options.height, "Image height in pixels", 1,
+  add_number_option(app, "--width", image.width, "Image width in pixels", 1, k_max_image_side);
+  add_number_option(app, "--height", image.height, "Image height in pixels", 1,
                     k_max_image_side);
 }
 
 namespace {
 
-// The comma-separated items of a list flag; an empty list or item is a usage error.
-std::vector<std::string> list_items(const std::string& text, const std::string& accepted) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
-    items.push_back(text.substr(start, end - start));
-    if (items.back().empty()) throw CLI::ValidationError(accepted + " (an item is empty)");
-    if (end == text.size()) return items;
-    start = end + 1;
-  }
+template <class T>
+std::string bound(T value) {
+  if constexpr (std::is_floating_point_v<T>) return plain_number(value);
+  return std::to_string(value);
 }
 
+// A number flag: the text as given is read by app/numbers. --help shows what CLI11 shows for a
+// range check on a T: "--width INT:INT in [1 - 16384]=640".
 template <class T>
-std::vector<T> sorted_unique(std::vector<T> values) {
+CLI::Option* add_number(CLI::App& app, const std::string& flag, T& value,
+                        const std::string& description, T lowest, T highest) {
+  if (std::is_same_v<T, int> && (lowest < T{} || highest < lowest))
+    throw std::invalid_argument("add_number_option " + flag + ": needs 0 <= lowest <= highest");
+  const std::string type = CLI::detail::type_name<T>();
+  const auto read = [&value, flag, lowest, highest](const std::string& text) {
+    if constexpr (std::is_floating_point_v<T>) value = parse_real_number(text, flag, lowest, highest);
+    else value = static_cast<T>(parse_whole_number(text, flag, lowest, highest));
+  };
+  return app.add_option_function<std::string>(flag, read, description)
+      ->type_name(type)
+      ->check(CLI::Validator(type + " in [" + bound(lowest) + " - " + bound(highest) + "]"))
+      ->default_str(CLI::detail::to_string(value));
+}
+
+// The comma-separated items of `text`, each read by `read`, sorted, duplicates dropped.
+template <class T, class Read>
+std::vector<T> parse_list(const std::string& text, Read read) {
+  std::vector<T> values;
+  for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
+    end = text.find(',', start);
+    values.push_back(read(std::string_view(text).substr(start, end - start)));
+  }
   std::sort(values.begin(), values.end());
   values.erase(std::unique(values.begin(), values.end()), values.end());
   return values;
 }
 
-// A numeric option: the text as given is read by `parse`. --help shows what CLI11 shows for
-// an option of type T with a range check: "--width INT:INT in [1 - 16384]=640".
-template <class T, class Parse>
-CLI::Option* add_parsed_option(CLI::App& app, const std::string& flag, T& value,
-                               const std::string& description, const std::string& range,
-                               Parse parse) {
-  const std::string type = CLI::detail::type_name<T>();
-  return app
-      .add_option_function<std::string>(
-          flag, [&value, parse](const std::string& text) { value = parse(text); }, description)
-      ->type_name(type)
-      ->check(CLI::Validator(type + " in [" + range + "]"))  // shown in --help, checks nothing
-      ->default_str(CLI::detail::to_string(value));
+template <class T>
+void add_list(CLI::App& app, const std::string& flag, std::vector<T>& values,
+              const std::string& description, T lowest, T highest) {
+  app.add_option_function<std::string>(
+         flag,
+         [&values, flag, lowest, highest](const std::string& text) {
+           if constexpr (std::is_floating_point_v<T>) values = parse_real_list(text, flag, lowest, highest);
+           else values = parse_int_list(text, flag, lowest, highest);
+         },
+         description)
+      ->default_str(fmt::format("{}", fmt::join(values, ",")));
 }
 
 }  // namespace
 
 CLI::Option* add_number_option(CLI::App& app, const std::string& flag, int& value,
                                const std::string& description, int lowest, int highest) {
-  if (lowest < 0 || highest < lowest)
-    throw std::invalid_argument("add_number_option " + flag + ": needs 0 <= lowest <= highest");
-  const auto low = static_cast<std::uint64_t>(lowest), high = static_cast<std::uint64_t>(highest);
-  return add_parsed_option(app, flag, value, description, fmt::format("{} - {}", low, high),
-                           [flag, low, high](const std::string& text) {
-                             return static_cast<int>(parse_whole_number(text, flag, low, high));
-                           });
+  return add_number(app, flag, value, description, lowest, highest);
 }
 
 CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::uint64_t& value,
                                const std::string& description, std::uint64_t lowest,
                                std::uint64_t highest) {
-  return add_parsed_option(app, flag, value, description,
-                           fmt::format("{} - {}", lowest, highest),
-                           [flag, lowest, highest](const std::string& text) {
-                             return parse_whole_number(text, flag, lowest, highest);
-                           });
+  return add_number(app, flag, value, description, lowest, highest);
 }
 
 CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& value,
                                const std::string& description, double lowest, double highest) {
-  return add_parsed_option(app, flag, value, description,
-                           plain_number(lowest) + " - " + plain_number(highest),
-                           [flag, lowest, highest](const std::string& text) {
-                             return parse_real_number(text, flag, lowest, highest);
-                           });
+  return add_number(app, flag, value, description, lowest, highest);
 }
 
 std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
                                 int highest) {
-  const std::string accepted = fmt::format(
-      "{}: give a comma-separated list of whole numbers from {} to {}", flag, lowest, highest);
-  std::vector<int> values;
-  for (const std::string& item : list_items(text, accepted)) {
-    // Decimal digits only: no sign, no spaces, no octal or hex prefixes.
-    const std::optional<std::uint64_t> value = read_whole_number(item);
-    if (!value)
-      throw CLI::ValidationError(
-          accepted + fmt::format(" ('{}' is not one)", quoted_for_message(item)));
-    const bool below = lowest > 0 && *value < static_cast<std::uint64_t>(lowest);
-    if (below || highest < 0 || *value > static_cast<std::uint64_t>(highest))
-      throw CLI::ValidationError(accepted + fmt::format(" ({} is out of range)", *value));
-    values.push_back(static_cast<int>(*value));
-  }
-  return sorted_unique(std::move(values));
+  return parse_list<int>(text, [&](std::string_view item) {
+    return static_cast<int>(parse_whole_number(item, flag, static_cast<std::uint64_t>(std::max(lowest, 0)),
+                                               static_cast<std::uint64_t>(std::max(highest, 0)),
+                                               "a comma-separated list of whole numbers"));
+  });
 }
 
 std::vector<double> parse_real_list(const std::string& text, const std::string& flag,
                                     double lowest, double highest) {
-  const std::string accepted = fmt::format(
-      "{}: give a comma-separated list of numbers from {} to {}", flag, lowest, highest);
-  std::vector<double> values;
-  for (const std::string& item : list_items(text, accepted)) {
-    // Decimal notation only (digits, one point, an exponent): no hex floats, nan or inf.
-    const std::optional<double> value = read_real_number(item);
-    if (!value)
-      throw CLI::ValidationError(
-          accepted + fmt::format(" ('{}' is not one)", quoted_for_message(item)));
-    if (*value < lowest || *value > highest)
-      throw CLI::ValidationError(
-          accepted + fmt::format(" ({} is out of range)", quoted_for_message(item)));
-    values.push_back(*value);
-  }
-  return sorted_unique(std::move(values));
+  return parse_list<double>(text, [&](std::string_view item) {
+    return parse_real_number(item, flag, lowest, highest, "a comma-separated list of numbers");
+  });
 }
 
 void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
                      const std::string& description, int lowest, int highest) {
-  app.add_option_function<std::string>(
-         flag,
-         [&values, flag, lowest, highest](const std::string& text) {
-           values = parse_int_list(text, flag, lowest, highest);
-         },
-         description)
-      ->default_str(fmt::format("{}", fmt::join(values, ",")));
+  add_list(app, flag, values, description, lowest, highest);
 }
 
 void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
                      const std::string& description, double lowest, double highest) {
-  app.add_option_function<std::string>(
-         flag,
-         [&values, flag, lowest, highest](const std::string& text) {
-           values = parse_real_list(text, flag, lowest, highest);
-         },
-         description)
-      ->default_str(fmt::format("{}", fmt::join(values, ",")));
+  add_list(app, flag, values, description, lowest, highest);
 }
 
 void add_choice_option(CLI::App& app, const std::string& flag,
@@ -238,52 +204,34 @@ nlohmann::ordered_json run_flags_json(const CLI::App& app) { return option_value
 
 namespace {
 
-// A filesystem_error in the project's words: "cannot access 'P': reason", not the library's
-// "filesystem error: ... [P]".
-std::string filesystem_message(const std::filesystem::filesystem_error& e) {
-  const std::filesystem::path& path = e.path1();
-  return (path.empty() ? std::string("a file operation failed")
-                       : "cannot access '" + path.string() + "'") +
-         ": " + e.code().message();
-}
-
-// A write to stdout that failed (a closed pipe: EPIPE, since SIGPIPE no longer ends the run;
-// a full disk): fmt::print throws system_error, and stdout's error flag tells it apart.
-std::optional<std::string> stdout_failure(const std::system_error& e) {
-  if (!std::ferror(stdout)) return std::nullopt;
-  return "cannot write to stdout: " + e.code().message();
+// An exception in the project's words: a filesystem_error as "cannot access 'P': reason", a
+// failed write to stdout (fmt::print throws system_error; the error flag tells it apart).
+std::string message_of(const std::exception& e) {
+  if (const auto* file = dynamic_cast<const std::filesystem::filesystem_error*>(&e))
+    return (file->path1().empty() ? std::string("a file operation failed")
+                                  : "cannot access '" + file->path1().string() + "'") +
+           ": " + file->code().message();
+  if (const auto* system = dynamic_cast<const std::system_error*>(&e); system && std::ferror(stdout))
+    return "cannot write to stdout: " + system->code().message();
+  return e.what();
 }
 
 // Flushes stdout. If anything written to it was lost (a full disk, /dev/full, a closed pipe),
 // says so in one line and turns a successful exit code into 1.
 int checked_stdout(const std::string& program, int exit_code) {
-  // std::cout writes through stdout's buffer (synced with stdio), so this one flush sends
-  // both, and errno then holds the reason of a failure.
-  errno = 0;
+  errno = 0;  // one flush sends both std::cout and stdout (synced); errno then holds the reason
   const bool flushed = std::fflush(stdout) == 0;
   const int reason = errno;
   std::cout.flush();
-  if (flushed && !std::ferror(stdout) && std::cout.good()) return exit_code;
-  if (exit_code != 0) return exit_code;  // already failed, and already said why
+  if ((flushed && !std::ferror(stdout) && std::cout.good()) || exit_code != 0) return exit_code;
   std::cerr << program << ": error: cannot write to stdout: "
             << (flushed ? "a write failed" : std::strerror(reason)) << '\n';
   return 1;
 }
 
-// Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates, at most U+10FFFF):
-// every value ends up in summary.json, so what the JSON library writes is the test.
-bool is_utf8(std::string_view text) {
-  try {
-    (void)nlohmann::json(std::string(text)).dump();
-    return true;
-  } catch (const nlohmann::json::type_error&) {  // 316: invalid UTF-8 byte
-    return false;
-  }
-}
-
-// What is wrong with the values on the command line before CLI11 reads them: an empty value,
-// given as `--flag=` (which CLI11 would fill with the next argument) or as `--flag ""`, and a
-// value that is not UTF-8. The message names the flag; nullopt if nothing is wrong.
+// What is wrong with the values on the command line before CLI11 reads them: an empty value
+// (`--flag=`, which CLI11 would fill with the next argument, or `--flag ""`), or one that is not
+// UTF-8 (every value ends up in summary.json: what the JSON library writes is the test).
 std::optional<std::string> refused_value(const CLI::App& app, int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view argument = argv[i];
@@ -301,8 +249,11 @@ std::optional<std::string> refused_value(const CLI::App& app, int argc, char** a
       value = argv[++i];
     }
     if (value.empty()) return flag + ": the value is empty; give one, or leave the flag out";
-    if (!is_utf8(value))
+    try {
+      (void)nlohmann::json(std::string(value)).dump();
+    } catch (const nlohmann::json::type_error&) {  // 316: invalid UTF-8
       return flag + ": the value is not valid UTF-8; give it in UTF-8 (the run's JSON files record it)";
+    }
   }
   return std::nullopt;
 }
@@ -324,18 +275,9 @@ int parse_and_run(CLI::App& app, const std::string& program, int argc, char** ar
   }
   try {
     return body();
-  } catch (const UsageError& e) {
-    std::cerr << program << ": error: " << e.what() << '\n';
-    return 2;
-  } catch (const IoError& e) {
-    std::cerr << program << ": error: " << e.what() << '\n';
-    return 1;
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << program << ": error: " << filesystem_message(e) << '\n';
-    return 1;
   } catch (const std::exception& e) {
-    std::cerr << program << ": error: " << e.what() << '\n';
-    return 1;
+    std::cerr << program << ": error: " << message_of(e) << '\n';
+    return dynamic_cast<const UsageError*>(&e) ? 2 : 1;
   }
 }
 
@@ -363,6 +305,13 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
       std::cout << flags_json(*app_).dump() << '\n';
       return 0;
     }
+    try {  // read strictly, before any work: a typo is refused, never ignored
+      if (const char* seconds = std::getenv("MCRT_GNUPLOT_TIMEOUT"))
+        set_gnuplot_time_limit(static_cast<int>(parse_whole_number(
+            seconds, "MCRT_GNUPLOT_TIMEOUT", 1, 3600, "a whole number of seconds")));
+    } catch (const CLI::ValidationError& e) {
+      throw UsageError(e.what());
+    }
     std::optional<RunFolder> folder;
     const auto forget = [&] {  // unregistered and removed with no interruption in between
       without_interruption([&] {
@@ -379,10 +328,7 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
       body();
       folder->commit();
     } catch (const std::exception& e) {  // in the project's words, naming --out
-      const auto* file = dynamic_cast<const std::filesystem::filesystem_error*>(&e);
-      const auto* system = dynamic_cast<const std::system_error*>(&e);
-      const std::string message = folder->with_out_name(
-          file ? filesystem_message(*file) : system ? stdout_failure(*system).value_or(e.what()) : e.what());
+      const std::string message = folder->with_out_name(message_of(e));
       forget();
       if (dynamic_cast<const UsageError*>(&e)) throw UsageError(message);
       throw IoError(message);
@@ -390,12 +336,6 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
     forget();
     return 0;
   });
-}
-
-void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image,
-                        const std::vector<std::string>& scenes) {
-  add_scene_options(app, scene, scenes);
-  add_image_options(app, image);
 }
 
 }  // namespace mcrt

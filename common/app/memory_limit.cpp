@@ -1,4 +1,4 @@
-#include "io/memory_limit.hpp"
+#include "app/memory_limit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include <sys/resource.h>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 
 namespace mcrt {
 
@@ -48,22 +48,23 @@ double left_under(int resource, double used) {
   return std::max(0.0, static_cast<double>(limit.rlim_cur) - (std::isfinite(used) ? used : 0.0));
 }
 
-// What a container's memory limit (cgroup v2: memory.max less memory.current) leaves;
-// infinity outside one or without a limit.
-double left_in_cgroup() {
-  std::ifstream max_file("/sys/fs/cgroup/memory.max");
-  std::ifstream current_file("/sys/fs/cgroup/memory.current");
-  std::string max_text;
-  double current = 0.0;
-  if (!(max_file >> max_text) || max_text == "max" || !(current_file >> current)) return HUGE_VAL;
-  try {
-    return std::max(0.0, std::stod(max_text) - current);
-  } catch (const std::exception&) {
-    return HUGE_VAL;
-  }
+// The first number in `file` (infinity if none, or "max").
+double number_in(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  double value = HUGE_VAL;
+  return in >> value ? value : HUGE_VAL;
 }
 
 }  // namespace
+
+double left_in_cgroup(const std::filesystem::path& root) {
+  const auto left = [&](const char* limit, const char* used) {  // infinity unless both are read
+    const double l = number_in(root / limit), u = number_in(root / used);
+    return std::isfinite(l) && std::isfinite(u) ? std::max(0.0, l - u) : HUGE_VAL;
+  };
+  return std::min(left("memory.max", "memory.current"),
+                  left("memory/memory.limit_in_bytes", "memory/memory.usage_in_bytes"));
+}
 
 double available_memory_bytes() {
   const double machine = proc_kilobytes("/proc/meminfo", "MemAvailable");

@@ -1,9 +1,9 @@
-// The output folder as a whole (common/io/run_folder.hpp): a run writes into a staging folder
+// The output folder as a whole (common/app/run_folder.hpp): a run writes into a staging folder
 // that replaces --out only when committed; a folder holding anything its manifest does not
 // list is never replaced; a run that fails leaves nothing behind; a killed run's staging
 // folder is removed by the next run, and nothing else is.
 
-#include "io/run_folder.hpp"
+#include "app/run_folder.hpp"
 
 #include <climits>
 #include <cstdlib>
@@ -19,7 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 #include "io/output.hpp"
 #include "support/exception_message.hpp"
 #include "support/temp_files.hpp"

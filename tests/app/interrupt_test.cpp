@@ -1,10 +1,10 @@
-// SIGINT and SIGTERM during a run (common/io/interrupt.hpp), each in a child process of its own
+// SIGINT and SIGTERM during a run (common/app/interrupt.hpp), each in a child process of its own
 // (a death test), in the order ChapterApp::run registers, commits and forgets its RunFolder:
 // the exit code is 128 + the signal, the one line says truthfully whether --out was written,
 // and --out holds either the previous run or the new one, whole. The death tests fork (the
 // default style) while this process has one thread; the child starts the waiting thread.
 
-#include "io/interrupt.hpp"
+#include "app/interrupt.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/run_folder.hpp"
+#include "app/run_folder.hpp"
 #include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;

@@ -1,8 +1,8 @@
-// The number reader of every numeric flag (common/io/numbers.hpp, add_number_option in
-// common/io/cli.hpp): numbers read as written, nothing clamped, finite reals only, and a
+// The number reader of every numeric flag (common/app/numbers.hpp, add_number_option in
+// common/app/cli.hpp): numbers read as written, nothing clamped, finite reals only, and a
 // one-line message under 200 characters naming the flag and the range.
 
-#include "io/numbers.hpp"
+#include "app/numbers.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -13,7 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 using mcrt::parse_real_number;
 using mcrt::parse_whole_number;

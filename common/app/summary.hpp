@@ -1,15 +1,13 @@
 #pragma once
-/// summary.json and timings.json. summary.json holds a run's key figures, the seed and the
-/// flags that decide them: the same seed and flags give the same file byte for byte, whatever
-/// --threads. timings.json holds what depends on the machine and the moment: seconds, rates,
-/// the thread count, the CPU's features and the flags that change no result (--threads,
-/// --out, --quiet).
+/// summary.json: a run's key figures, seed and flags, byte for byte the same whatever
+/// --threads. timings.json: what depends on the machine (seconds, rates, threads, CPU features)
+/// and the flags that change no result.
 
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
-#include "io/cli.hpp"
+#include "app/cli.hpp"
 
 namespace mcrt {
 
@@ -18,11 +16,10 @@ using Json = nlohmann::ordered_json;  ///< keeps keys in the order they were wri
 /// The opening entries of every chapter's summary: its name and seed.
 Json start_summary(const Chapter& chapter, const CommonOptions& common);
 
-/// The opening entries of every chapter's timings.json: its name, the thread count and
-/// whether the processor has AVX2 (the fast engines' path).
+/// The opening entries of every chapter's timings.json: its name, threads and AVX2.
 Json start_timings(const Chapter& chapter, const CommonOptions& common);
 
-/// Writes `json` pretty-printed to `path` (temporary file, then rename). Throws IoError.
+/// Writes `json` pretty-printed to `path` (write_file_atomic).
 void write_json(const std::filesystem::path& path, const Json& json);
 
 /// Ends `timings` with the run's own flags (run_flags_json) and writes it as dir/timings.json.

@@ -1,4 +1,4 @@
-#include "io/summary.hpp"
+#include "app/summary.hpp"
 
 #include "core/cpu_features.hpp"
 #include "io/output.hpp"

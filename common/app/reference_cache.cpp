@@ -1,4 +1,4 @@
-#include "io/reference_cache.hpp"
+#include "app/reference_cache.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -6,14 +6,15 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
 
-#include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -21,12 +22,13 @@
 
 #include <fmt/format.h>
 
+#include "app/run_folder.hpp"
+#include "app/usage_error.hpp"
 #include "core/progress.hpp"
 #include "geometry/camera.hpp"
 #include "io/exclusive_file.hpp"
 #include "io/image_file.hpp"
 #include "io/output.hpp"
-#include "io/usage_error.hpp"
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
 #include "render/render.hpp"
@@ -58,15 +60,13 @@ Reference furnace_reference(const ReferenceSpec& spec) {
   return r;
 }
 
-// The Cache Directory Tagging convention's signature: a folder whose CACHEDIR.TAG begins with
-// it holds a cache (backup tools skip it). Ours is the only kind of folder the cache writes in.
+// The Cache Directory Tagging convention (backup tools skip a folder so tagged).
 constexpr std::string_view k_tag_name = "CACHEDIR.TAG";
 constexpr std::string_view k_tag_signature = "Signature: 8a477f597d28d172789f06886806bc55";
 // The names of every file the cache wrote or is writing, one a line: the only files it deletes.
 constexpr std::string_view k_index_name = "index.txt";
 
-// The cache folder, open: every file is read and written relative to this descriptor, so the
-// folder checked is the folder used, whatever is renamed or planted meanwhile.
+// The cache folder, open: every file is used relative to it, whatever is renamed meanwhile.
 class CacheFolder {
  public:
   CacheFolder(int fd, fs::path path) : fd_(fd), path_(std::move(path)) {}
@@ -90,9 +90,8 @@ class CacheFolder {
                                dir.string(), why, what_to_do));
 }
 
-// A shared (readers) or exclusive (writers) lock on the folder, so that a reader sees a PFM and
-// its JSON from one writer. Waits a bounded time: anyone who can read the folder can lock it,
-// and the checksum keeps the cache correct without the lock.
+// A shared (readers) or exclusive (writers) lock on the folder: a reader sees a PFM and its
+// JSON from one writer. Bounded: anyone may lock it, and the checksum suffices without it.
 class FolderLock {
  public:
   FolderLock(int fd, int operation) : fd_(fd) {
@@ -114,34 +113,47 @@ class FolderLock {
   bool held_ = false;
 };
 
-// A cache file's bytes, or why it cannot be used. It must be a regular file of ours, no larger
-// than `limit` bytes, checked before it is opened (a FIFO is never opened) and again once open.
+// `name`, opened if it is a regular file of ours of at most `limit` bytes (and, with
+// `single_link`, no other name), checked before it is opened (a FIFO never is) and again once
+// open: its descriptor, or -1 and `problem` ("missing" when there is no such file).
+int open_own_file(int dir_fd, const std::string& name, off_t limit, std::string& problem,
+                  bool single_link = false) {
+  struct stat before {}, opened {};
+  if (::fstatat(dir_fd, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0)
+    problem = errno == ENOENT ? "missing" : std::strerror(errno);
+  else if (!S_ISREG(before.st_mode) || (single_link && before.st_nlink != 1))
+    problem = name + " is not a regular file";
+  else if (before.st_uid != ::geteuid())
+    problem = name + " belongs to another user";
+  else if (before.st_size > limit)
+    problem = fmt::format("{} holds {} bytes, more than it may", name, before.st_size);
+  if (!problem.empty()) return -1;
+  const int fd = ::openat(dir_fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) problem = fmt::format("{}: {}", name, std::strerror(errno));
+  else if (::fstat(fd, &opened) != 0 || opened.st_ino != before.st_ino ||
+           opened.st_dev != before.st_dev || opened.st_size > limit)
+    problem = name + " changed while it was opened";
+  if (fd >= 0 && !problem.empty()) ::close(fd);
+  return problem.empty() ? fd : -1;
+}
+
+// A cache file's bytes, or why it cannot be used (as open_own_file says).
 struct FileBytes {
   std::optional<std::string> bytes;
-  std::string problem;  // "" with bytes; "missing" when there is no such file
+  std::string problem;
 };
 
 FileBytes read_cache_file(int dir_fd, const std::string& name, off_t limit) {
-  struct stat before {};
-  if (::fstatat(dir_fd, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0)
-    return {std::nullopt, errno == ENOENT ? "missing" : std::strerror(errno)};
-  if (!S_ISREG(before.st_mode)) return {std::nullopt, name + " is not a regular file"};
-  if (before.st_uid != ::geteuid()) return {std::nullopt, name + " belongs to another user"};
-  if (before.st_size > limit)
-    return {std::nullopt, fmt::format("{} holds {} bytes, more than it may", name, before.st_size)};
-  const int fd = ::openat(dir_fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return {std::nullopt, fmt::format("{}: {}", name, std::strerror(errno))};
-  struct stat opened {};
-  if (::fstat(fd, &opened) != 0 || opened.st_ino != before.st_ino || !S_ISREG(opened.st_mode) ||
-      opened.st_size > limit) {
-    ::close(fd);
-    return {std::nullopt, name + " changed while it was opened"};
-  }
-  std::string bytes(static_cast<std::size_t>(opened.st_size), '\0');
-  const std::size_t got = read_all(fd, bytes);
+  FileBytes file;
+  const int fd = open_own_file(dir_fd, name, limit, file.problem);
+  if (fd < 0) return file;
+  struct stat info {};
+  ::fstat(fd, &info);
+  std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
+  if (read_all(fd, bytes) == bytes.size()) file.bytes = std::move(bytes);
+  else file.problem = name + " is shorter than its size";
   ::close(fd);
-  if (got != bytes.size()) return {std::nullopt, name + " is shorter than its size"};
-  return {std::move(bytes), ""};
+  return file;
 }
 
 using NamedBytes = std::pair<std::string, std::string_view>;
@@ -153,24 +165,13 @@ bool has_tag(int dir_fd) {
   return tag.bytes && tag.bytes->starts_with(k_tag_signature);
 }
 
-bool is_empty(int dir_fd) {
-  const int fd = ::openat(dir_fd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  DIR* listing = fd < 0 ? nullptr : ::fdopendir(fd);
-  if (listing == nullptr) {  // not known to be empty: treated as holding files
-    if (fd >= 0) ::close(fd);
-    return false;
-  }
-  bool empty = true;
-  while (const dirent* entry = ::readdir(listing))
-    if (std::strcmp(entry->d_name, ".") != 0 && std::strcmp(entry->d_name, "..") != 0) empty = false;
-  ::closedir(listing);
-  return empty;
+bool is_empty(int dir_fd) {  // the open folder itself, by its descriptor's name
+  std::error_code ec;
+  return fs::is_empty(fs::path("/proc/self/fd") / std::to_string(dir_fd), ec) && !ec;
 }
 
-// Opens `dir` without following a link at its last component; nullopt if it does not exist.
-// Throws UsageError (exit 2, before any work) if it is a link, not a folder, another user's,
-// writable by others without the sticky bit, or holds files without our CACHEDIR.TAG. An empty
-// folder is adopted: tagged.
+// Opens `dir` (never through a link); nullopt if it does not exist. UsageError as
+// check_reference_folder says; an empty folder is adopted: tagged.
 std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
   const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) {
@@ -193,8 +194,7 @@ std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
   if ((status.st_mode & S_IWOTH) && !(status.st_mode & S_ISVTX))
     refuse_folder(dir, "anyone may write in it (o+w, no sticky bit)");
   if (!has_tag(fd)) {
-    // Under the exclusive lock: two runs adopting one new folder see each other's tag (or its
-    // temporary file after the check), not a folder of someone else's files.
+    // Locked: two runs adopting one new folder see each other's tag, not someone's files.
     const FolderLock lock(fd, LOCK_EX);
     if (has_tag(fd)) return folder;
     if (!is_empty(fd))
@@ -208,8 +208,7 @@ std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
   return folder;
 }
 
-// $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion (a relative XDG_CACHE_HOME is
-// ignored, as the XDG Base Directory specification says). Throws UsageError if neither is set.
+// A relative XDG_CACHE_HOME is ignored, as the XDG Base Directory specification says.
 fs::path default_cache_folder() {
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   if (xdg != nullptr && fs::path(xdg).is_absolute()) return fs::path(xdg) / "mcrt-companion";
@@ -220,9 +219,8 @@ fs::path default_cache_folder() {
                    "nor HOME is set to an absolute path; give --reference-dir a folder of your own");
 }
 
-// The cache folder, created if missing (the XDG base folder mode 0700, as the specification
-// asks; other parents as needed), opened and tagged. Throws IoError, saying what to do, if it
-// cannot be made (a read-only home).
+// The cache folder, created if missing (the XDG base folder 0700, as its specification asks),
+// opened and tagged; IoError saying what to do if it cannot be made.
 CacheFolder create_cache_folder(const fs::path& dir) {
   if (auto folder = open_cache_folder(dir)) return std::move(*folder);
   std::error_code ec;
@@ -238,25 +236,19 @@ CacheFolder create_cache_folder(const fs::path& dir) {
   throw IoError(fmt::format("cannot create the reference cache '{}': it vanished", dir.string()));
 }
 
-// The index: the names of the files the cache wrote or is writing. Missing or unreadable, it
-// names nothing (the cache then deletes nothing). Read and written under the exclusive lock.
+// The names the cache wrote or is writing (none if unreadable); under the exclusive lock.
 std::set<std::string> read_index(int dir_fd) {
   std::set<std::string> names;
-  const FileBytes index = read_cache_file(dir_fd, std::string(k_index_name), 1 << 20);
-  if (!index.bytes) return names;
-  std::size_t start = 0;
-  for (std::size_t end; (end = index.bytes->find('\n', start)) != std::string::npos; start = end + 1) {
-    std::string name = index.bytes->substr(start, end - start);
+  std::istringstream lines(read_cache_file(dir_fd, std::string(k_index_name), 1 << 20).bytes.value_or(""));
+  for (std::string name; std::getline(lines, name);)
     if (!name.empty() && name.find('/') == std::string::npos && name != "." && name != "..")
-      names.insert(std::move(name));
-  }
+      names.insert(name);
   return names;
 }
 
-// Writes each file through a new temporary (io/exclusive_file.hpp), every one created and
-// written before any is renamed: a failure to make one (EMFILE, a full disk) changes no file,
-// and only our temporaries are then removed. With `index`, the temporaries are named in it
-// first (a killed writer's are then known as ours). Throws IoError naming the file.
+// Writes each file through a new temporary, all made and written before any is renamed: a
+// failure (EMFILE, a full disk) changes no file and removes only our temporaries. With
+// `index`, the temporaries are named in it first. Throws IoError naming the file.
 void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
                  std::set<std::string>* index) {
   std::vector<NewFile> temporaries;
@@ -295,30 +287,14 @@ void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files
                               failure.message()));
 }
 
-// Whether `name` is a regular file of ours with one link, open-checked as `fd` (-1 when not).
-int open_own_file(int dir_fd, const std::string& name) {
-  struct stat before {}, opened {};
-  if (::fstatat(dir_fd, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0 ||
-      !S_ISREG(before.st_mode) || before.st_uid != ::geteuid() || before.st_nlink != 1)
-    return -1;
-  const int fd = ::openat(dir_fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (fd >= 0 && (::fstat(fd, &opened) != 0 || opened.st_ino != before.st_ino ||
-                  opened.st_dev != before.st_dev)) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
-}
-
 bool missing(int dir_fd, const std::string& name) {
   struct stat status {};
   return ::fstatat(dir_fd, name.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT;
 }
 
 // Removes what killed writers left, and only that: files the index names, regular and ours,
-// that are a temporary whose lock is free (its writer is gone, in whatever PID namespace or
-// machine it ran: a live writer holds the lock) or a PFM whose JSON is missing (a writer killed
-// between its two renames). Any error (EMFILE, EIO) leaves the file. Under the exclusive lock.
+// that are a temporary whose lock is free (a live writer in any PID namespace holds it) or a
+// PFM without its JSON. Any error (EMFILE, EIO) leaves the file.
 void remove_leftovers(const CacheFolder& folder) {
   const FolderLock lock(folder.fd(), LOCK_EX);
   if (!lock.held()) return;
@@ -331,7 +307,8 @@ void remove_leftovers(const CacheFolder& folder) {
                             missing(folder.fd(), name.substr(0, name.size() - 4) + ".json");
     bool removed = false;
     if (temporary || orphan_pfm) {
-      const int fd = open_own_file(folder.fd(), name);
+      std::string problem;
+      const int fd = open_own_file(folder.fd(), name, std::numeric_limits<off_t>::max(), problem, true);
       if (fd >= 0 && (orphan_pfm || ::flock(fd, LOCK_EX | LOCK_NB) == 0))
         removed = ::unlinkat(folder.fd(), name.c_str(), 0) == 0;
       if (fd >= 0) ::close(fd);
@@ -347,8 +324,7 @@ void remove_leftovers(const CacheFolder& folder) {
   }
 }
 
-// The checksum of the PFM its description records: FNV-1a, 64 bits. It tells a PFM from
-// another writer's or a spoiled one; nothing here needs a cryptographic hash.
+// FNV-1a, 64 bits: it tells a PFM from another writer's or a spoiled one (no attacker here).
 std::string checksum(std::string_view bytes) {
   std::uint64_t hash = 0xcbf29ce484222325ull;  // the offset basis
   for (const unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;  // the prime
@@ -361,19 +337,14 @@ std::size_t expected_pfm_bytes(const ReferenceSpec& spec) {
          static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 12;
 }
 
-// A description's JSON is a few hundred bytes; 64 KiB bounds what a reader takes in.
-constexpr off_t k_largest_description = 64 * 1024;
-
-// The cached reference, or why it cannot be used ("" when there is none or its settings are
-// other than the spec's: a normal miss). Checked in order: the JSON (a regular file, its
-// settings, its record of the PFM), the PFM's size before it is read, its checksum, then every
-// value finite and non-negative.
+// The cached reference, or why it cannot be used ("" for a normal miss). A JSON is a few
+// hundred bytes: 64 KiB bounds what is read.
 std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
                                                  const ReferenceSpec& spec) {
   const std::string stem = reference_stem(spec);
   const std::string json_name = stem + ".json", pfm_name = stem + ".pfm";
   const FolderLock lock(folder.fd(), LOCK_SH);
-  FileBytes json_bytes = read_cache_file(folder.fd(), json_name, k_largest_description);
+  FileBytes json_bytes = read_cache_file(folder.fd(), json_name, 64 * 1024);
   if (!json_bytes.bytes) return json_bytes.problem == "missing" ? "" : json_bytes.problem;
   nlohmann::ordered_json info;
   try {
@@ -494,18 +465,10 @@ fs::path reference_folder(const fs::path& flag) {
 }
 
 void check_reference_folder(const fs::path& dir, const fs::path& out) {
-  // The run replaces --out as a whole: a cache inside it would be lost (or block the swap), and
-  // a run inside the cache would fill it with files it does not own.
-  const auto resolved = [](const fs::path& path) {  // links and `..` resolved, as far as it exists
-    std::error_code ec;
-    return fs::weakly_canonical(fs::absolute(path, ec), ec).lexically_normal();
-  };
-  const auto inside = [](const fs::path& inner, const fs::path& outer) {
-    const auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-    return o == outer.end() || (std::next(o) == outer.end() && o->empty());  // "a/" in "a"
-  };
+  // Each run replaces --out whole: a cache inside it would be lost, a run inside the cache
+  // would fill it with files it does not own.
   const fs::path cache = resolved(dir), run = resolved(out);
-  if (!out.empty() && (inside(cache, run) || inside(run, cache)))
+  if (!out.empty() && (is_within(cache, run) || is_within(run, cache)))
     throw UsageError(fmt::format("--reference-dir: the reference cache '{}' and --out '{}' may "
                                  "not lie inside one another (each run replaces --out); give a "
                                  "cache folder outside --out",
@@ -526,9 +489,8 @@ Reference load_or_render_reference(const fs::path& dir, const ReferenceSpec& spe
   Reference r = render_reference(spec);
   const CacheFolder folder = create_cache_folder(dir);
   const std::string pfm = encode_pfm(r.image);
-  // The description is written last and records the PFM's size and checksum: a reader that
-  // finds them disagreeing (a writer killed between the two, or two writers crossing) renders
-  // again.
+  // Written last, the description records the PFM's size and checksum: a reader finding them
+  // disagreeing (a writer killed between the two, two writers crossing) renders again.
   nlohmann::ordered_json description = r.info;
   description["pfm"] = {{"bytes", pfm.size()}, {"fnv1a64", checksum(pfm)}};
   const std::string json = description.dump(2) + "\n", stem = reference_stem(spec);

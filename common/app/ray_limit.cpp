@@ -1,10 +1,10 @@
-#include "io/ray_limit.hpp"
+#include "app/ray_limit.hpp"
 
 #include <string>
 
 #include <fmt/format.h>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 
 namespace mcrt {
 
@@ -29,8 +29,7 @@ void check_furnace_albedo(double albedo) {
                      "is infinite");
 }
 
-// One line under 200 characters besides the program's name: what `counted` names is in the
-// chapter's source and docs, not in the message.
+// One line under 200 characters: what `counted` names is in the chapter's docs, not here.
 void check_ray_limit(const RayWork& work, double limit, std::string_view flags, int threads,
                      std::string_view remedy) {
   if (work.predicted_rays <= limit) return;

@@ -1,8 +1,8 @@
-#include "io/work_limit.hpp"
+#include "app/work_limit.hpp"
 
 #include <fmt/format.h>
 
-#include "io/usage_error.hpp"
+#include "app/usage_error.hpp"
 
 namespace mcrt {
 

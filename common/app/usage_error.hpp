@@ -1,6 +1,5 @@
 #pragma once
-// The error of a request that parses but cannot be done: exit code 2. Its own header, so the
-// files that only refuse work need not include CLI11 (about 7 s of compile time each).
+// Its own header, so the files that only refuse work need not include CLI11.
 
 #include <stdexcept>
 

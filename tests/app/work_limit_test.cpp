@@ -1,4 +1,4 @@
-// Refusing work up front (common/io/ray_limit.hpp, common/io/work_limit.hpp): the limit is
+// Refusing work up front (common/app/ray_limit.hpp, common/app/work_limit.hpp): the limit is
 // inclusive and exact, and the refusal is one line naming the flags, the predicted amount, the
 // limit and the remedy. The chapters' tests check that their runs are refused; these check where
 // the line between refused and accepted falls, which a chapter's far-over-the-limit runs cannot.
@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/cli.hpp"
-#include "io/ray_limit.hpp"
-#include "io/work_limit.hpp"
+#include "app/cli.hpp"
+#include "app/ray_limit.hpp"
+#include "app/work_limit.hpp"
 #include "support/exception_message.hpp"
 
 namespace {
