@@ -81,6 +81,41 @@ TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
                    "your error falls as h, not h^2");
 }
 
+// Monte Carlo checked as Monte Carlo: answers that draw no random number are unbiased to
+// within far less than the mean's test can see, and fail on their spread across seeds.
+TEST_F(Diagnoses, A1DiskNearestMultipleOfFourOverN) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_nearest_multiple_of_four_over_n)),
+                   "zero spread: not a Monte Carlo estimate. 200 runs of N = 1000 points at different seeds all gave 3.14");
+}
+
+TEST_F(Diagnoses, A1BallExpectedCount) {
+  const TaskResult r = check_ball_estimator(with_ball(ball_volume_expected_count), {2, 3, 5});
+  expect_diagnosis(r, "zero spread: not a Monte Carlo estimate");
+  EXPECT_EQ(r.message.find("your mean is"), std::string::npos) << "the mean is right: no factor to blame\n" << r.message;
+}
+
+TEST_F(Diagnoses, A1MonteCarloMidpointRule) {
+  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                     return monte_carlo_midpoint_rule(f, s, n, rng);
+                   })),
+                   "zero spread: not a Monte Carlo estimate");
+}
+
+TEST_F(Diagnoses, A1DiskFourTimesThePoints) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_four_times_the_points)),
+                   "too small spread: not a Monte Carlo estimate of N independent points");
+}
+
+TEST_F(Diagnoses, A1DiskIdenticalLanes) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_identical_lanes)), "too large spread");
+}
+
+TEST_F(Diagnoses, A1SolutionPassesItsSpread) {
+  EXPECT_TRUE(check_disk_estimator(with_disk(student_disk())).passed);
+  EXPECT_TRUE(check_ball_estimator(with_ball(student_ball()), {2, 3, 5}).passed);
+  EXPECT_TRUE(check_basic_estimator(with_basic(student_basic())).passed);
+}
+
 double cosine_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
 double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 double disk_density(const Vec2&) { return uniform_disk_pdf(); }
