@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>  // the a1 kit's stub of the count throws
 #include <vector>
 
 #if defined(__x86_64__)
