@@ -124,6 +124,9 @@ inline std::vector<MeasuredBug> known_bugs() {
   bugs.push_back(sampler_bug("a2_uniform_hemisphere_is_cosine", "A2UniformHemisphereThatIsCosine",
                              "a2_uniform_hemisphere", sample_cosine_hemisphere, uniform_density,
                              sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_uniform_hemisphere_in_angle", "A2UniformHemisphereUniformInAngle",
+                             "a2_uniform_hemisphere", hemisphere_uniform_in_angle, uniform_density,
+                             sampler_hemisphere_binning()));
   bugs.push_back(sampler_bug("a2_cosine_hemisphere_is_uniform", "A2CosineHemisphereThatIsUniform",
                              "a2_cosine_hemisphere", sample_uniform_hemisphere, cosine_density,
                              sampler_hemisphere_binning()));
@@ -202,6 +205,12 @@ inline std::vector<MeasuredBug> known_bugs() {
                                  with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)));
                            }));
   // a5.3
+  bugs.push_back(exact_bug("a5_nee_cut_after_light_sample", "A5NeeCutAfterTheLightSample", "a5_nee_furnace_exact", [] {
+    return check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample)));
+  }));
+  bugs.push_back(exact_bug("a5_nee_without_cos_y", "A5NeeWithoutCosThetaY", "a5_nee_furnace_exact", [] {
+    return check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_cos_y)));
+  }));
   const auto nee_regions = [&](const char* name, const char* test, auto nee, int parts, bool expected) {
     add(name, test, parts == 1 ? "a5_nee_regions" : "a5_nee_two_lights",
         [nee, parts](std::uint64_t seed) {

@@ -139,6 +139,21 @@ TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
                    "at r = u0");
 }
 
+// theta uniform in angle: named as such (before, only p-values and the worst "u, v" cells)
+TEST_F(Diagnoses, A2UniformHemisphereUniformInAngle) {
+  expect_diagnosis(check_sampler(each(hemisphere_uniform_in_angle), each(uniform_density), sampler_hemisphere_binning(),
+                                 SamplerKind::uniform_hemisphere, "diagnosis_hemisphere_in_angle"),
+                   "observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are uniform "
+                   "in the angle theta (theta = pi/2 u0), not in solid angle");
+}
+
+TEST_F(Diagnoses, A2UniformSphereUniformInAngle) {
+  expect_diagnosis(check_sampler(each(sphere_uniform_in_angle), each([](const Vec3&) { return uniform_sphere_pdf(); }),
+                                 sphere_binning(21, 21), SamplerKind::uniform_sphere, "diagnosis_sphere_in_angle"),
+                   "observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in the angle "
+                   "theta (theta = pi u0), not in solid angle");
+}
+
 TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
   // the sampler is right; its chi-square fails only through the pdf, and says so
   expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(cosine_pdf_times_two), sampler_hemisphere_binning(),
@@ -570,6 +585,46 @@ TEST_F(Diagnoses, A5NeeEmissionTwice) {
   expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
                    "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
   EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_emission_twice))).passed);
+}
+
+// Named by the furnace, and never blamed on the light pick's 1/N or a pdf off by 2 by the
+// two-lights and cap tests (before, both did).
+void expect_no_misleading_nee_diagnosis(const TaskResult& r) {
+  EXPECT_FALSE(r.passed) << r.message;
+  EXPECT_EQ(r.message.find("1/N_lights of picking"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("factor of 2"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("do you sample only the cap"), std::string::npos) << r.message;
+}
+
+TEST_F(Diagnoses, A5NeeEmissionAtEveryVertexIsNotBlamedOnThePdf) {
+  const auto nee = with_nee(with_path_end(nee_emission_twice));
+  const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
+  expect_no_misleading_nee_diagnosis(two);
+  expect_diagnosis(two, "the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here");
+  expect_no_misleading_nee_diagnosis(cap);
+  expect_diagnosis(cap, "the NEE furnace's exact paths are wrong too");
+}
+
+TEST_F(Diagnoses, A5NeeWithoutCosThetaY) {
+  const auto nee = with_nee(with_path_end(nee_without_cos_y));
+  const TaskResult furnace = check_nee_furnace_is_exact(nee);
+  expect_diagnosis(furnace, "direct light is 1.");
+  EXPECT_NE(furnace.message.find("varies wildly from path to path, as 1 / cos(theta_y) does (its mean here is 2); every "
+                                 "light sample here should give exactly a Le: is cos(theta_y), the cosine at the light, "
+                                 "left out of p_w = p_A r^2 / cos(theta_y)?"), std::string::npos) << furnace.message;
+  const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
+  expect_no_misleading_nee_diagnosis(two);
+  expect_diagnosis(two, "the box with one light fails too");
+  if (!cap.passed) {  // the wall sees the light almost head-on: cos(theta_y) near 1 may hide it
+    EXPECT_EQ(cap.message.find("factor of 2"), std::string::npos) << cap.message;
+    expect_diagnosis(cap, "the NEE furnace's exact paths are wrong too");
+  }
+}
+
+TEST_F(Diagnoses, A5NeeCutAfterTheLightSample) {
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample))),
+                   "every path returns Le (1 + a + ... + a^(k+1)) = 1.937500, one light sample too many: is the path "
+                   "cut at depth k only after the light sample of its last vertex?");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {

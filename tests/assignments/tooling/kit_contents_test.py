@@ -119,6 +119,12 @@ class KitContents(unittest.TestCase):
                     text = kit_text(f)
                     self.assertEqual(stub in text, n == 1, f)
                     self.assertEqual(answer in text, n > 1, f)
+                # the comments above a2's stubs state the contract, not the formula (issue #44:
+                # the a2 kit's said z = 1 - 2u0 and r = sqrt(u0))
+                formulas = ("1 - 2 u0", "sqrt(u0)", "cos(theta) = u0", "1/(2 pi)", "1/(4 pi)", "cos(theta)/pi", "1/pi")
+                for f in ("common/sampling/hemisphere.hpp", "common/sampling/sphere.hpp", "common/sampling/plane.hpp"):
+                    found = [x for x in formulas if x in kit_text(f)]
+                    self.assertEqual(bool(found), n > 2, f"{f}: {found}")
 
 
 if __name__ == "__main__":
