@@ -93,6 +93,29 @@ inline std::vector<MeasuredBug> known_bugs() {
                                    }),
                                    seed, e);
   });
+  // a1's answers that are not Monte Carlo (zero spread) and a spread too small and too large
+  add("a1_disk_nearest_multiple_of_four_over_n", "A1DiskNearestMultipleOfFourOverN", "a1_disk", [](std::uint64_t seed) {
+    double a = 0.0;
+    return disk_p_value(with_disk(disk_area_nearest_multiple_of_four_over_n), seed, a);
+  });
+  add("a1_disk_four_times_the_points", "A1DiskFourTimesThePoints", "a1_disk", [](std::uint64_t seed) {
+    double a = 0.0;
+    return disk_p_value(with_disk(disk_area_four_times_the_points), seed, a);
+  });
+  add("a1_disk_identical_lanes", "A1DiskIdenticalLanes", "a1_disk", [](std::uint64_t seed) {
+    double a = 0.0;
+    return disk_p_value(with_disk(disk_area_identical_lanes), seed, a);
+  });
+  add("a1_ball_expected_count", "A1BallExpectedCount", "a1_ball", [](std::uint64_t seed) {
+    std::vector<double> sums;
+    return balls_p_value(with_ball(ball_volume_expected_count), {2, 3, 5}, seed, sums);
+  });
+  add("a1_basic_midpoint_rule", "A1MonteCarloMidpointRule", "a1_basic_estimator", [](std::uint64_t seed) {
+    EstimateAndError e;
+    return basic_estimator_p_value(
+        with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo_midpoint_rule(f, s, n, rng); }),
+        seed, e);
+  });
   bugs.push_back(exact_bug("a1_trapezoid_full_end_weights", "A1TrapezoidWithFullEndWeights", "a1_trapezoid", [] {
     return check_trapezoid(
         with_rule([](const auto&, const Segment&, std::uint64_t n) { return trapezoid_with_full_end_weights(Gaussian1D{}, n); }));
@@ -100,6 +123,9 @@ inline std::vector<MeasuredBug> known_bugs() {
   // a2
   bugs.push_back(sampler_bug("a2_uniform_hemisphere_is_cosine", "A2UniformHemisphereThatIsCosine",
                              "a2_uniform_hemisphere", sample_cosine_hemisphere, uniform_density,
+                             sampler_hemisphere_binning()));
+  bugs.push_back(sampler_bug("a2_uniform_hemisphere_in_angle", "A2UniformHemisphereUniformInAngle",
+                             "a2_uniform_hemisphere", hemisphere_uniform_in_angle, uniform_density,
                              sampler_hemisphere_binning()));
   bugs.push_back(sampler_bug("a2_cosine_hemisphere_is_uniform", "A2CosineHemisphereThatIsUniform",
                              "a2_cosine_hemisphere", sample_uniform_hemisphere, cosine_density,
@@ -179,6 +205,12 @@ inline std::vector<MeasuredBug> known_bugs() {
                                  with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf)));
                            }));
   // a5.3
+  bugs.push_back(exact_bug("a5_nee_cut_after_light_sample", "A5NeeCutAfterTheLightSample", "a5_nee_furnace_exact", [] {
+    return check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample)));
+  }));
+  bugs.push_back(exact_bug("a5_nee_without_cos_y", "A5NeeWithoutCosThetaY", "a5_nee_furnace_exact", [] {
+    return check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_cos_y)));
+  }));
   const auto nee_regions = [&](const char* name, const char* test, auto nee, int parts, bool expected) {
     add(name, test, parts == 1 ? "a5_nee_regions" : "a5_nee_two_lights",
         [nee, parts](std::uint64_t seed) {

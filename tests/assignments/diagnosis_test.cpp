@@ -81,6 +81,41 @@ TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
                    "your error falls as h, not h^2");
 }
 
+// Monte Carlo checked as Monte Carlo: answers that draw no random number are unbiased to
+// within far less than the mean's test can see, and fail on their spread across seeds.
+TEST_F(Diagnoses, A1DiskNearestMultipleOfFourOverN) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_nearest_multiple_of_four_over_n)),
+                   "zero spread: not a Monte Carlo estimate. 200 runs of N = 1000 points at different seeds all gave 3.14");
+}
+
+TEST_F(Diagnoses, A1BallExpectedCount) {
+  const TaskResult r = check_ball_estimator(with_ball(ball_volume_expected_count), {2, 3, 5});
+  expect_diagnosis(r, "zero spread: not a Monte Carlo estimate");
+  EXPECT_EQ(r.message.find("your mean is"), std::string::npos) << "the mean is right: no factor to blame\n" << r.message;
+}
+
+TEST_F(Diagnoses, A1MonteCarloMidpointRule) {
+  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                     return monte_carlo_midpoint_rule(f, s, n, rng);
+                   })),
+                   "zero spread: not a Monte Carlo estimate");
+}
+
+TEST_F(Diagnoses, A1DiskFourTimesThePoints) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_four_times_the_points)),
+                   "too small spread: not a Monte Carlo estimate of N independent points");
+}
+
+TEST_F(Diagnoses, A1DiskIdenticalLanes) {
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_identical_lanes)), "too large spread");
+}
+
+TEST_F(Diagnoses, A1SolutionPassesItsSpread) {
+  EXPECT_TRUE(check_disk_estimator(with_disk(student_disk())).passed);
+  EXPECT_TRUE(check_ball_estimator(with_ball(student_ball()), {2, 3, 5}).passed);
+  EXPECT_TRUE(check_basic_estimator(with_basic(student_basic())).passed);
+}
+
 double cosine_density(const Vec3& w) { return cosine_hemisphere_pdf(w.z); }
 double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 double disk_density(const Vec2&) { return uniform_disk_pdf(); }
@@ -102,6 +137,21 @@ TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
                                  SamplerKind::cosine_hemisphere, "diagnosis_cosine_radius_u"),
                    "half the expected samples near the horizon and too many near the pole: is the disk point "
                    "at r = u0");
+}
+
+// theta uniform in angle: named as such (before, only p-values and the worst "u, v" cells)
+TEST_F(Diagnoses, A2UniformHemisphereUniformInAngle) {
+  expect_diagnosis(check_sampler(each(hemisphere_uniform_in_angle), each(uniform_density), sampler_hemisphere_binning(),
+                                 SamplerKind::uniform_hemisphere, "diagnosis_hemisphere_in_angle"),
+                   "observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are uniform "
+                   "in the angle theta (theta = pi/2 u0), not in solid angle");
+}
+
+TEST_F(Diagnoses, A2UniformSphereUniformInAngle) {
+  expect_diagnosis(check_sampler(each(sphere_uniform_in_angle), each([](const Vec3&) { return uniform_sphere_pdf(); }),
+                                 sphere_binning(21, 21), SamplerKind::uniform_sphere, "diagnosis_sphere_in_angle"),
+                   "observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in the angle "
+                   "theta (theta = pi u0), not in solid angle");
 }
 
 TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
@@ -535,6 +585,46 @@ TEST_F(Diagnoses, A5NeeEmissionTwice) {
   expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
                    "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
   EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_emission_twice))).passed);
+}
+
+// Named by the furnace, and never blamed on the light pick's 1/N or a pdf off by 2 by the
+// two-lights and cap tests (before, both did).
+void expect_no_misleading_nee_diagnosis(const TaskResult& r) {
+  EXPECT_FALSE(r.passed) << r.message;
+  EXPECT_EQ(r.message.find("1/N_lights of picking"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("factor of 2"), std::string::npos) << r.message;
+  EXPECT_EQ(r.message.find("do you sample only the cap"), std::string::npos) << r.message;
+}
+
+TEST_F(Diagnoses, A5NeeEmissionAtEveryVertexIsNotBlamedOnThePdf) {
+  const auto nee = with_nee(with_path_end(nee_emission_twice));
+  const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
+  expect_no_misleading_nee_diagnosis(two);
+  expect_diagnosis(two, "the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here");
+  expect_no_misleading_nee_diagnosis(cap);
+  expect_diagnosis(cap, "the NEE furnace's exact paths are wrong too");
+}
+
+TEST_F(Diagnoses, A5NeeWithoutCosThetaY) {
+  const auto nee = with_nee(with_path_end(nee_without_cos_y));
+  const TaskResult furnace = check_nee_furnace_is_exact(nee);
+  expect_diagnosis(furnace, "direct light is 1.");
+  EXPECT_NE(furnace.message.find("varies wildly from path to path, as 1 / cos(theta_y) does (its mean here is 2); every "
+                                 "light sample here should give exactly a Le: is cos(theta_y), the cosine at the light, "
+                                 "left out of p_w = p_A r^2 / cos(theta_y)?"), std::string::npos) << furnace.message;
+  const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
+  expect_no_misleading_nee_diagnosis(two);
+  expect_diagnosis(two, "the box with one light fails too");
+  if (!cap.passed) {  // the wall sees the light almost head-on: cos(theta_y) near 1 may hide it
+    EXPECT_EQ(cap.message.find("factor of 2"), std::string::npos) << cap.message;
+    expect_diagnosis(cap, "the NEE furnace's exact paths are wrong too");
+  }
+}
+
+TEST_F(Diagnoses, A5NeeCutAfterTheLightSample) {
+  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample))),
+                   "every path returns Le (1 + a + ... + a^(k+1)) = 1.937500, one light sample too many: is the path "
+                   "cut at depth k only after the light sample of its last vertex?");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {

@@ -26,6 +26,8 @@ struct NeeMistake {
   bool cap_only = false;  ///< a sphere light sampled on its cap from everywhere (the cap is
                           ///< all the room sees, but not all a point outside the room sees)
   bool one_light_pdf = false;  ///< the pick of one of N lights left out of the pdf (no 1/N)
+  bool no_cos_y = false;        ///< p_w taken as p_A r^2: the light's cos(theta_y) left out
+  bool cut_after_light = false;  ///< the depth cut checked after the light sample, not before
 };
 
 /// A light sample with the mistake's way of tracing the shadow ray and converting the pdf.
@@ -51,7 +53,7 @@ inline DirectSample wrong_direct_light(const Scene& scene, const Hit& hit, Rng& 
                              : scene.emitted(e, y.normal, -d.wi);
   if (d.cos_x <= 0.0 || d.le == Color(0.0)) return d;
   const double p_area = m.one_light_pdf ? y.pdf_area : y.pdf_area / static_cast<double>(n);
-  d.pdf_light = m.no_jacobian ? p_area : area_to_solid_angle_pdf(p_area, distance, cos_y);
+  d.pdf_light = m.no_jacobian ? p_area : area_to_solid_angle_pdf(p_area, distance, m.no_cos_y ? 1.0 : cos_y);
   ++count.rays;
   const double end = m.shadow_hits_light ? distance * (1.0 + k_shadow_ray_shortening)
                                          : distance * (1.0 - k_shadow_ray_shortening);
@@ -70,8 +72,10 @@ inline Color wrong_nee_radiance(const Scene& scene, Ray ray, int max_depth, Rng&
     if (!hit) break;
     const Material& material = scene.material(*hit);
     if (bounce == 0 || m.emission_twice) radiance += beta * material.emission;
-    if (end.cut_at(bounce)) break;
-    if (bounce >= end.roulette.min_depth) {
+    if (!m.cut_after_light && end.cut_at(bounce)) break;
+    // (cut after the light sample: no roulette at the last vertex, as under the grader's
+    // PathEnd, which has none, so that only the light sample is one too many)
+    if (bounce >= end.roulette.min_depth && !(m.cut_after_light && end.cut_at(bounce))) {
       const double q = survival_probability(end.roulette, beta);
       if (rng.uniform() >= q) break;
       beta /= q;
@@ -79,6 +83,7 @@ inline Color wrong_nee_radiance(const Scene& scene, Ray ray, int max_depth, Rng&
     const DirectSample light = wrong_direct_light(scene, *hit, rng, count, m);
     if (light.contributes())
       radiance += beta * material.brdf() * light.le * light.cos_x / light.pdf_light;
+    if (m.cut_after_light && end.cut_at(bounce)) break;
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     if (!(local.z > 0.0)) break;
     beta *= material.albedo;
@@ -102,6 +107,18 @@ inline Color nee_emission_twice(const Scene& scene, Ray ray, int depth, Rng& rng
 inline Color nee_shadow_ray_hits_light(const Scene& scene, Ray ray, int depth, Rng& rng,
                                        RayCount& c) {
   return wrong_nee_radiance(scene, ray, depth, rng, c, {.shadow_hits_light = true});
+}
+
+/// Wrong: the light's cos(theta_y) left out of p_w = p_A r^2 / cos(theta_y): every light sample
+/// is weighted by an extra cos(theta_y) <= 1, darker the more obliquely the light is seen.
+inline Color nee_without_cos_y(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
+  return wrong_nee_radiance(scene, ray, depth, rng, c, {.no_cos_y = true});
+}
+
+/// Wrong: the path cut at depth k after the light sample of its last vertex, not before: that
+/// sample's light has travelled k + 1 segments, one bounce more than the depth allows.
+inline Color nee_cut_after_light_sample(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
+  return wrong_nee_radiance(scene, ray, depth, rng, c, {.cut_after_light = true});
 }
 
 /// Wrong: a one-sided light lights what is behind it (|cos(theta_y)|, Le of its back).

@@ -58,6 +58,21 @@ inline double phong_pdf_mixed_half_and_half(const Phong& material, const Vec3& w
          0.5 * std::max(0.0, glm::dot(wi, n)) * k_inv_pi;
 }
 
+/// Wrong: the hemisphere sampled uniform in angle, theta = pi/2 u0: the density per steradian
+/// is 1 / (pi^2 sin(theta)), 2 / (pi sin(theta)) times the uniform one: too few directions near
+/// the horizon, ever more towards the pole.
+inline Vec3 hemisphere_uniform_in_angle(Vec2 u) {
+  const double theta = 0.5 * k_pi * u.x, phi = k_two_pi * u.y;
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+/// Wrong: the sphere sampled uniform in angle, theta = pi u0: 2 / (pi sin(theta)) times the
+/// uniform density, crowding both poles.
+inline Vec3 sphere_uniform_in_angle(Vec2 u) {
+  const double theta = k_pi * u.x, phi = k_two_pi * u.y;
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
 /// Wrong: the cone sampled with cos(theta) = u0 cos(theta_max), which runs from 0 to
 /// cos(theta_max): every direction lies outside the cone (between it and the horizon).
 inline Vec3 cone_with_cos_u_times_max(Vec2 u, double cos_theta_max) {

@@ -67,6 +67,24 @@ bool bands_follow(const std::vector<double>& ratio, double low, double high, Sha
   return true;
 }
 
+/// Whether ratio[j] stays within 12% of band_mean(low_j, high_j), the shape's exact mean over
+/// band j (for a shape too steep to take at the band's centre).
+template <class BandMean>
+bool bands_match(const std::vector<double>& ratio, double low, double high, BandMean&& band_mean) {
+  const double width = (high - low) / static_cast<double>(ratio.size());
+  for (std::size_t j = 0; j < ratio.size(); ++j) {
+    const double a = low + static_cast<double>(j) * width, s = band_mean(a, a + width);
+    if (std::abs(ratio[j] - s) > 0.12 * s) return false;
+  }
+  return true;
+}
+
+/// theta uniform in angle, cos(theta) = c: observed / expected = 2 / (pi sqrt(1 - c^2)) against
+/// any density uniform in c, whose mean over [c0, c1] is (2/pi) (asin c1 - asin c0) / (c1 - c0).
+inline double uniform_in_angle_band_mean(double c0, double c1) {
+  return 2.0 / k_pi * (std::asin(std::min(c1, 1.0)) - std::asin(std::max(c0, -1.0))) / (c1 - c0);
+}
+
 /// The shape of the observed / expected ratios says which distribution the samples follow.
 inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, const Grid& grid) {
   const bool disk = kind == SamplerKind::unit_disk;
@@ -80,8 +98,12 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
     case SamplerKind::uniform_hemisphere:
       if (bands_follow(ratio, 0.0, 1.0, [](double c) { return 2.0 * c; }))
         return diagnosis("observed/expected ~ 2 cos(theta): your samples look cosine-distributed, not uniform");
+      if (bands_match(ratio, 0.0, 1.0, uniform_in_angle_band_mean))
+        return diagnosis("observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are "
+                         "uniform in the angle theta (theta = pi/2 u0), not in solid angle. The area of a zone of the "
+                         "hemisphere is linear in cos(theta): uniform in solid angle means cos(theta) uniform");
       if (ratio.back() > 1.5 && ratio.front() < 0.5)
-        return diagnosis("too many samples near the pole: is cos(theta) drawn as sqrt(u) or is theta = pi/2 u uniform in angle?");
+        return diagnosis("too many samples near the pole: is cos(theta) drawn as sqrt(u)?");
       break;
     case SamplerKind::cosine_hemisphere:
       if (bands_follow(ratio, 0.0, 1.0, [](double c) { return 0.5 / c; }))
@@ -94,6 +116,10 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
     case SamplerKind::uniform_sphere:
       if (ratio.front() < 0.05 && ratio.back() > 1.5)
         return diagnosis("no samples below the equator: is z drawn in [0, 1] instead of [-1, 1]?");
+      if (bands_match(ratio, -1.0, 1.0, uniform_in_angle_band_mean))
+        return diagnosis("observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in "
+                         "the angle theta (theta = pi u0), not in solid angle, and crowd both poles. The area of a zone "
+                         "of the sphere is linear in z: uniform in solid angle means z uniform");
       break;
     case SamplerKind::unit_disk:
       if (ratio.front() > 1.5 && ratio.back() < 0.8)

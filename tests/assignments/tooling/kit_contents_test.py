@@ -92,6 +92,40 @@ class KitContents(unittest.TestCase):
         with open(os.path.join(self.tree, "kit4/.assignment")) as f:
             self.assertEqual(set(json.load(f)["stubbed"]), make.stubbed_tasks("a4", regions))
 
+    def test_kit_ships_no_helper_that_computes_a_task(self):
+        # issue #44: an a1 submission scored full marks by calling estimate_disk_area_fast and
+        # the Box versions of monte_carlo and trapezoid (a Segment is a 1-D Box); the a1, a2 and
+        # a5 kits held a reference tracer with cosine bounces and roulette and a reference
+        # renderer with a2.2's and a2.4's samplers written out.
+        make = tree_copy.load_script(os.path.join(self.tree, "scripts/make-assignment"))
+        files, sources, regions = make.read_tree()
+        references = ("tests/render/scene_sphere_box_reference.hpp", "tests/render/path_tracer_checks.cpp")
+        for a in ASSIGNMENTS:
+            with self.subTest(kit=a):
+                n = int(a[1:])
+                stubbed = make.stubbed_tasks(a, regions)
+                withheld = make.withheld_files(files, stubbed)
+                for f in references:
+                    self.assertEqual(f in withheld, n <= 5, f)
+
+                def kit_text(f):
+                    return "\n".join(make.rewrite(sources[f], [r for r in regions if r["file"] == f], stubbed))
+                helpers = {  # file: (what its stub says, a line of the answer it must not hold)
+                    "common/integration/disk_counter.cpp": ("withheld from this kit: count_in_disk", "inside_unit_disk("),
+                    "common/integration/monte_carlo.hpp": ("withheld from this kit: monte_carlo on a Box", "rng.uniform()"),
+                    "common/integration/quadrature.hpp": ("withheld from this kit: trapezoid on a Box", "end_weight("),
+                }
+                for f, (stub, answer) in helpers.items():
+                    text = kit_text(f)
+                    self.assertEqual(stub in text, n == 1, f)
+                    self.assertEqual(answer in text, n > 1, f)
+                # the comments above a2's stubs state the contract, not the formula (issue #44:
+                # the a2 kit's said z = 1 - 2u0 and r = sqrt(u0))
+                formulas = ("1 - 2 u0", "sqrt(u0)", "cos(theta) = u0", "1/(2 pi)", "1/(4 pi)", "cos(theta)/pi", "1/pi")
+                for f in ("common/sampling/hemisphere.hpp", "common/sampling/sphere.hpp", "common/sampling/plane.hpp"):
+                    found = [x for x in formulas if x in kit_text(f)]
+                    self.assertEqual(bool(found), n > 2, f"{f}: {found}")
+
 
 if __name__ == "__main__":
     unittest.main()
