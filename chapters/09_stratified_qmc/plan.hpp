@@ -80,7 +80,7 @@ struct Plan {
 // The dimension study's point sets: random, Latin hypercube and scrambled Sobol'.
 inline constexpr Sampler k_dimension_samplers[] = {Sampler::independent, Sampler::latin_hypercube,
                                                    Sampler::sobol_owen};
-inline constexpr double k_max_coordinates = 2e11;  // about 20 minutes on 2 cores
+inline constexpr double k_max_coordinates = 7e10;  // about 20 minutes on 2 cores (6e7 a second)
 
 // 16, 32, ..., max_n (a power of two).
 inline std::vector<std::uint32_t> powers_of_two(std::uint32_t max_n) {
@@ -115,17 +115,18 @@ inline Plan make_plan(std::uint32_t max_n, std::uint32_t budget, const std::vect
   plan.series.push_back({Study::smooth, Sampler::sobol_owen, 2, false, odd_sizes(max_n)});
   for (Sampler sampler : k_dimension_samplers)  // by sampler, then k: each a line of the plot
     for (int k : dims) plan.series.push_back({Study::dimension, sampler, k, true, {budget}});
-  for (std::size_t s = 0; s < plan.series.size(); ++s)
-    for (std::size_t i = 0; i < plan.series[s].sizes.size(); ++i) {
-      const std::uint32_t n = plan.series[s].sizes[i];
-      for (int t = 0; t < trials; ++t)
-        plan.tasks.push_back({s, i, static_cast<std::uint32_t>(t), n});
+  for (const Series& series : plan.series)  // the work first: refused before any task is made
+    for (std::uint32_t n : series.sizes) {
       plan.points += static_cast<double>(trials) * n;
-      plan.coordinates += static_cast<double>(trials) * n * plan.series[s].dims;
+      plan.coordinates += static_cast<double>(trials) * n * series.dims;
     }
   check_work_limit({plan.coordinates, "coordinates", "--trials x N x k over the three studies"},
                    k_max_coordinates, "--max-n, --budget, --dims and --trials",
                    "lower one of them");
+  for (std::size_t s = 0; s < plan.series.size(); ++s)
+    for (std::size_t i = 0; i < plan.series[s].sizes.size(); ++i)
+      for (int t = 0; t < trials; ++t)
+        plan.tasks.push_back({s, i, static_cast<std::uint32_t>(t), plan.series[s].sizes[i]});
   const auto cost = [&](std::size_t i) {
     return std::uint64_t{plan.tasks[i].n} * plan.series[plan.tasks[i].series].dims;
   };
