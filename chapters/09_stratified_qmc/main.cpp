@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
                     "N of the dimension study at every k, a power of "
                     "two",
                     std::uint64_t{16}, std::uint64_t{1} << 24);
-  add_list_option(app, "--dims", o.dims, "Dimensions k of the dimension study, e.g. 1,2,4,8", 1,
+  add_list_option(app, "--dims", o.dims, "Dimensions D of the dimension study, e.g. 1,2,4,8", 1,
                   k_max_box_dims);
   add_number_option(app, "--picture-points", o.picture_points,
                     "Points of each set drawn in point_sets.png", 1, 4096);

@@ -67,24 +67,24 @@ inline Plot error_plot(const std::string& study, const Table& errors, const Tabl
 inline Plot dimension_plot(std::uint32_t budget, const Table& dimension) {
   Plot plot;
   plot.name = "error_vs_dimension";
-  plot.title = fmt::format("e^{{-|x|^2}} on [0,1]^k at N = {}: relative error against k", budget);
-  plot.x_label = "dimension k";
+  plot.title = fmt::format("e^{{-|x|^2}} on [0,1]^D at N = {}: relative error against D", budget);
+  plot.x_label = "dimension D";
   plot.y_label = "relative error (rmse / I)";
   plot.log_y = true;
   plot.width = 1000;
   plot.height = 650;
   plot.settings = "set key outside right top\nset autoscale xfix\nset xtics 1\n";
-  plot.x_values = dimension.numbers("k");
+  plot.x_values = dimension.numbers("dims");
   plot.y_values = dimension.numbers("relative_error");
   const auto rows = [](const char* method, const char* value) {
-    return fmt::format("(strcol(\"method\") eq '{}' ? column(\"k\") : 1/0):{}", method, value);
+    return fmt::format("(strcol(\"method\") eq '{}' ? column(\"dims\") : 1/0):{}", method, value);
   };
   plot.plot = fmt::format(
       "plot 'dimension.csv' using {} with linespoints pt 7 lc rgb '{}' title 'independent', \\\n"
       "  '' using {} with lines dt 2 lw 2 lc rgb '{}' title 'theory sigma/(I sqrt N)', \\\n"
       "  '' using {} with linespoints pt 5 lc rgb '{}' title 'Latin hypercube', \\\n"
       "  '' using {} with linespoints pt 9 lc rgb '{}' title \"Sobol' (Owen)\", \\\n"
-      "  '' using {} with linespoints pt 11 lc rgb '#1f77b4' title 'trapezoid, floor(N^{{1/k}}) per axis'",
+      "  '' using {} with linespoints pt 11 lc rgb '#1f77b4' title 'trapezoid, floor(N^{{1/D}}) per axis'",
       rows("independent", "\"relative_error\""), colour_of("independent"),
       rows("independent", "(column(\"theory_rmse\") / column(\"reference\"))"),
       colour_of("independent"), rows("latin_hypercube", "\"relative_error\""),

@@ -26,10 +26,10 @@ inline double rmse_at_largest_n(const Table& errors, const std::string& label) {
 // Per k, independent points' rms error over each other method's: how many times better.
 inline Json gains(const Table& dimension) {
   Json gains = Json::array();
-  const std::vector<double> k = dimension.numbers("k"), rmse = dimension.numbers("rmse");
+  const std::vector<double> k = dimension.numbers("dims"), rmse = dimension.numbers("rmse");
   for (std::size_t r = 0; r < dimension.size(); ++r) {
     if (dimension.at(r, "method").csv(0) != "independent") continue;
-    Json row = {{"k", static_cast<int>(k[r])}};
+    Json row = {{"dims", static_cast<int>(k[r])}};
     for (std::size_t o = 0; o < dimension.size(); ++o)
       if (k[o] == k[r] && o != r) row[dimension.at(o, "method").csv(0)] = rmse[r] / rmse[o];
     gains.push_back(row);
@@ -74,11 +74,11 @@ inline Json timings_of(const Chapter& chapter, const auto& o, const Plan& plan, 
 
 inline void print_report(const Chapter& chapter, const auto& o, const Plan& plan, const Tables& t,
                          double seconds) {
-  fmt::print("{}  N = 16..{}  {} randomisations  budget {} at k = {}  {} threads\n{}", chapter.name,
+  fmt::print("{}  N = 16..{}  {} randomisations  budget {} at D = {}  {} threads\n{}", chapter.name,
              o.max_n, o.trials, o.budget, fmt::join(o.dims, ","), o.common.threads,
              t.slopes.console());
   fmt::print("  at N = {}:\n{}", o.budget,
-             t.dimension.console({"k", "method", "evaluations", "rmse", "relative_error"}));
+             t.dimension.console({"dims", "method", "evaluations", "rmse", "relative_error"}));
   fmt::print(
       "  {:.3g} points in {:.2f} s\n  wrote {}/{{disk,smooth,slopes,dimension,points}}.csv, "
       "plots, summary.json, timings.json\n",

@@ -36,7 +36,7 @@ inline Table slopes_table() {
 }
 
 inline Table dimension_table() {
-  return Table({integer("k"), text("method"), integer("evaluations"), integer("points_per_axis"),
+  return Table({integer("dims"), text("method"), integer("evaluations"), integer("points_per_axis"),
                 real("mean_estimate", 17, Column::general), real("reference", 17, Column::general),
                 real("rmse"), real("relative_error"), real("theory_rmse")});
 }

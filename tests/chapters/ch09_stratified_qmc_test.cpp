@@ -82,13 +82,13 @@ TEST(Ch09Test, WritesTablesSummaryAndPlots) {
   // dimension.csv: per method, a row per k; the trapezoid rule on floor(256^(1/k)) per axis.
   const CsvFile dimension(dir / "dimension.csv");
   EXPECT_EQ(dimension.header(),
-            (std::vector<std::string>{"k", "method", "evaluations", "points_per_axis",
+            (std::vector<std::string>{"dims", "method", "evaluations", "points_per_axis",
                                       "mean_estimate", "reference", "rmse", "relative_error",
                                       "theory_rmse"}));
   ASSERT_EQ(dimension.size(), 12u);
   std::map<std::string, std::vector<double>> ks;
   for (std::size_t r = 0; r < dimension.size(); ++r) {
-    const int k = static_cast<int>(dimension.number(r, "k"));
+    const int k = static_cast<int>(dimension.number(r, "dims"));
     ks[dimension.text(r, "method")].push_back(k);
     EXPECT_EQ(dimension.number(r, "reference"), mcrt::GaussianProduct{k}.reference());
     if (dimension.text(r, "method") == "trapezoid") {
