@@ -40,7 +40,7 @@ const Chapter k_chapter{"ch09_stratified_qmc",
                         "Chapter 09: stratified and quasi-Monte Carlo sampling. The rms error "
                         "against N of independent, jittered, Latin hypercube, scrambled Sobol' "
                         "and Halton points on the disk and on a smooth integrand, and at a fixed "
-                        "budget against the dimension k."};
+                        "budget against the dimension D."};
 
 // F_N = vol/N sum_{i<N} f(x_i), x_i = a + (b - a) u_i: chapter 03's Monte Carlo estimator with
 // the points u_i of a set in place of independent draws. Unbiased whenever each u_i alone is
@@ -140,13 +140,13 @@ int main(int argc, char** argv) {
   ChapterApp app(k_chapter, o.common);
   std::uint64_t max_n = o.max_n, budget = o.budget;
   add_number_option(app, "--trials", o.trials,
-                    "Randomisations R per N (2 or more: the rms error is over these)", 2, 100000);
+                    "Randomisations K per N (2 or more: the rms error is over these)", 2, 100000);
   add_number_option(app, "--max-n", max_n,
                     "Largest N of the disk and smooth studies, a power "
                     "of two (N = 16, 32, ..., max-n)",
                     std::uint64_t{64}, std::uint64_t{1} << 24);
   add_number_option(app, "--budget", budget,
-                    "N of the dimension study at every k, a power of "
+                    "N of the dimension study at every D, a power of "
                     "two",
                     std::uint64_t{16}, std::uint64_t{1} << 24);
   add_list_option(app, "--dims", o.dims, "Dimensions D of the dimension study, e.g. 1,2,4,8", 1,
