@@ -22,7 +22,6 @@
 #include "core/stopwatch.hpp"
 #include "integration/compensated_sum.hpp"
 #include "integration/domain.hpp"
-#include "io/memory_limit.hpp"
 #include "io/output.hpp"
 #include "io/summary.hpp"
 #include "io/usage_error.hpp"
@@ -101,9 +100,7 @@ Table picture_points(const Options& o) {
 }
 
 void run(const CLI::App& app, const Options& o) {
-  check_memory_limit(images_in_memory(0.0, 0.0, o.common.threads, "the program and its threads"),
-                     "--threads", "lower it");
-  const Plan plan = make_plan(o.max_n, o.budget, o.dims, o.trials);
+  const Plan plan = make_plan(o.max_n, o.budget, o.dims, o.trials, o.common.threads);
   const Stopwatch clock;
   const std::vector<double> estimates = run_tasks(plan, o);
   const Tables t = tabulate(plan, estimates, o.trials, o.budget);

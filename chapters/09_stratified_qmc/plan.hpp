@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "integration/integrands.hpp"
+#include "io/memory_limit.hpp"
 #include "io/work_limit.hpp"
 #include "sampling/point_random.hpp"
 #include "samplers.hpp"
@@ -107,7 +108,7 @@ inline std::uint64_t points_key(std::uint64_t seed, const Plan& plan, const Task
 }
 
 inline Plan make_plan(std::uint32_t max_n, std::uint32_t budget, const std::vector<int>& dims,
-                      int trials) {
+                      int trials, int threads) {
   Plan plan;
   for (Study study : {Study::disk, Study::smooth})
     for (Sampler sampler : k_samplers)
@@ -123,6 +124,15 @@ inline Plan make_plan(std::uint32_t max_n, std::uint32_t budget, const std::vect
   check_work_limit({plan.coordinates, "coordinates", "--trials x N x k over the three studies"},
                    k_max_coordinates, "--max-n, --budget, --dims and --trials",
                    "lower one of them");
+  // The memory: the program and its threads, and per task its Task, its place in the
+  // schedule and its estimate (the tables hold a row per series and N, far fewer).
+  double tasks = 0.0;
+  for (const Series& series : plan.series)
+    tasks += static_cast<double>(trials) * static_cast<double>(series.sizes.size());
+  MemoryUse use =
+      images_in_memory(0.0, 0.0, threads, "the program, its threads and 40 bytes a task");
+  use.bytes += tasks * (sizeof(Task) + sizeof(std::size_t) + sizeof(double));
+  check_memory_limit(use, "--trials, --dims and --max-n", "lower one of them");
   for (std::size_t s = 0; s < plan.series.size(); ++s)
     for (std::size_t i = 0; i < plan.series[s].sizes.size(); ++i)
       for (int t = 0; t < trials; ++t)
