@@ -50,8 +50,8 @@ QUOTED = re.compile(
 # machine-dependent numbers, untagged).
 CHECKED_PAGES = ["01_ray_tracing.md", "02_disk_area.md", "03_trapezoid_vs_mc.md",
                  "04_recursive_nk.md", "05_path_tracer.md", "06_russian_roulette.md",
-                 "07_importance_sampling.md", "08_next_event_estimation.md", "index.md",
-                 "answers.md"]
+                 "07_importance_sampling.md", "08_next_event_estimation.md",
+                 "09_stratified_qmc.md", "index.md", "answers.md"]
 
 # The assignments page, its measured numbers (measure_assignment_fairness's output) and the
 # section of it where every measured-looking decimal must carry a tag.
@@ -746,6 +746,46 @@ for plate in range(4):
                    "ch08", "plates.csv", "rel_mse", plate=plate, light=light,
                    strategy="mis_balance") / runs.cell(
                    "ch08", "plates.csv", "rel_mse", plate=plate, light=light, strategy="light"))
+
+# Chapter 09: the default run. Per study and sampler the fitted slope, its standard error and
+# the rms error at the largest N; at the budget, the relative errors and the gains over
+# independent points; the largest k at which the grid still beats independent points.
+CH09_SERIES = {"disk": ["independent", "jittered", "latin_hypercube", "sobol_xor", "sobol_owen",
+                        "halton"],
+               "smooth": ["independent", "jittered", "latin_hypercube", "sobol_xor", "sobol_owen",
+                          "halton", "sobol_owen_odd_n"]}
+for study, samplers in CH09_SERIES.items():
+    for sampler in samplers:
+        number(f"ch09.{study}_{sampler}", "ch09",
+               summary_value("ch09", study, sampler, "fitted_slope"))
+        number(f"ch09.{study}_{sampler}_rmse", "ch09",
+               summary_value("ch09", study, sampler, "rmse_at_largest_n"))
+        if study == "disk" or sampler == "sobol_owen":  # the slopes the page gives errors of
+            number(f"ch09.{study}_{sampler}_se", "ch09",
+                   summary_value("ch09", study, sampler, "fitted_slope_standard_error"))
+for k in (1, 2, 4, 8, 16):
+    for method in ("independent", "trapezoid"):
+        number(f"ch09.relative_{method}_k{k}", "ch09",
+               cell("ch09", "dimension.csv", "relative_error", dims=k, method=method))
+    for method in ("latin_hypercube", "sobol_owen"):
+        number(f"ch09.gain_{method}_k{k}", "ch09", lambda runs, k=k, method=method: next(
+            row[method] for row in runs.summary("ch09")["dimension"]["gain_over_independent"]
+            if row["dims"] == k))
+
+
+def ch09_grid_last_win(runs):
+    """The largest k up to which the trapezoid rule beats independent points at every k."""
+    rows = runs.rows("ch09", "dimension.csv")
+    error = {(int(r["dims"]), r["method"]): float(r["rmse"]) for r in rows}
+    last = 0
+    for k in sorted({k for k, _ in error}):
+        if (k, "trapezoid") not in error or error[(k, "trapezoid")] >= error[(k, "independent")]:
+            break
+        last = k
+    return last
+
+
+number("ch09.grid_last_win_k", "ch09", ch09_grid_last_win)
 
 # (end of sources)
 

@@ -20,7 +20,8 @@ REPO = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else os.getcwd()
 
 CHAPTERS = ["01_ray_tracing.md", "02_disk_area.md", "03_trapezoid_vs_mc.md",
             "04_recursive_nk.md", "05_path_tracer.md", "06_russian_roulette.md",
-            "07_importance_sampling.md", "08_next_event_estimation.md"]
+            "07_importance_sampling.md", "08_next_event_estimation.md",
+            "09_stratified_qmc.md"]
 
 LISTING = re.compile(r"^```(?:cpp|c\+\+)\n(.*?)^```", re.S | re.M)
 SOURCE = re.compile(r"//\s*((?:common|chapters)/[\w./-]+\.(?:hpp|cpp))")

@@ -31,7 +31,8 @@ def letter(name):
 CHAPTERS = [f"{name}" for name in ("01_ray_tracing.md", "02_disk_area.md",
                                    "03_trapezoid_vs_mc.md", "04_recursive_nk.md",
                                    "05_path_tracer.md", "06_russian_roulette.md",
-                                   "07_importance_sampling.md", "08_next_event_estimation.md")]
+                                   "07_importance_sampling.md", "08_next_event_estimation.md",
+                                   "09_stratified_qmc.md")]
 ALL = CHAPTERS + ["answers.md", "probability-recap.md", "under-the-hood.md"]
 # The assignments' handouts and README keep the same symbols (a kit holds one handout only).
 HANDOUTS = [f"assignments/{name}" for name in ("README.md", "a1.md", "a2.md", "a3.md", "a4.md",
@@ -44,7 +45,8 @@ RULES = [
     (r"(?<![A-Za-z\\])V_", ALL + HANDOUTS, "a ball's volume is \\lvert B_D\\rvert; V is visibility"),
     (r"\\rho", ALL + HANDOUTS, "the albedo is a"),
     (r"T_n", ALL + HANDOUTS, "the trapezoid rule is Q_n; T is the transport operator"),
-    (letter("k"), ["02_disk_area.md", "03_trapezoid_vs_mc.md", "probability-recap.md",
+    (letter("k"), ["02_disk_area.md", "03_trapezoid_vs_mc.md", "09_stratified_qmc.md",
+                   "probability-recap.md",
                    "assignments/a1.md"],
      "the dimension is D; k is the depth"),
     (letter("p"), ["02_disk_area.md", "assignments/a1.md"],

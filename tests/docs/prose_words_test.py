@@ -82,8 +82,8 @@ def read(name):
 
 
 class ThePagesTest(unittest.TestCase):
-    def test_there_are_eight_chapter_pages(self):
-        self.assertEqual(len(chapter_pages()), 8, chapter_pages())
+    def test_there_are_nine_chapter_pages(self):
+        self.assertEqual(len(chapter_pages()), 9, chapter_pages())
 
     def test_every_chapter_page_is_at_most_the_limit(self):
         over = []

@@ -62,6 +62,8 @@ TINY = {
     "ch08_next_event_estimation": ["--width", "16", "--height", "12", "--spp", "2",
                                    "--reference-spp", "8", "--ray-budgets", "8,16",
                                    "--plates-spp", "1"],
+    "ch09_stratified_qmc": ["--trials", "4", "--max-n", "256", "--budget", "256", "--dims", "1,2,3",
+                            "--picture-points", "16"],
 }
 # Every chapter section's numbers checked against theory (scripts/make-gallery, LESSONS).
 CHECKS_PER_CHAPTER = 3

@@ -63,6 +63,8 @@ TINY = {
                               "--paths", "2000", "--q", "0.7,0.9"],
     "ch07_importance_sampling": ["--width", "16", "--height", "12", "--spp", "2", "--depth", "3",
                                  "--reference-spp", "4"],
+    "ch09_stratified_qmc": ["--trials", "4", "--max-n", "256", "--budget", "256", "--dims", "1,2",
+                            "--picture-points", "16"],
 }
 # Chapters that render an image of a scene (they take --scene, --width, --height, --emission).
 RENDERERS = ["ch01_ray_tracing", "ch04_recursive_nk", "ch05_path_tracer",
