@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 
 #include "integration/integrands.hpp"
-#include "io/memory_limit.hpp"
-#include "io/work_limit.hpp"
+#include "app/memory_limit.hpp"
+#include "app/work_limit.hpp"
 #include "sampling/point_random.hpp"
 #include "samplers.hpp"
 

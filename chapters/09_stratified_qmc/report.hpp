@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "io/cli.hpp"
-#include "io/summary.hpp"
+#include "app/cli.hpp"
+#include "app/summary.hpp"
 #include "plan.hpp"
 #include "tables.hpp"
 
