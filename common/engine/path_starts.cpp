@@ -99,7 +99,7 @@ namespace {
     const __m256d u1 = avx2::pcg32_uniform(avx2::pcg32_output(s1));
 
     // Camera::generate_ray(x + u0, y + u1): d = forward + (px/w - 1/2) right + (1/2 - py/h) up,
-    // origin = eye + near d, direction = d (1 / sqrt(d.d)) as glm::normalize computes it.
+    // direction = d (1 / sqrt(d.d)) as glm::normalize computes it, origin = eye + near direction.
     const __m256d px = _mm256_add_pd(_mm256_load_pd(x), u0);
     const __m256d py = _mm256_add_pd(set(y), u1);
     const __m256d along_right = _mm256_sub_pd(_mm256_div_pd(px, set(camera.width())), set(0.5));
@@ -114,9 +114,10 @@ namespace {
                       _mm256_mul_pd(d[2], d[2]));
     const __m256d inverse_length = _mm256_div_pd(set(1.0), _mm256_sqrt_pd(length_squared));
     for (int axis = 0; axis < 3; ++axis) {
+      const __m256d direction = _mm256_mul_pd(d[axis], inverse_length);
       _mm256_store_pd(starts.origin[axis] + i,
-                      _mm256_add_pd(set(frame.eye[axis]), _mm256_mul_pd(set(frame.near), d[axis])));
-      _mm256_store_pd(starts.direction[axis] + i, _mm256_mul_pd(d[axis], inverse_length));
+                      _mm256_add_pd(set(frame.eye[axis]), _mm256_mul_pd(set(frame.near), direction)));
+      _mm256_store_pd(starts.direction[axis] + i, direction);
     }
   }
 }

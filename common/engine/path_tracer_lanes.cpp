@@ -131,6 +131,12 @@ class RowOfPaths {
 
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
                                       const RenderSettings& settings, int max_depth) {
+  // The lanes bounce diffuse and glossy surfaces only: a scene with a mirror or glass runs the
+  // one-path loop, which is the same image by definition.
+  if (std::ranges::any_of(scene.materials, &Material::is_delta))
+    return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
+      return estimate_path_radiance(scene, ray, max_depth, rng, count);
+    });
   return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
                                            std::uint64_t& non_finite) {
     std::vector<Color> sums(camera.width(), Color(0.0));

@@ -20,7 +20,8 @@
 namespace mcrt {
 
 /// render(camera, settings, path radiance with at most `max_depth` bounces), four paths at a
-/// time.
+/// time; a scene with a delta material (mirror, glass) is rendered one path at a time, by
+/// render() itself.
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
                                       const RenderSettings& settings, int max_depth);
 

@@ -13,7 +13,7 @@ struct CameraSpec {
   Vec3 direction{0.0, 0.0, -1.0};  ///< view direction (need not be unit)
   Vec3 up{0.0, 1.0, 0.0};
   double vertical_fov = 0.7;       ///< radians, full angle
-  double near = 0.0;               ///< rays start on the plane this far along the view direction
+  double near = 0.0;               ///< rays start this far from the eye along their direction
 };
 
 class Camera {
@@ -31,11 +31,14 @@ class Camera {
   }
 
   /// The ray through image position (px, py) in pixels, row 0 at the top:
-  /// d = forward + (px/w - 1/2) right + (1/2 - py/h) up, origin = eye + near * d.
-  /// d's component along `forward` is 1, so the origin lies on the near plane.
+  /// d = forward + (px/w - 1/2) right + (1/2 - py/h) up, direction = d / |d|,
+  /// origin = eye + near * direction: on the sphere of radius `near` round the eye, as smallpt
+  /// runs it (its `Ray(cam.o + d*140, d.norm())` normalises d in place, and g++ evaluates the
+  /// second argument first), not on the plane eye + near * d, whose corners reach further.
   Ray generate_ray(double px, double py) const {
     const Vec3 d = forward_ + (px / width_ - 0.5) * right_ + (0.5 - py / height_) * up_;
-    return {eye_ + near_ * d, glm::normalize(d)};
+    const Vec3 direction = glm::normalize(d);
+    return {eye_ + near_ * direction, direction};
   }
 
   /// The ray through pixel (x, y) at offset u in [0,1)^2 inside it.

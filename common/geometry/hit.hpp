@@ -14,10 +14,22 @@ struct Hit {
   Vec3 point;
   Vec3 normal;             ///< unit, facing the incoming ray (the side the ray arrived from)
   std::uint32_t material = 0;
+  /// The ray arrived on the side the surface's own normal points to: a sphere's outside, a
+  /// quad's front. A dielectric reads it to know whether the ray enters the glass or leaves it.
+  bool front_face = true;
 };
 
-/// Geometric normal n turned to face against the ray direction d.
-inline Vec3 face_forward(const Vec3& n, const Vec3& d) { return glm::dot(n, d) < 0.0 ? n : -n; }
+/// Geometric normal n turned to face against the ray direction d. A ray exactly tangent to the
+/// surface (n.d = 0) meets its front: so it is pushed off outwards and goes on past a sphere,
+/// instead of being pushed inside it and meeting the sphere again from within.
+inline Vec3 face_forward(const Vec3& n, const Vec3& d) { return glm::dot(n, d) <= 0.0 ? n : -n; }
+
+/// Sets hit.normal to the geometric normal n turned against d (face_forward, the same bits) and
+/// hit.front_face to whether n already faced against d.
+inline void set_face_normal(Hit& hit, const Vec3& n, const Vec3& d) {
+  hit.front_face = glm::dot(n, d) <= 0.0;
+  hit.normal = hit.front_face ? n : -n;
+}
 
 /// A ray leaving `hit` in `direction`, its origin pushed off the surface along the normal
 /// (to the side the direction goes) so it cannot hit the surface it starts on. The offset is

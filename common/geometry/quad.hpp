@@ -97,7 +97,7 @@ inline Hit hit_at(const Quad& q, const Ray& ray, double t) {
   Hit hit;
   hit.t = t;
   hit.point = ray.at(t);
-  hit.normal = face_forward(q.normal(), ray.direction);
+  set_face_normal(hit, q.normal(), ray.direction);
   hit.material = q.material();
   return hit;
 }

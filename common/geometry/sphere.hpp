@@ -36,7 +36,7 @@ inline Hit hit_at(const Sphere& s, const Ray& ray, double t, double inverse_radi
   Hit hit;
   hit.t = t;
   hit.point = ray.at(t);
-  hit.normal = face_forward((hit.point - s.center) * inverse_radius, ray.direction);
+  set_face_normal(hit, (hit.point - s.center) * inverse_radius, ray.direction);
   hit.material = s.material;
   return hit;
 }

@@ -31,6 +31,7 @@
 #include "geometry/hit.hpp"
 #include "render/path_tracer.hpp"
 #include "render/scene.hpp"
+#include "render/specular.hpp"
 #include "sampling/cosine_power.hpp"
 #include "sampling/frame.hpp"
 
@@ -53,6 +54,14 @@ inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int 
     radiance += beta * material.emission;
     if (bounce == max_depth) break;
 
+    const Vec3 wo = -ray.direction;  // towards where the path came from
+    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+      const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
+      beta *= specular.weight;  // f_r cos / p of a delta: the tint
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
+    }
     const Vec3 local = sample_hemisphere(pdf, rng.uniform2());
     const double cos_theta_i = local.z;
     const double p_wi = hemisphere_pdf(pdf, cos_theta_i);
@@ -60,7 +69,6 @@ inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int 
     // grazing): probability 2^-32 per bounce. It ends the path instead of dividing by 0.
     if (!(p_wi > 0.0)) break;
     const Vec3 wi = Frame(hit->normal).to_world(local);
-    const Vec3 wo = -ray.direction;
     beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / p_wi;
     if (beta == Color(0.0)) break;
     ray = spawn_ray(*hit, wi);

@@ -33,6 +33,7 @@
 #include "render/next_event_estimation.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+#include "render/specular.hpp"
 #include "sampling/frame.hpp"
 #include "sampling/hemisphere.hpp"
 
@@ -70,16 +71,19 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
   // ASSIGNMENT a5.3 BEGIN needs=a5.1,a5.2 withheld stub: (void)scene; (void)ray; (void)end; (void)heuristic; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_mis_radiance);
   Color radiance(0.0);
   Color beta(1.0);        // path weight: product of f_r cos / (p_b q_j) = rho / q_j so far
-  double pdf_bsdf = 0.0;  // p_b of the direction that reached this vertex (0: the camera ray)
+  double pdf_bsdf = 0.0;  // p_b of the direction that reached this vertex (0: the camera ray,
+                          // -1: a delta's, which light sampling cannot draw)
   for (int bounce = 0;; ++bounce) {
     ++count.rays;
     const std::optional<Hit> hit = scene.closest_hit(ray);
     if (!hit) break;
     const Material& material = scene.material(*hit);
     if (material.is_emitter()) {  // Le reached by BSDF sampling: weight w_b (1 for the eye)
+      // After a delta (pdf_bsdf < 0) light sampling could not have drawn this direction: 1.
       const double w_b =
-          bounce == 0 ? 1.0
-                      : mis_weight(heuristic, pdf_bsdf, light_pdf_towards(scene, ray, *hit));
+          bounce == 0 || pdf_bsdf < 0.0
+              ? 1.0
+              : mis_weight(heuristic, pdf_bsdf, light_pdf_towards(scene, ray, *hit));
       radiance += beta * w_b * material.emission;
     }
     if (end.cut_at(bounce)) break;
@@ -89,8 +93,17 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
       beta /= q;
     }
 
-    // Light sampling: f_r Le cos / p_l, weight w_l(p_l, p_b).
     const Vec3 wo = -ray.direction;
+    if (material.is_delta()) {  // no light sample meets a delta's direction: follow it, w_b = 1
+      const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
+      pdf_bsdf = -1.0;  // a delta: the next emitter's weight is 1
+      beta *= specular.weight;
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
+    }
+
+    // Light sampling: f_r Le cos / p_l, weight w_l(p_l, p_b).
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes()) {
       const double w_l =

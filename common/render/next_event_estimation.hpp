@@ -16,6 +16,12 @@
 /// BSDF-sampled ray that happens to hit a light adds nothing (its light is the next vertex's
 /// direct term, already counted by the shadow ray one vertex earlier).
 ///
+/// Deltas (mirror, glass): no light sample can land on the one direction a delta sends the
+/// path, so at a delta vertex no shadow ray is traced, and the Le that the path meets right
+/// after it is counted in full: it is the only strategy that reaches that light. Caustics (light
+/// through glass onto a diffuse surface) are reached only that way, by a diffuse bounce that
+/// happens to hit the glass and then the light, hence their noise.
+///
 /// Expectation: the light sample is unbiased for Ld wherever p_A > 0 on every visible light
 /// point, and the indirect part is chapter 07's cosine estimator, so E[L] is chapter 05's
 /// E[L] (for the same depth cut, or the whole series without one).
@@ -36,6 +42,7 @@
 #include "render/render.hpp"
 #include "render/russian_roulette.hpp"
 #include "render/scene.hpp"
+#include "render/specular.hpp"
 #include "sampling/frame.hpp"
 #include "sampling/hemisphere.hpp"
 
@@ -56,12 +63,15 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
   // ASSIGNMENT a5.3 BEGIN needs=a4.1,a2.2 stub: (void)scene; (void)ray; (void)end; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_nee_radiance);
   Color radiance(0.0);
   Color beta(1.0);  // path weight: product of f_r cos / (p q_j) = rho / q_j so far
+  bool after_delta = false;  // the ray left a mirror or glass: no light sample could aim along it
   for (int bounce = 0;; ++bounce) {
     ++count.rays;
     const std::optional<Hit> hit = scene.closest_hit(ray);
     if (!hit) break;
     const Material& material = scene.material(*hit);
-    if (bounce == 0) radiance += material.emission;  // Le seen by the eye: counted here only
+    // Le seen by the eye, or through mirrors and glass from it: counted here only (beta = 1
+    // at the eye).
+    if (bounce == 0 || after_delta) radiance += beta * material.emission;
     if (end.cut_at(bounce)) break;
     if (bounce >= end.roulette.min_depth) {
       const double q = survival_probability(end.roulette, beta);
@@ -69,8 +79,17 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
       beta /= q;
     }
 
-    // Direct light: f_r Le cos(theta_x) / p_w(wi), if the shadow ray reaches the light.
     const Vec3 wo = -ray.direction;
+    after_delta = material.is_delta();
+    if (after_delta) {  // a light sample cannot meet a delta's direction: follow it instead
+      const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
+      beta *= specular.weight;
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
+    }
+
+    // Direct light: f_r Le cos(theta_x) / p_w(wi), if the shadow ray reaches the light.
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes())
       radiance += beta * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x /
@@ -107,6 +126,13 @@ inline Color estimate_cosine_roulette_radiance(const Scene& scene, Ray ray, cons
       const double q = survival_probability(end.roulette, beta);
       if (rng.uniform() >= q) break;
       beta /= q;
+    }
+    if (material.is_delta()) {  // a mirror or glass: its one direction
+      const BsdfSample specular = sample_delta(material, *hit, -ray.direction, rng.uniform());
+      beta *= specular.weight;
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
     }
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     if (!(local.z > 0.0)) break;

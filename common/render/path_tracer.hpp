@@ -25,6 +25,7 @@
 #include "geometry/hit.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+#include "render/specular.hpp"
 #include "sampling/sampling.hpp"
 
 namespace mcrt {
@@ -44,10 +45,18 @@ inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, 
     radiance += beta * material.emission;  // Le(x_j), weighted by the path so far
     if (bounce == max_depth) break;
 
+    const Vec3 wo = -ray.direction;  // towards where the path came from
+    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+      const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
+      beta *= specular.weight;  // f_r cos / p of a delta: the tint
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
+    }
+    // Uniform sampling alone would never find a delta's one direction: a mirror stays black.
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Vec3 wi = Frame(hit->normal).to_world(local);
     const double cos_theta_i = local.z;  // the normal is the frame's z axis
-    const Vec3 wo = -ray.direction;      // towards where the path came from
     beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / uniform_hemisphere_pdf();
     // A black surface ends the path exactly: every later term would be multiplied by 0.
     if (beta == Color(0.0)) break;

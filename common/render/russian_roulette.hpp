@@ -58,6 +58,7 @@
 #include "geometry/hit.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+#include "render/specular.hpp"
 #include "sampling/sampling.hpp"
 #include "sampling/sphere.hpp"
 
@@ -102,10 +103,17 @@ inline Color estimate_path_radiance_roulette(const Scene& scene, Ray ray, const 
       beta /= q;                      // ... and the survivors carry what the stopped lost
     }
 
+    const Vec3 wo = -ray.direction;  // towards where the path came from
+    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+      const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
+      beta *= specular.weight;  // f_r cos / p of a delta: the tint
+      if (beta == Color(0.0)) break;
+      ray = spawn_ray(*hit, specular.wi);
+      continue;
+    }
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Vec3 wi = Frame(hit->normal).to_world(local);
     const double cos_theta_i = local.z;
-    const Vec3 wo = -ray.direction;
     beta *= material.f_r(wi, wo, hit->normal) * cos_theta_i / uniform_hemisphere_pdf();
     if (beta == Color(0.0)) break;  // a black surface: every later term is 0
     ray = spawn_ray(*hit, wi);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/cpu_features.hpp"
 #include "render/veach_plates.hpp"
@@ -157,12 +158,12 @@ namespace {
     p[axis] = _mm256_add_pd(o[axis], _mm256_mul_pd(lane_t, d[axis]));  // ray.at(t)
     n[axis] = _mm256_blendv_pd(_mm256_mul_pd(_mm256_sub_pd(p[axis], c[axis]), c[3]), q[axis], is_quad);
   }
-  // face_forward: n where n.d < 0, else -n (the sign bit flipped). For a quad, n.d is the dot
+  // face_forward: n where n.d <= 0, else -n (the sign bit flipped). For a quad, n.d is the dot
   // of quad_face_material, whose back it meets where n.d > 0 (a sphere's back is its front).
   const __m256d n_dot_d = _mm256_add_pd(
       _mm256_add_pd(_mm256_mul_pd(n[0], d[0]), _mm256_mul_pd(n[1], d[1])),
       _mm256_mul_pd(n[2], d[2]));
-  const __m256d facing = _mm256_cmp_pd(n_dot_d, _mm256_setzero_pd(), _CMP_LT_OQ);
+  const __m256d facing = _mm256_cmp_pd(n_dot_d, _mm256_setzero_pd(), _CMP_LE_OQ);
   for (int axis = 0; axis < 3; ++axis) {
     const __m256d flipped = _mm256_xor_pd(n[axis], _mm256_set1_pd(-0.0));
     _mm256_store_pd(hits.point[axis], p[axis]);
@@ -189,7 +190,7 @@ void Scene::hits_in_lanes_avx2(const ClosestLanes& nearest, const RayLanes& rays
 
 const std::vector<std::string>& scene_names() {
   static const std::vector<std::string> names{"cornell", "cornell-spheres", "furnace",
-                                              "veach-plates"};
+                                              "veach-plates", "smallpt"};
   return names;
 }
 
@@ -203,6 +204,7 @@ Scene make_scene(std::string_view name, const SceneParams& params) {
   if (name == "cornell-spheres") return make_cornell_spheres();
   if (name == "furnace") return make_furnace(params.furnace_albedo, params.furnace_emission);
   if (name == "veach-plates") return make_veach_plates_scene();
+  if (name == "smallpt") return make_smallpt();
   throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
 }
 
@@ -278,33 +280,38 @@ Scene make_cornell_box(double light_scale, int lamp_parts) {
   return scene;
 }
 
-// smallpt's scene with every material diffuse (mirror and glass become albedo 0.999).
-Scene make_cornell_spheres() {
+namespace {
+
+// smallpt's box of nine spheres, with `left_ball` and `right_ball` the materials of its two
+// balls (smallpt's mirror and glass) and smallpt's camera.
+Scene make_sphere_box(std::string name, const Material& left_ball, const Material& right_ball) {
   Scene scene;
-  scene.name = "cornell-spheres";
+  scene.name = std::move(name);
   auto diffuse = [&](Color albedo) { return scene.add_material({albedo, Color(0.0)}); };
   const auto left = diffuse({.75, .25, .25});
   const auto right = diffuse({.25, .25, .75});
   const auto grey = diffuse(Color(.75));
   const auto black = diffuse(Color(0.0));
-  const auto white = diffuse(Color(.999));
+  const auto left_ball_material = scene.add_material(left_ball);
+  const auto right_ball_material = scene.add_material(right_ball);
   const Color le(12.0);
   const auto light = scene.add_material({Color(0.0), le});
   const Sphere spheres[] = {
-      {{1e5 + 1, 40.8, 81.6}, 1e5, left},      // left wall
-      {{-1e5 + 99, 40.8, 81.6}, 1e5, right},   // right wall
-      {{50, 40.8, 1e5}, 1e5, grey},            // back wall
-      {{50, 40.8, -1e5 + 170}, 1e5, black},    // front wall
-      {{50, 1e5, 81.6}, 1e5, grey},            // floor
-      {{50, -1e5 + 81.6, 81.6}, 1e5, grey},    // ceiling
-      {{27, 16.5, 47}, 16.5, white},           // left sphere (smallpt's mirror)
-      {{73, 16.5, 78}, 16.5, white},           // right sphere (smallpt's glass)
+      {{1e5 + 1, 40.8, 81.6}, 1e5, left},                // left wall
+      {{-1e5 + 99, 40.8, 81.6}, 1e5, right},             // right wall
+      {{50, 40.8, 1e5}, 1e5, grey},                      // back wall
+      {{50, 40.8, -1e5 + 170}, 1e5, black},              // front wall
+      {{50, 1e5, 81.6}, 1e5, grey},                      // floor
+      {{50, -1e5 + 81.6, 81.6}, 1e5, grey},              // ceiling
+      {{27, 16.5, 47}, 16.5, left_ball_material},        // left ball (smallpt's mirror)
+      {{73, 16.5, 78}, 16.5, right_ball_material},       // right ball (smallpt's glass)
   };
   for (const Sphere& s : spheres) scene.add_sphere(s);
   // The light: a 600-radius sphere whose bottom pokes 0.27 below the ceiling plane; the
   // ceiling (a 1e5-radius sphere, index 5) hides the rest from the room.
   const double cap_height = 0.27;
   scene.add_sphere_light({{50, 681.6 - cap_height, 81.6}, 600, light}, 5);
+  // smallpt's camera; its rays start 140 units from the eye along their direction.
   scene.camera = {{50, 52, 295.6}, {0, -0.042612, -1}, {0, 1, 0}, 2.0 * std::atan(0.5135 / 2.0),
                   140.0};
   // The light is the cap of the 600-radius sphere below the ceiling (y = 81.6): height
@@ -314,6 +321,27 @@ Scene make_cornell_spheres() {
   const double cap_area = k_two_pi * 600.0 * cap_height;
   scene.point_light = {{50, 81.6 - cap_height - 1e-3, 81.6}, le * cap_area, Vec3(0, -1, 0)};
   return scene;
+}
+
+}  // namespace
+
+// smallpt's scene with every material diffuse (mirror and glass become albedo 0.999).
+Scene make_cornell_spheres() {
+  const Material white{Color(.999), Color(0.0)};
+  return make_sphere_box("cornell-spheres", white, white);
+}
+
+// smallpt's scene itself: its left ball a mirror, its right ball glass of index 1.5, both of
+// tint 0.999. The glass reflects by Schlick's approximation, as smallpt's does, so that the
+// two renderers estimate the same image (render/fresnel.hpp).
+Scene make_smallpt() {
+  Material mirror, glass;
+  mirror.delta = Delta::mirror;
+  glass.delta = Delta::dielectric;
+  mirror.tint = glass.tint = Color(.999);
+  glass.ior = 1.5;
+  glass.fresnel = FresnelModel::schlick;
+  return make_sphere_box("smallpt", mirror, glass);
 }
 
 // The inside of a unit sphere, albedo a and emission Le everywhere: every path bounces forever

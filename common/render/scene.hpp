@@ -196,10 +196,11 @@ struct SceneParams {
 /// ceiling.
 inline constexpr double k_max_light_scale = 4.0;
 
-/// The built-in scenes: "cornell", "cornell-spheres", "furnace", "veach-plates".
+/// The built-in scenes: "cornell", "cornell-spheres", "furnace", "veach-plates", "smallpt".
 const std::vector<std::string>& scene_names();
 
-/// The built-in scenes whose materials are all diffuse: every scene but "veach-plates". The
+/// The built-in scenes whose materials are all diffuse: every scene but "veach-plates" and
+/// "smallpt" (a mirror and glass). The
 /// chapters whose estimators see only the diffuse part of a material (f_r = rho / pi: 01, 04,
 /// 08's path estimators) offer only these.
 const std::vector<std::string>& diffuse_scene_names();
@@ -216,6 +217,9 @@ struct SceneOptions {
 
 Scene make_cornell_box(double light_scale = 1.0, int lamp_parts = 1);
 Scene make_cornell_spheres();
+/// smallpt's scene as smallpt renders it: cornell-spheres with its left ball a mirror and its
+/// right ball glass (index 1.5, Schlick's Fresnel as smallpt's), both of tint 0.999.
+Scene make_smallpt();
 Scene make_furnace(double albedo, double emission);
 /// Veach's plates (render/veach_plates.hpp) as a Scene: the same plates, lights and camera as
 /// make_veach_plates(), from which it is built, with each plate's Phong lobe as a Material and

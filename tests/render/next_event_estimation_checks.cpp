@@ -225,9 +225,8 @@ MCRT_STATISTICAL_CHECK_AT_MOST(mis_agrees_with_independent_renderer_cornell, 1e-
 }
 
 // smallpt's sphere box, 32 x 24 pixels, 2000 samples per pixel each, paths ended by roulette
-// alone (unbiased for every bounce, like the reference). The top row's corner pixels start
-// partly above the ceiling: a light sampler that covers only the cap puts them at 0 where the
-// reference sees the walls lit by the light beyond the cap.
+// alone (unbiased for every bounce, like the reference), compared row by row (the top row
+// included), column by column, block by block and on the border.
 double sphere_box_check(std::uint64_t seed, bool mis) {
   return mcrt::testing::sphere_box_comparison(
              make_cornell_spheres(), {32, 24, 4, 2000}, seed,

@@ -191,19 +191,6 @@ TEST(NeeKnownBugsTest, OneSidedLightSampledFromBehindIsRejected) {
                                           mcrt::testing::nee_light_from_behind),
             k_alpha);
 }
-// The cap-only sampler leaves the top row's corners dark (their paths start above the
-// ceiling); the comparison with smallpt's scene by regions (the check's image and samples)
-// sees it in the top corner blocks, about 6 standard errors off.
-TEST(NeeKnownBugsTest, CapOnlySphereLightIsRejectedByTheSphereBoxComparison) {
-  const mcrt::testing::RegionVerdict v = mcrt::testing::sphere_box_comparison(
-      make_cornell_spheres(), {32, 24, 4, 2000}, mcrt::testing::k_suite_seed,
-      [](const Scene& s, const Ray& ray, Rng& rng, RayCount& count) {
-        return mcrt::testing::nee_cap_only(s, ray, -1, rng, count);
-      });
-  EXPECT_LT(v.p_value, k_alpha);
-  EXPECT_LT(v.worst_z, 0.0) << "the cap-only sampler misses light: its worst region is darker";
-}
-
 // Where light sampling aims on a sphere light (light_sampling.hpp): the cap from inside the
 // enclosure (the room), the cone of the whole sphere from outside both (above the ceiling),
 // the whole sphere from inside it (the furnace).
