@@ -156,6 +156,6 @@ int main(int argc, char** argv) {
                   "each scene (a list: 64,128,256,512)", 1, 1000000);
   add_number_option(app, "--plates-spp", o.plates_spp,
                     "Samples per pixel of each strategy on Veach's plates (plates.png, "
-                    "plates.csv; 3 rays a sample, the reference 32 times as many)", 1, 1 << 12);
+                    "plates.csv; 3 rays a sample, the reference 16 times as many)", 1, 1 << 12);
   return app.run(argc, argv, [&] { run(app, o); });
 }

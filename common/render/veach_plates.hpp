@@ -82,10 +82,12 @@ inline VeachPlates make_veach_plates() {
   const Vec3 eye{0.0, 5.0, 12.0};
   const Vec3 light_row{0.0, 5.0, -5.0};
   scene.camera.eye = eye;
-  // Looking 16 degrees down: the plates (36 to 19 degrees below the eye's horizon) and the
-  // lights (on it, the largest 3 degrees in radius) fill the 43-degree field of view.
-  scene.camera.direction = Vec3{0.0, -std::tan(0.28), -1.0};
-  scene.camera.vertical_fov = 0.75;
+  // Framed on the plates, as Veach's figure is: looking 27.5 degrees down, into a 20-degree
+  // field of view, the plates (36 to 19 degrees below the eye's horizon) fill the frame from
+  // top to bottom, the near ones wider than it; every highlight is in view (the outer ones a
+  // fifth of the width in from the edges), the lights (on the horizon) are not.
+  scene.camera.direction = Vec3{0.0, -std::tan(0.48), -1.0};
+  scene.camera.vertical_fov = 0.35;
   const std::size_t n = k_plate_exponents.size();
   for (std::size_t k = 0; k < n; ++k) {
     const double step = static_cast<double>(k);

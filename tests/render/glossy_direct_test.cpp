@@ -159,6 +159,32 @@ TEST(VeachPlatesTest, LightsHaveEqualPowerAndShowInTheirPlates) {
     }
 }
 
+// Framed as Veach's figure: the plates fill the frame (the old view, with the lights on the
+// horizon, left 60 % of it empty) and every highlight is in it, away from the edges.
+TEST(VeachPlatesTest, PlatesFillTheFrameWithEveryHighlightInView) {
+  const VeachPlates scene = make_veach_plates();
+  constexpr int k_width = 240, k_height = 180;
+  const Camera camera(scene.camera, k_width, k_height);
+  int on_plates = 0;
+  for (int y = 0; y < k_height; ++y)
+    for (int x = 0; x < k_width; ++x) {
+      const std::optional<Hit> hit = closest_hit(scene, camera.generate_ray(x + 0.5, y + 0.5));
+      on_plates += hit && !scene.is_light(*hit);
+    }
+  // Measured 72 %: the plates cover rows 6 % to 92 % of the height, less the gaps between them
+  // and the far plates' ends (the old view: 25 %).
+  EXPECT_GT(on_plates, 0.65 * k_width * k_height);
+  for (std::size_t k = 0; k < scene.plate_count(); ++k)
+    for (std::size_t j = 0; j < scene.light_count(); ++j) {
+      const Vec2 h = project_to_pixel(scene.camera, k_width, k_height,
+                                      mirror_highlight(scene, k, j));
+      EXPECT_GT(h.x, 0.1 * k_width) << k << " " << j;
+      EXPECT_LT(h.x, 0.9 * k_width) << k << " " << j;
+      EXPECT_GT(h.y, 0.05 * k_height) << k << " " << j;
+      EXPECT_LT(h.y, 0.95 * k_height) << k << " " << j;
+    }
+}
+
 TEST(VeachPlatesTest, RegionsTileEachPlateAroundItsHighlights) {
   const VeachPlates scene = make_veach_plates();
   constexpr int k_width = 160, k_height = 120;
