@@ -35,6 +35,7 @@
 #include "render/scene.hpp"
 
 #include "estimators.hpp"
+#include "light_choice.hpp"
 #include "plan.hpp"
 #include "plates.hpp"
 #include "plots.hpp"
@@ -125,7 +126,10 @@ void run(const CLI::App& app, const Options& o) {
   total.rays += plates.total.rays;
   total.non_finite_samples += plates.total.non_finite_samples;
   write_plates(o.common.dir, plates, o.plates_spp);
-  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table);
+  const LightChoiceStudy light_choice = run_light_choice_study(o.common.seed);
+  write_light_choice(o.common.dir, light_choice);
+  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table,
+                light_choice.table);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
   if (!o.common.quiet) fmt::print("{}", plates_console(plates));
 }
