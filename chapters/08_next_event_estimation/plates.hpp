@@ -5,7 +5,8 @@
 // sample that meets a plate (render/glossy_direct.hpp says how), and all run the same spp, so
 // the ray counts in plates.csv are equal. Each is compared with a reference (MIS power at
 // k_plates_reference_factor times the spp, from sample indices none of the four uses) in 16
-// pixel boxes, one round each light's highlight in each plate (render/veach_plates.hpp).
+// pixel boxes, one round each light's highlight in each plate (render/veach_plates.hpp), seen
+// through the figure's camera (make_veach_plates_figure).
 //
 // Expected (Veach, fig. 9.2): light sampling wins on rough plates with small lights, BSDF
 // sampling on sharp plates with large lights, MIS is close to the better of the two everywhere.
@@ -97,7 +98,7 @@ inline Table plates_table() {
 inline PlatesStudy run_plates_study(int flag_width, int flag_height, int spp, std::uint64_t seed,
                                     int threads) {
   const int width = plates_image_size(flag_width), height = plates_image_size(flag_height);
-  const VeachPlates scene = make_veach_plates();
+  const VeachPlates scene = make_veach_plates_figure();
   const Camera camera(scene.camera, width, height);
   PlatesStudy study{plates_table(), {}, {}};
   std::vector<double> rays_per_pixel;
@@ -194,7 +195,7 @@ inline constexpr double k_plates_exposure = 4.0;
 inline void write_plates(const std::filesystem::path& dir, const PlatesStudy& study, int spp) {
   constexpr int k_factor = 2, k_text = 2;
   const int width = study.images.back().width, height = study.images.back().height;
-  const std::vector<PlateRegion> regions = plate_regions(make_veach_plates(), width, height);
+  const std::vector<PlateRegion> regions = plate_regions(make_veach_plates_figure(), width, height);
   const Image& reference = study.images.back();
   std::vector<PanelErrors> errors;
   for (std::size_t i = 0; i < k_glossy_strategies.size(); ++i)

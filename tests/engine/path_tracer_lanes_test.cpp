@@ -92,9 +92,8 @@ TEST(PathTracerLanesTest, GivesTheLectureLoopsImageAtEverySizeAndDepth) {
 
 // Veach's plates: glossy lobes, whose lanes bounce_lanes weighs one at a time beside diffuse
 // ones, and an open scene, where most paths leave after a bounce or two and lanes end at every
-// step. Widths 1 to 9 with 1 to 3 spp at a height whose rows cross the plates and the gaps
-// between them (the lights, out of the frame, are met by bounces); one row of 1031 paths; depths
-// 0 to 4 and 10.
+// step. Widths 1 to 9 with 1 to 3 spp at a height whose rows cross the plates and the lights;
+// one row of 1031 paths; depths 0 to 4 and 10.
 TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnVeachPlatesAtEverySizeAndDepth) {
   for (int width = 1; width <= 9; ++width)
     for (int spp = 1; spp <= 3; ++spp) expect_lecture_image({"veach-plates", width, 7, spp, 10, 0, 1});

@@ -78,19 +78,9 @@ TEST(VeachPlatesSceneTest, IsMakeVeachPlatesAsAScene) {
       EXPECT_EQ(a->point, b->point) << x << " " << y;
       (plates.is_light(*a) ? light_hits : plate_hits) += 1;
     }
-  EXPECT_GT(plate_hits, 2000);  // the plates fill most of the view (72 %: framed on them) ...
-  EXPECT_GT(misses, 50);        // ... with the background in the gaps between them
-  // The lights are out of the frame: the rays from the eye to their centres meet them in both.
-  for (const Sphere& s : plates.lights) {
-    const Ray ray{plates.camera.eye, glm::normalize(s.center - plates.camera.eye)};
-    const std::optional<Hit> a = scene.closest_hit(ray), b = closest_hit(plates, ray);
-    ASSERT_TRUE(a && b);
-    EXPECT_EQ(a->material, b->material);
-    EXPECT_EQ(a->point, b->point);
-    EXPECT_TRUE(plates.is_light(*b));
-    light_hits += 1;
-  }
-  EXPECT_EQ(light_hits, 4);
+  EXPECT_GT(plate_hits, 200);  // the plates fill a good part of the view ...
+  EXPECT_GT(light_hits, 0);    // ... the lights show ...
+  EXPECT_GT(misses, 200);      // ... and much of it is the empty background
 }
 
 // The scene is open: a path that leaves it ends with what it has gathered, one ray each.
