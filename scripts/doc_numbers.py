@@ -787,6 +787,20 @@ def ch09_grid_last_win(runs):
 
 number("ch09.grid_last_win_k", "ch09", ch09_grid_last_win)
 
+# Chapter 08's light choice (light_choice.csv): relMSE of uniform and power-proportional
+# choice over the floor, the ratio of the two away from the dim light and beside it, and the
+# probability power choice gives the dim light.
+for choice in ("uniform", "power"):
+    number(f"ch08.light_choice.{choice}.all", "ch08",
+           cell("ch08", "light_choice.csv", "rel_mse", choice=choice, region="all"))
+number("ch08.light_choice.power.p_dim", "ch08",
+       cell("ch08", "light_choice.csv", "p_dim", choice="power", region="all"))
+for region in ("beside_dim", "rest"):
+    number(f"ch08.light_choice.uniform_over_power.{region}", "ch08",
+           lambda runs, region=region: runs.cell(
+               "ch08", "light_choice.csv", "rel_mse", choice="uniform", region=region) /
+           runs.cell("ch08", "light_choice.csv", "rel_mse", choice="power", region=region))
+
 # (end of sources)
 
 if __name__ == "__main__":

@@ -35,6 +35,7 @@
 #include "render/scene.hpp"
 
 #include "estimators.hpp"
+#include "light_choice.hpp"
 #include "plan.hpp"
 #include "plates.hpp"
 #include "plots.hpp"
@@ -125,7 +126,10 @@ void run(const CLI::App& app, const Options& o) {
   total.rays += plates.total.rays;
   total.non_finite_samples += plates.total.non_finite_samples;
   write_plates(o.common.dir, plates, o.plates_spp);
-  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table);
+  const LightChoiceStudy light_choice = run_light_choice_study(o.common.seed);
+  write_light_choice(o.common.dir, light_choice);
+  write_summary(k_chapter, app, o, images, shootout, reference.info, total, plates.table,
+                light_choice.table);
   if (!o.common.quiet) print_report(k_chapter, o, images, shootout.table, total);
   if (!o.common.quiet) fmt::print("{}", plates_console(plates));
 }
@@ -156,6 +160,6 @@ int main(int argc, char** argv) {
                   "each scene (a list: 64,128,256,512)", 1, 1000000);
   add_number_option(app, "--plates-spp", o.plates_spp,
                     "Samples per pixel of each strategy on Veach's plates (plates.png, "
-                    "plates.csv; 3 rays a sample, the reference 32 times as many)", 1, 1 << 12);
+                    "plates.csv; 3 rays a sample, the reference 16 times as many)", 1, 1 << 12);
   return app.run(argc, argv, [&] { run(app, o); });
 }

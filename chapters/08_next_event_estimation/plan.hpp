@@ -54,8 +54,8 @@ inline RayWork predicted_work(const auto& o) {
   const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
   return {references + images + shootout + plates,
           "(5 references x reference spp + 2 x spp) x pixels x 32 rays (furnace: 2 (3 + 1 / "
-          "(1 - albedo)) if more) + 30 x (largest --ray-budgets + 65) x pixels + 36 x "
-          "--plates-spp x pixels x 3 rays"};
+          "(1 - albedo)) if more) + 30 x (largest --ray-budgets + 65) x pixels + 20 x "
+          "--plates-spp x 2.25 pixels x 3 rays"};
 }
 
 }  // namespace mcrt

@@ -16,7 +16,8 @@ namespace mcrt {
 // summary.json: the setup, the chosen scene's images against the reference, the shoot-out.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& images, const Shootout& shootout, const Json& reference,
-                          const RenderTotals& total, const Table& plates) {
+                          const RenderTotals& total, const Table& plates,
+                          const Table& light_choice) {
   Json summary = start_summary(chapter, o.common);
   add_render_setup(summary, o.scene, o.image);
   summary["light_scale"] = o.scene.params.light_scale;
@@ -27,6 +28,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["images"] = images.json();
   summary["shootout"] = shootout.table.json();
   summary["plates"] = plates.json();
+  summary["light_choice"] = light_choice.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter, o.common);
@@ -56,8 +58,8 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& ima
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print("  wrote {}/{{nee,mis}}.{{png,pfm}}, images.csv, efficiency.csv, "
-             "relmse_vs_rays_SCENE.png, contact_sheet.png, plates.png, plates.csv, summary.json, "
-             "timings.json\n",
+             "relmse_vs_rays_SCENE.png, contact_sheet.png, plates.png, plates.csv, "
+             "light_choice.png, light_choice.csv, summary.json, timings.json\n",
              o.common.out.string());
 }
 

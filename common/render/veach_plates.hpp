@@ -104,6 +104,20 @@ inline VeachPlates make_veach_plates() {
   return scene;
 }
 
+/// The scene as chapter 08's figure shows it (plates.png and the study's 16 boxes): the same
+/// plates, lights and eye, framed on the plates as Veach's figure is. Looking 27.5 degrees
+/// down into a 20-degree field of view, the plates (36 to 19 degrees below the eye's horizon)
+/// fill the frame from top to bottom, the near ones wider than it; every highlight is in view
+/// (the outer ones a fifth of the width in from the edges), the lights (on the horizon) are
+/// not. make_veach_plates' own view, with the lights in the picture, stays that of the
+/// veach-plates scene and of assignment a6, whose references were measured through it.
+inline VeachPlates make_veach_plates_figure() {
+  VeachPlates scene = make_veach_plates();
+  scene.camera.direction = Vec3{0.0, -std::tan(0.48), -1.0};
+  scene.camera.vertical_fov = 0.35;
+  return scene;
+}
+
 /// The first plate or light the ray meets in `range`, if any: a loop over the eight shapes.
 inline std::optional<Hit> closest_hit(const VeachPlates& scene, const Ray& ray,
                                       Interval range = {}) {

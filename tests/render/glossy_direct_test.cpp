@@ -159,6 +159,51 @@ TEST(VeachPlatesTest, LightsHaveEqualPowerAndShowInTheirPlates) {
     }
 }
 
+// Chapter 08's figure is framed as Veach's: the plates fill the frame (make_veach_plates' own
+// view, with the lights on its horizon, leaves 75 % of it empty) and every highlight is in it,
+// away from the edges, on its own plate; the 16 boxes at the figure's 240 x 180 are valid.
+TEST(VeachPlatesTest, TheFigureIsFramedOnThePlatesWithEveryHighlightInView) {
+  const VeachPlates scene = make_veach_plates_figure();
+  constexpr int k_width = 240, k_height = 180;
+  const Camera camera(scene.camera, k_width, k_height);
+  int on_plates = 0;
+  for (int y = 0; y < k_height; ++y)
+    for (int x = 0; x < k_width; ++x) {
+      const std::optional<Hit> hit = closest_hit(scene, camera.generate_ray(x + 0.5, y + 0.5));
+      on_plates += hit && !scene.is_light(*hit);
+    }
+  // Measured 72 %: the plates cover rows 6 % to 92 % of the height, less the gaps between them
+  // and the far plates' ends (make_veach_plates' view: 25 %).
+  EXPECT_GT(on_plates, 0.65 * k_width * k_height);
+  for (std::size_t k = 0; k < scene.plate_count(); ++k)
+    for (std::size_t j = 0; j < scene.light_count(); ++j) {
+      const Vec2 h = project_to_pixel(scene.camera, k_width, k_height,
+                                      mirror_highlight(scene, k, j));
+      EXPECT_GT(h.x, 0.1 * k_width) << k << " " << j;
+      EXPECT_LT(h.x, 0.9 * k_width) << k << " " << j;
+      EXPECT_GT(h.y, 0.05 * k_height) << k << " " << j;
+      EXPECT_LT(h.y, 0.95 * k_height) << k << " " << j;
+    }
+  // The same eye: the highlights and the rays to their lights are make_veach_plates' (checked
+  // by LightsHaveEqualPowerAndShowInTheirPlates).
+  EXPECT_EQ(scene.camera.eye, make_veach_plates().camera.eye);
+  const std::vector<PlateRegion> regions = plate_regions(scene, k_width, k_height);
+  ASSERT_EQ(regions.size(), 16u);
+  for (const PlateRegion& r : regions) {
+    EXPECT_GT(r.pixel_count(), 500);  // measured: 686 to 1260
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) {
+        const std::optional<Hit> hit = closest_hit(scene, camera.generate_ray(x + 0.5, y + 0.5));
+        ASSERT_TRUE(hit) << x << "," << y;
+        EXPECT_EQ(hit->material, r.plate) << x << "," << y;
+      }
+    const Vec2 h = project_to_pixel(scene.camera, k_width, k_height,
+                                    mirror_highlight(scene, r.plate, r.light));
+    EXPECT_GE(h.x, r.x0);
+    EXPECT_LE(h.x, r.x1);
+  }
+}
+
 TEST(VeachPlatesTest, RegionsTileEachPlateAroundItsHighlights) {
   const VeachPlates scene = make_veach_plates();
   constexpr int k_width = 160, k_height = 120;
