@@ -97,8 +97,9 @@ inline double exact_floor_radiance(const TwoLights& scene, const Vec3& x) {
 inline double estimate_floor_radiance(const TwoLights& scene, const Vec3& x, LightChoice choice,
                                       Rng& rng, RayCount& count) {
   const std::size_t j = pick_light(scene, choice, rng.uniform());
-  const Sphere& light = scene.lights[j];
-  const LightPoint y = sample_sphere_cone(light.center, light.radius, x, rng.uniform2());
+  const Vec3 centre = scene.lights[j].center;
+  const double radius = scene.lights[j].radius;
+  const LightPoint y = sample_sphere_cone(centre, radius, x, rng.uniform2());
   const Ray shadow(x, glm::normalize(y.point - x));
   ++count.rays;
   const Sphere& other = scene.lights[1 - j];
@@ -108,7 +109,7 @@ inline double estimate_floor_radiance(const TwoLights& scene, const Vec3& x, Lig
   const double f_r = scene.albedo / k_pi;
   const double p_j = light_choice_probability(scene, choice, j);
   return f_r * scene.radiance(j) * cos_theta /
-         (p_j * sphere_cone_pdf_solid_angle(light.center, light.radius, x));
+         (p_j * sphere_cone_pdf_solid_angle(centre, radius, x));
 }
 
 }  // namespace mcrt
