@@ -18,6 +18,9 @@
 set -eu
 root=$1 mode=$2 a=${3:-a2}
 tmp=$(mktemp -d /tmp/mcrt-kit-test.XXXXXX)
+# The grading runs the subject as a user of its own (as root): it must reach the grading tree
+# below this folder, as it reaches /autograder/work on Gradescope (mktemp makes it 0700).
+chmod 755 "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "kit_test $a: $*" >&2; exit 1; }
 
