@@ -1,8 +1,9 @@
-// Light sampling, next-event estimation and MIS (render/light_sampling.hpp,
-// render/next_event_estimation.hpp, render/mis.hpp): the samplers' geometry, the change of
-// measure, MIS weights that sum to 1 for every sample, the furnace's exact case, the one-sided
-// lamp, and that the checks' procedures (render/next_event_estimation_procedures.hpp, quad_box_reference.hpp)
-// reject every known-wrong variant of tests/render/next_event_estimation_known_bugs.hpp.
+// Next-event estimation (render/next_event_estimation.hpp): the furnace's exact case, the
+// one-sided lamp, the point lights far from the lamp, and that the checks' procedures
+// (render/next_event_estimation_procedures.hpp, scene_quad_box_reference.hpp) reject every
+// known-wrong variant of tests/render/next_event_estimation_known_bugs.hpp. (The light
+// samplers: tests/sampling/light_test.cpp and tests/render/light_sampling_test.cpp; MIS's
+// weights: tests/render/mis_test.cpp.)
 // (The statistical checks themselves are in tests/render/next_event_estimation_checks.cpp.)
 
 #include <gtest/gtest.h>
@@ -26,85 +27,6 @@ using namespace mcrt;
 namespace {
 
 constexpr double k_alpha = 1e-4;  // the checks' false-failure rate
-
-TEST(LightSamplingTest, QuadPointsLieOnTheQuadWithItsNormalAndPdf) {
-  const Quad q = mcrt::testing::cornell_lamp();
-  Rng rng(1, 0);
-  for (int i = 0; i < 1000; ++i) {
-    const LightPoint y = sample_quad(q.corner(), q.edge_u(), q.edge_v(), rng.uniform2());
-    const Vec3 p = y.point - q.corner();
-    EXPECT_NEAR(glm::dot(p, q.normal()), 0.0, 1e-9);
-    EXPECT_GE(q.coordinate_a(p), -1e-12);
-    EXPECT_LE(q.coordinate_a(p), 1.0 + 1e-12);
-    EXPECT_GE(q.coordinate_b(p), -1e-12);
-    EXPECT_LE(q.coordinate_b(p), 1.0 + 1e-12);
-    EXPECT_NEAR(glm::length(y.normal - q.normal()), 0.0, 1e-12);
-    EXPECT_DOUBLE_EQ(y.pdf_area, 1.0 / (130.0 * 105.0));
-  }
-}
-
-TEST(LightSamplingTest, CapPointsLieOnTheSphereInsideTheCap) {
-  const Vec3 c(50, 681.33, 81.6), axis(0, -1, 0);
-  Rng rng(2, 0);
-  for (int i = 0; i < 1000; ++i) {
-    const LightPoint y = sample_sphere_cap(c, 600.0, axis, 0.27, rng.uniform2());
-    EXPECT_NEAR(glm::length(y.point - c), 600.0, 1e-9);
-    EXPECT_GE(glm::dot(y.point - c, axis), 600.0 - 0.27 - 1e-9);
-    EXPECT_NEAR(glm::length(y.normal - (y.point - c) / 600.0), 0.0, 1e-12);
-    EXPECT_DOUBLE_EQ(y.pdf_area, 1.0 / (k_two_pi * 600.0 * 0.27));
-  }
-  // The whole unit sphere: pdf 1 / (4 pi).
-  EXPECT_DOUBLE_EQ(sphere_cap_pdf_area(1.0, 2.0), 0.25 * k_inv_pi);
-}
-
-TEST(LightSamplingTest, AreaAndSolidAngleConvertBothWays) {
-  // p_w = p_A r^2 / |cos|, and back.
-  EXPECT_DOUBLE_EQ(area_to_solid_angle_pdf(0.5, 2.0, 0.25), 0.5 * 4.0 / 0.25);
-  EXPECT_DOUBLE_EQ(area_to_solid_angle_pdf(0.5, 2.0, -0.25), 8.0);
-  EXPECT_DOUBLE_EQ(solid_angle_to_area_pdf(8.0, 2.0, 0.25), 0.5);
-  EXPECT_EQ(area_to_solid_angle_pdf(0.5, 2.0, 0.0), 0.0);  // edge-on: no solid angle
-}
-
-TEST(MisTest, WeightsSumToOneForEveryPair) {
-  Rng rng(3, 0);
-  for (MisHeuristic h : {MisHeuristic::balance, MisHeuristic::power})
-    for (int i = 0; i < 10000; ++i) {
-      const double a = std::exp(40.0 * rng.uniform() - 20.0), b = std::exp(40.0 * rng.uniform() - 20.0);
-      EXPECT_NEAR(mis_weight(h, a, b) + mis_weight(h, b, a), 1.0, 1e-12);
-      EXPECT_GE(mis_weight(h, a, b), 0.0);
-    }
-  EXPECT_EQ(mis_weight(MisHeuristic::balance, 0.0, 0.0), 0.0);
-  EXPECT_EQ(mis_weight(MisHeuristic::power, 2.0, 0.0), 1.0);
-  EXPECT_DOUBLE_EQ(mis_weight(MisHeuristic::balance, 1.0, 3.0), 0.25);
-  EXPECT_DOUBLE_EQ(mis_weight(MisHeuristic::power, 1.0, 3.0), 0.1);
-}
-
-// For light samples drawn from floor points of cornell: the light strategy's weight with the
-// pdfs of that direction, plus the BSDF strategy's weight of the same direction, is 1; and the
-// pdf light_pdf_towards gives a BSDF ray reaching the lamp is the one light sampling used.
-TEST(MisTest, WeightsOfBothStrategiesSumToOneForEverySampleInTheScene) {
-  const Scene scene = make_cornell_box();
-  Rng rng(4, 0);
-  int checked = 0;
-  for (int i = 0; i < 2000; ++i) {
-    Hit hit;
-    hit.point = Vec3(50 + 450 * rng.uniform(), 0.0, 50 + 450 * rng.uniform());
-    hit.normal = Vec3(0, 1, 0);
-    RayCount count;
-    const DirectSample d = sample_direct_light(scene, hit, rng, count);
-    if (!d.contributes()) continue;
-    const double p_b = cosine_hemisphere_pdf(d.cos_x);
-    const Ray ray = spawn_ray(hit, d.wi);
-    const std::optional<Hit> lamp = scene.closest_hit(ray);
-    ASSERT_TRUE(lamp);
-    const double p_l = light_pdf_towards(scene, ray, *lamp);
-    EXPECT_NEAR(p_l / d.pdf_light, 1.0, 1e-6);
-    for (MisHeuristic h : {MisHeuristic::balance, MisHeuristic::power})
-      EXPECT_NEAR(mis_weight(h, d.pdf_light, p_b) + mis_weight(h, p_b, p_l), 1.0, 1e-6);
-    ++checked;
-  }
-  EXPECT_GT(checked, 500);  // fixed seed: 944 floor points see the lamp
-}
 
 // Furnace, depth k <= 3 (before roulette starts): every NEE path returns exactly
 // Le (1 + a + ... + a^k), the direct term a Le being exact (next_event_estimation.hpp).
@@ -190,44 +112,6 @@ TEST(NeeKnownBugsTest, OneSidedLightSampledFromBehindIsRejected) {
   EXPECT_LT(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed,
                                           mcrt::testing::nee_light_from_behind),
             k_alpha);
-}
-// Where light sampling aims on a sphere light (light_sampling.hpp): the cap from inside the
-// enclosure (the room), the cone of the whole sphere from outside both (above the ceiling),
-// the whole sphere from inside it (the furnace).
-TEST(LightSamplingTest, SphereLightPartFollowsTheShadingPoint) {
-  const Scene spheres = make_cornell_spheres();
-  const Emitter& e = spheres.emitters()[0];
-  const Sphere& light = spheres.spheres()[e.index];
-  EXPECT_EQ(sphere_light_part(light, e, Vec3(50, 40, 80)), SphereLightPart::cap);
-  EXPECT_EQ(sphere_light_part(light, e, Vec3(50, 81.5, 80)), SphereLightPart::cap);
-  EXPECT_EQ(sphere_light_part(light, e, mcrt::testing::k_above_ceiling), SphereLightPart::cone);
-  const Scene furnace = make_furnace(0.5, 1.0);
-  EXPECT_EQ(sphere_light_part(furnace.spheres()[0], furnace.emitters()[0], Vec3(0.3, 0, 0)),
-            SphereLightPart::whole);
-  EXPECT_EQ(sphere_light_part(furnace.spheres()[0], furnace.emitters()[0], Vec3(0, 3, 0)),
-            SphereLightPart::cone);
-}
-
-// The cone sampler's points lie on the sphere's near side, within the cone, and their area
-// pdf is p_w cos(theta_y) / r^2 with p_w = 1 / (2 pi (1 - cos(theta_max))).
-TEST(LightSamplingTest, ConePointsLieOnTheNearSideWithTheConePdf) {
-  const Sphere light = mcrt::testing::cornell_spheres_light();
-  const Vec3 x = mcrt::testing::k_above_ceiling;
-  const double d = glm::length(light.center - x);
-  const double cos_max = std::sqrt(1.0 - light.radius * light.radius / (d * d));
-  const double p_w = 1.0 / (k_two_pi * (1.0 - cos_max));
-  EXPECT_NEAR(sphere_cone_pdf_solid_angle(light.center, light.radius, x), p_w, 1e-12 * p_w);
-  Rng rng(4, 0);
-  for (int i = 0; i < 1000; ++i) {
-    const LightPoint y = sample_sphere_cone(light.center, light.radius, x, rng.uniform2());
-    const Vec3 to_y = y.point - x;
-    const double r = glm::length(to_y);
-    EXPECT_NEAR(glm::length(y.point - light.center), light.radius, 1e-9);
-    EXPECT_GE(glm::dot(to_y / r, glm::normalize(light.center - x)), cos_max - 1e-9);
-    const double cos_y = -glm::dot(y.normal, to_y / r);
-    EXPECT_GE(cos_y, -1e-9) << "a point of the far side";
-    EXPECT_NEAR(y.pdf_area, p_w * cos_y / (r * r), 1e-6 * y.pdf_area);
-  }
 }
 
 // Cap-only light sampling gives the wall above the ceiling no direct light.
