@@ -800,6 +800,11 @@ import cache_cases  # noqa: E402
 
 cache_cases.register(sys.modules[__name__])
 
+# Renames that fail with EIO part-way through a run: io_error_cases.py.
+import io_error_cases  # noqa: E402
+
+GROUPS.update(io_error_cases.groups(sys.modules[__name__]))
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
