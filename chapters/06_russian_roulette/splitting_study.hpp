@@ -25,7 +25,7 @@ namespace mcrt {
 // Stream blocks of the splitting rows (+ the row): far above the efficiency sweep's 16 + row.
 inline constexpr std::uint64_t k_splitting_block = std::uint64_t{1} << 20;
 // The study splits the first hit only: splitting deeper multiplies every later ray by n again
-// for less and less variance (splitting.hpp's V_j), as the page's under-the-hood note shows.
+// for less and less variance (splitting.hpp's Var_j), as the page's under-the-hood note shows.
 inline constexpr int k_split_depth = 1;
 
 // Paths of a row that splits n ways: --paths / n (at least 100), so that every row traces about
@@ -101,7 +101,8 @@ inline void write_splitting_plot(const std::filesystem::path& out, double albedo
                         "V(q) = Le**2 * ((1 + a) / (1 - a) * S(q) - 1 / (1 - a)**2)\n"
                         "eff(n, q) = (q > b && d >= 1) ? n / (V(q) * (1 + n * (d - 1 + 1 / "
                         "(1 - q)))) : NaN\n"
-                        "set logscale x 2\nset autoscale xfix\nset key bottom right\n"
+                        "set logscale x 2\nset format x '%g'\nset xtics 2\nset autoscale xfix\n"
+                        "set key bottom right\n"
                         "set samples 200\n",
                         albedo, emission, min_depth),
             plots};

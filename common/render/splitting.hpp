@@ -20,11 +20,11 @@
 /// Closed forms in the furnace (albedo a, emission Le, uniform hemisphere sampling:
 /// E[w] = a, E[w^2] = b = 4 a^2 / 3; m = Le / (1 - a)), fixed q, s <= d. Split at vertices
 /// 0..s-1; from vertex s on the path is fixed-q roulette with d - s bounces before it:
-///   V_0 = furnace_roulette_variance(a, Le, d - s, q),  C_0 = (d - s) + 1/(1 - q)  (its rays)
+///   Var_0 = furnace_roulette_variance(a, Le, d - s, q),  R_0 = (d - s) + 1/(1 - q)  (its rays)
 /// and one splitting vertex more (j = 1..s), from Var[w T] = E[w^2] E[T^2] - (E[w] E[T])^2:
-///   V_j = (b (V_{j-1} + m^2) - a^2 m^2) / n,          C_j = 1 + n C_{j-1}
-/// Mean m, variance V_s, expected rays C_s. At s = 1: V_1 = V_roulette(d, q) / n and
-/// C_1 = 1 + n (d - 1 + 1/(1 - q)): the efficiency 1 / (V_1 C_1) rises with n towards
+///   Var_j = (b (Var_{j-1} + m^2) - a^2 m^2) / n,          R_j = 1 + n R_{j-1}
+/// Mean m, variance Var_s, expected rays R_s. At s = 1: Var_1 = V_roulette(d, q) / n and
+/// R_1 = 1 + n (d - 1 + 1/(1 - q)): the efficiency 1 / (Var_1 R_1) rises with n towards
 /// E[R] / (E[R] - 1) times roulette's, E[R] = d + 1/(1 - q): only the shared camera ray is saved.
 
 #include <optional>
@@ -110,7 +110,7 @@ inline Color estimate_path_radiance_splitting(const Scene& scene, const Ray& ray
 // ---------------------------------------------------------------------------------------------
 // Furnace closed forms (derived at the top of this file), fixed q, splitting.depth <= d.
 
-/// Var[L] with splitting: V_0 = roulette's with d - s, V_j = (b (V_{j-1} + m^2) - a^2 m^2) / n.
+/// Var[L] with splitting: Var_0 = roulette's with d - s, Var_j = (b (Var_{j-1} + m^2) - a^2 m^2) / n.
 inline double furnace_splitting_variance(double albedo, double emission, int min_depth, double q,
                                          const Splitting& splitting) {
   const double a = albedo, b = furnace_roulette_variance_threshold(albedo);
@@ -121,7 +121,7 @@ inline double furnace_splitting_variance(double albedo, double emission, int min
   return variance;
 }
 
-/// E[rays] with splitting: C_0 = (d - s) + 1/(1 - q), C_j = 1 + n C_{j-1}.
+/// E[rays] with splitting: R_0 = (d - s) + 1/(1 - q), R_j = 1 + n R_{j-1}.
 inline double furnace_splitting_mean_rays(int min_depth, double q, const Splitting& splitting) {
   double rays = furnace_roulette_mean_rays(min_depth - splitting.depth, q);
   for (int j = 1; j <= splitting.depth; ++j) rays = 1.0 + splitting.n * rays;

@@ -2,9 +2,9 @@
 // emission Le), fixed-q roulette after d, the first s vertices split n ways:
 //  - the mean radiance is Le / (1 - a), the geometric series, whatever n: z-tests with the
 //    standard error from the closed-form variance;
-//  - the rays a path traces have the mean C_s (C_0 = d - s + 1/(1 - q), C_j = 1 + n C_{j-1})
+//  - the rays a path traces have the mean R_s (R_0 = d - s + 1/(1 - q), R_j = 1 + n R_{j-1})
 //    and the variance n^s q / (1 - q)^2: z-tests;
-//  - the variance is V_s (V_j = (b (V_{j-1} + m^2) - a^2 m^2) / n): the variance test.
+//  - the variance is Var_s (Var_j = (b (Var_{j-1} + m^2) - a^2 m^2) / n): the variance test.
 // Every check is designed for a false-failure rate alpha = 1e-4.
 //
 // The moments each test needs are those of chapter 06's roulette checks (splitting averages
@@ -52,7 +52,7 @@ MCRT_STATISTICAL_CHECK(splitting_rays_a06_d2_q08_s2_n3, 1e-4) {
   return mcrt::testing::splitting_rays_p_value(k_two_vertices, paths(k_two_vertices, seed, 12));
 }
 
-// The variance V_2 at a = 0.5, d = 2, q = 0.9, two vertices split 3 ways: the eighth moment's
+// The variance Var_2 at a = 0.5, d = 2, q = 0.9, two vertices split 3 ways: the eighth moment's
 // ratio (2a)^8 / (9 q^7) = 0.23, as chapter 06's roulette variance check.
 MCRT_STATISTICAL_CHECK(splitting_furnace_variance_a05_d2_q09_s2_n3, 1e-4) {
   const SplittingFurnaceSetup setup{0.5, 1.0, {2, RoulettePolicy::fixed, 0.9, 0.05}, {2, 3}};
