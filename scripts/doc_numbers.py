@@ -563,6 +563,16 @@ number("ch06.largest_variance_gap_percent_from_q0.5", "ch06", lambda runs: max(
     for row in runs.rows("ch06", "efficiency.csv")
     if row["policy"] == "fixed" and float(row["q"]) >= 0.5))
 number("ch06.mean_path_length", "ch06", summary_value("ch06", "mean_path_length"))
+# splitting.csv: the first hit split n ways; gains are efficiency at n = 16 over n = 1.
+for q in ("0.6", "0.8"):
+    for n in ("1", "16"):
+        for column in ("efficiency", "efficiency_theory"):
+            number(f"ch06.split_q{q}_n{n}_{column}", "ch06",
+                   cell("ch06", "splitting.csv", column, q=q, n=n))
+    for column in ("efficiency", "efficiency_theory"):
+        number(f"ch06.split_q{q}_gain_{column}", "ch06", lambda runs, q=q, column=column: runs.cell(
+            "ch06", "splitting.csv", column, q=q, n="16") / runs.cell(
+            "ch06", "splitting.csv", column, q=q, n="1"))
 
 # Chapter 07: the default run.
 ch07_pdfs = {"uniform": "uniform", "cosine": "cosine", "cos2": "cos^2", "cos4": "cos^4",

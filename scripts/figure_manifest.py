@@ -136,6 +136,12 @@ def check(repo, manifest, script_text, docs, bin_dir=None):
             problems.append(f"{figure}: made from {entry['run']}:{entry['file']}, but "
                             "make-figures now takes it from "
                             + ":".join(figure_source(figure, sources)))
+    # A chapter figure no page shows is a leftover: nothing remakes it, and nobody reads it.
+    shown = set(referenced_figures(docs))
+    folder = os.path.join(repo, "docs", "figures")
+    for name in sorted(os.listdir(folder)):
+        if FIGURE.fullmatch("figures/" + name) and name not in shown:
+            problems.append(f"{name}: no docs page shows it (remove it, or show it on a page)")
     for label, run in sorted(manifest["runs"].items()):
         if runs.get(label) != run["command"]:
             problems.append(f"run {label}: made with '{run['command']}', make-figures now runs "

@@ -17,7 +17,9 @@
 //   bias:         the depth cut at k against roulette after k bounces, k = 0..--depth
 //   efficiency:   for each q of --q: variance, rays per path, seconds, 1 / (variance x time)
 //   path length:  the rays of each path at --fixed-q against the geometric law
-// (furnace_studies.hpp), and the chosen --scene is rendered both ways at --spp.
+//   splitting:    the first hit split into n paths of 1/n its weight, for each n of --split
+//                 and q of --split-q: variance, rays per path, 1 / (variance x rays)
+// (furnace_studies.hpp, splitting_study.hpp), and the chosen --scene is rendered both ways at --spp.
 
 #include <algorithm>
 #include <cstdint>
@@ -40,6 +42,7 @@
 #include "plan.hpp"
 #include "plots.hpp"
 #include "report.hpp"
+#include "splitting_study.hpp"
 
 using namespace mcrt;
 
@@ -60,7 +63,9 @@ struct Options {
   int depth = 10;  // the depth cut of depth_cut.png, and the largest k of bias.csv
   Roulette roulette{3, RoulettePolicy::throughput, 0.7, 0.05};  // --min-depth --policy --fixed-q --floor
   std::vector<double> q{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};  // the efficiency sweep
-  int paths = 200000;  // furnace paths per row of every study
+  int paths = 200000;  // furnace paths per row of every study (/ n for splitting.csv)
+  std::vector<double> split_q{0.6, 0.8};  // the splitting study's fixed q
+  std::vector<int> split_n{1, 2, 4, 8, 16};       // the splitting study's n
 };
 
 template <class Estimator>
@@ -90,7 +95,7 @@ void add_render_row(Table& table, const char* estimator, const RenderResult& r, 
 }
 
 struct Results {
-  Table bias, efficiency, lengths, renders;
+  Table bias, efficiency, lengths, renders, splitting;
   PathStats fixed_paths;
   RenderTotals total;
 };
@@ -104,7 +109,8 @@ void run(const CLI::App& app, const Options& o) {
                         p.furnace_emission, o.paths, o.common.seed, o.common.threads, o.depth,
                         o.roulette, o.q};
 
-  Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(), {}, {}};
+  Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(),
+            splitting_study(furnace, o.split_q, o.split_n), {}, {}};
   r.lengths = path_length_study(furnace, r.fixed_paths);
   const RenderResult cut =
       render_image(camera, o, "depth_cut", [&](const Ray& ray, Rng& rng, RayCount& count) {
@@ -123,7 +129,10 @@ void run(const CLI::App& app, const Options& o) {
   write_csv(o.common.dir / "efficiency.csv", r.efficiency);
   write_csv(o.common.dir / "path_length.csv", r.lengths);
   write_csv(o.common.dir / "renders.csv", r.renders);
+  write_csv(o.common.dir / "splitting.csv", r.splitting);
   write_plots(o.common.dir, o, r.efficiency, r.bias);
+  write_splitting_plot(o.common.dir, p.furnace_albedo, p.furnace_emission, o.roulette.min_depth,
+                       o.split_q, r.splitting);
   write_summary(k_chapter, app, o, r);
   if (!o.common.quiet) print_tables(k_chapter, o, r);
 }
@@ -154,5 +163,8 @@ int main(int argc, char** argv) {
                   k_highest_q);
   add_number_option(app, "--paths", o.paths, "Furnace paths per row of every study", 100,
                     100000000);
+  add_list_option(app, "--split-q", o.split_q, "The fixed q of the splitting study (a list)",
+                  k_lowest_q, k_highest_q);
+  add_list_option(app, "--split", o.split_n, "The n of the splitting study (a list)", 1, 64);
   return app.run(argc, argv, [&] { run(app, o); });
 }

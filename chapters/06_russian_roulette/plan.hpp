@@ -34,13 +34,18 @@ inline RayWork predicted_work(const auto& o) {
   for (double q : o.q) furnace += roulette_rays(o.roulette.min_depth, q);
   furnace += roulette_rays(o.roulette.min_depth, q_throughput);
   rays += furnace * o.paths;
+  // splitting.csv: max(100, paths / n) paths per row, each 1 + n (d - 1 + 1/(1 - q)) rays.
+  for (double q : o.split_q)
+    for (int n : o.split_n)
+      rays += std::max(100, o.paths / n) *
+              (1.0 + n * roulette_rays(std::max(0, o.roulette.min_depth - 1), q));
   return {rays, "renders + furnace studies, expected rays for roulette"};
 }
 
 inline void check_request(const auto& o) {
   check_image_size(o.image);
   check_furnace_albedo(o.scene.params.furnace_albedo);
-  check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --spp, --depth",
+  check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --split, --split-q, --spp, --depth",
                   o.common.threads, "lower one of them, or the image size");
   // At most 3 images at once (measured: 34 bytes per pixel at 1024x512).
   check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 3.0,

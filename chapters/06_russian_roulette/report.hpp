@@ -31,7 +31,7 @@ inline int rows_with_zero_in_ci(const Table& bias) {
 
 // summary.json: the setup, the totals, the furnace's closed forms beside the measured, every
 // table; timings.json: the times and the q they find most efficient. `r` holds the tables
-// (bias, efficiency, lengths, renders), fixed_paths and total.
+// (bias, efficiency, lengths, renders, splitting), fixed_paths and total.
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const auto& r) {
   const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
@@ -66,6 +66,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["bias"] = r.bias.json();
   summary["efficiency"] = r.efficiency.json();
   summary["path_length"] = r.lengths.json();
+  summary["splitting"] = r.splitting.json();
   summary["renders"] = r.renders.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
@@ -75,7 +76,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   write_timings(o.common.dir, timings, app);
 }
 
-// The console: the furnace, its three studies, the renders.
+// The console: the furnace, its four studies, the renders.
 inline void print_tables(const Chapter& chapter, const auto& o, const auto& r) {
   const double a = o.scene.params.furnace_albedo;
   fmt::print("{}  furnace a = {}, Le = {}: E[L] = Le / (1 - a) = {:.6g}   {} paths per row\n",
@@ -91,9 +92,14 @@ inline void print_tables(const Chapter& chapter, const auto& o, const auto& r) {
   fmt::print("path length at q = {}: mean {:.4f} rays, theory d + 1/(1 - q) = {:.4f}\n",
              o.roulette.q, r.fixed_paths.rays.mean(),
              furnace_roulette_mean_rays(o.roulette.min_depth, o.roulette.q));
+  fmt::print("splitting: the first hit as n paths of 1/n its weight, fixed-q roulette after d "
+             "= {}; efficiency = 1 / (variance x rays per path)\n{}",
+             o.roulette.min_depth,
+             r.splitting.console({"q", "n", "paths", "variance", "variance_theory",
+                                  "rays_per_path", "efficiency", "efficiency_theory"}));
   fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
              r.renders.console());
-  fmt::print("wrote {}/{{bias,efficiency,path_length,renders}}.csv and plots, "
+  fmt::print("wrote {}/{{bias,efficiency,path_length,splitting,renders}}.csv and plots, "
              "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n",
              o.common.out.string());
 }

@@ -18,7 +18,8 @@ using namespace mcrt::testing;
 namespace {
 
 const std::string k_program = "ch06_russian_roulette";
-const std::string k_tiny = "--width 16 --height 12 --spp 2 --depth 4 --paths 4000 --q 0.7,0.9 ";
+const std::string k_tiny =
+    "--width 16 --height 12 --spp 2 --depth 4 --paths 4000 --q 0.7,0.9 --split 1,2 --split-q 0.7 ";
 
 TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
   const auto dir = fresh_dir("ch06_smoke");
@@ -64,6 +65,24 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
   EXPECT_NEAR(lengths.number(3, "fraction"), 0.3, 0.03);  // 1 - q, q = 0.7; 4000 paths: +-0.007
   EXPECT_EQ(lengths.number(3, "probability"), 0.3);
 
+  // splitting.csv: q = 0.7, n = 1 and 2 (4000 and 2000 paths); the first hit split n ways
+  // costs 1 + n (d - 1 + 1/(1 - q)) rays and has 1/n of roulette's variance.
+  const CsvFile splitting(dir / "splitting.csv");
+  ASSERT_EQ(splitting.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double n = static_cast<double>(i + 1);
+    EXPECT_EQ(splitting.number(i, "n"), n);
+    EXPECT_EQ(splitting.number(i, "paths"), 4000.0 / n);
+    EXPECT_NEAR(splitting.number(i, "rays_per_path_theory"), 1.0 + n * (2.0 + 1.0 / 0.3), 1e-4);
+    // The rays within 5% (their sd over 2000 paths is ~1.5%), the variance within 25% (as
+    // efficiency.csv's: a finite fourth moment at q = 0.7, so the sample variance is within ~5%).
+    EXPECT_NEAR(splitting.number(i, "rays_per_path") / splitting.number(i, "rays_per_path_theory"),
+                1.0, 0.05);
+    EXPECT_NEAR(splitting.number(i, "variance") / splitting.number(i, "variance_theory"), 1.0, 0.25);
+    EXPECT_NEAR(splitting.number(i, "variance_theory"),
+                efficiency.number(0, "variance_theory") / n, 1e-6);
+  }
+
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["scene"], "cornell");
   EXPECT_EQ(summary["min_depth"], 3);
@@ -74,6 +93,7 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
   EXPECT_DOUBLE_EQ(summary["furnace"]["radiance_theory"].get<double>(), 2.0);
   EXPECT_EQ(summary["bias_rows_with_zero_in_roulette_ci"], 5);
   EXPECT_EQ(summary["efficiency"].size(), 3u);
+  EXPECT_EQ(summary["splitting"].size(), 2u);
   EXPECT_EQ(summary["flags"]["q"], "0.7,0.9");
 
   const CsvFile renders(dir / "renders.csv");
@@ -86,7 +106,7 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
     EXPECT_EQ(image.height, 12);
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string(name) + ".png")));
   }
-  for (const char* plot : {"bias.gp", "efficiency.gp", "path_length.gp"})
+  for (const char* plot : {"bias.gp", "efficiency.gp", "path_length.gp", "splitting.gp"})
     EXPECT_TRUE(std::filesystem::exists(dir / plot)) << plot;
   for (const auto& entry : std::filesystem::directory_iterator(dir))  // the manifest aside
     if (entry.path().filename() != mcrt::k_manifest_name) {
@@ -126,7 +146,8 @@ TEST(Ch06Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
   // and a best q picked by time, all of which changed from run to run).
   for (const char* file : {"roulette.pfm", "roulette.png", "depth_cut.pfm", "depth_cut.png",
                            "bias.csv", "path_length.csv", "efficiency.gp", "efficiency.svg",
-                           "efficiency.png"})
+                           "efficiency.png", "splitting.csv", "splitting.gp", "splitting.svg",
+                           "splitting.png"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   // Timings differ from run to run, and the best q of the CSV is chosen by measured time.
   const std::vector<std::string> timing{"seconds", "efficiency", "efficiency_theory", "best_efficiency"};
@@ -141,7 +162,7 @@ TEST(Ch06Test, HelpNamesEveryFlag) {
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--scene", "--albedo", "--emission", "--width", "--height", "--spp",
                            "--depth", "--min-depth", "--policy", "--fixed-q", "--floor", "--q",
-                           "--paths", "--seed", "--threads", "--out", "--quiet"})
+                           "--paths", "--split", "--split-q", "--seed", "--threads", "--out", "--quiet"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -162,7 +183,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--depth -1", "--depth"}, BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--paths 100000000 --q 0.999", "--paths"},
-                      BadInput{"--threads 0", "--threads"},
+                      BadInput{"--threads 0", "--threads"}, BadInput{"--split 0", "--split"},
+                      BadInput{"--split 2,65", "--split"}, BadInput{"--split 2,x", "--split"},
+                      BadInput{"--split-q 1", "--split-q"}, BadInput{"--split-q 0.5,", "--split-q"},
                       // Numbers are read as written: nothing clamped, finite reals only.
                       BadInput{"--fixed-q nan", "--fixed-q"}, BadInput{"--floor inf", "--floor"},
                       BadInput{"--paths 1e6", "--paths"}, BadInput{"--albedo nan", "--albedo"},

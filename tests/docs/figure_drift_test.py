@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The figures in docs/figures are what scripts/make-figures makes (scripts/figure_manifest.py
 says how, and why the check does not render them again), and the check catches what it is for:
-a figure edited by hand, a figure left from an older command, a run whose default changed.
+a figure edited by hand, a figure left from an older command, a run whose default changed, a
+chapter figure no page shows.
 
     figure_drift_test.py REPO_ROOT [BIN_DIR]    (BIN_DIR: the chapter programs, for the flags)
 """
@@ -81,6 +82,15 @@ class TheCheckTest(unittest.TestCase):
         figure = sorted(manifest["figures"])[0]
         del manifest["figures"][figure]
         self.assertTrue(any(figure in p for p in self.check(manifest)))
+
+    def test_a_figure_no_page_shows_fails(self):
+        # A copy of a shown figure under a chapter name no page uses: a leftover.
+        shutil.copy(os.path.join(self.repo, "docs", "figures", sorted(self.manifest["figures"])[0]),
+                    os.path.join(self.repo, "docs", "figures", "08_unused.png"))
+        problems = self.check()
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn("08_unused.png", problems[0])
+        self.assertIn("no docs page shows it", problems[0])
 
     def test_a_changed_command_fails(self):
         label = "ch05"
