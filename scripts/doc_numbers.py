@@ -698,7 +698,7 @@ number("ch04.fitted_albedo", "ch04", ch04_fitted_albedo)
 CH08_LARGEST_BUDGET = 512
 CH08_SCENES = (("furnace", "1", "furnace"), ("cornell", "0.1", "cornell_x0.1"),
                ("cornell", "1", "cornell_x1"), ("cornell", "3", "cornell_x3"),
-               ("cornell-spheres", "1", "cornell-spheres"))
+               ("cornell-spheres", "1", "cornell-spheres"), ("smallpt", "1", "smallpt"))
 CH08_ESTIMATORS = ("uniform", "cosine", "cosine_rr", "nee", "mis_balance", "mis_power")
 for image in ("nee", "mis"):
     number(f"ch08.{image}_rel_mse", "ch08", cell("ch08", "images.csv", "rel_mse", image=image))

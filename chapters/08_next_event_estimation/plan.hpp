@@ -37,24 +37,24 @@ inline double furnace_rays_per_sample(const auto& o) {
                                                                  Roulette{}.min_depth));
 }
 
-// The references (at most 5, one per scene of the shoot-out and the chosen one, if not cached),
-// the two images at --spp, and the shoot-out: 6 estimators x 5 scenes, each up to its largest
+// The references (at most 6, one per scene of the shoot-out and the chosen one, if not cached),
+// the two images at --spp, and the shoot-out: 6 estimators x 6 scenes, each up to its largest
 // budget plus one pass (at most 65 rays a pixel: the depth-64 baselines; in the furnace, its
 // paths' length if that is more).
 inline RayWork predicted_work(const auto& o) {
   const double pixels = static_cast<double>(o.image.width) * o.image.height;
   const double furnace = furnace_rays_per_sample(o);
   const double references =
-      4.0 * reference_predicted_rays(reference_spec(o, "cornell", 1.0), k_rays_per_sample) +
+      5.0 * reference_predicted_rays(reference_spec(o, "cornell", 1.0), k_rays_per_sample) +
       reference_predicted_rays(reference_spec(o, "furnace", 1.0), furnace);
   const double chosen = o.scene.scene == "furnace" ? furnace : k_rays_per_sample;
   const double images = 2.0 * o.spp * pixels * chosen;
-  const double shootout = (24.0 * (o.budgets.back() + 65.0) +
+  const double shootout = (30.0 * (o.budgets.back() + 65.0) +
                            6.0 * (o.budgets.back() + std::max(65.0, furnace))) * pixels;
   const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
   return {references + images + shootout + plates,
-          "(5 references x reference spp + 2 x spp) x pixels x 32 rays (furnace: 2 (3 + 1 / "
-          "(1 - albedo)) if more) + 30 x (largest --ray-budgets + 65) x pixels + 20 x "
+          "(6 references x reference spp + 2 x spp) x pixels x 32 rays (furnace: 2 (3 + 1 / "
+          "(1 - albedo)) if more) + 36 x (largest --ray-budgets + 65) x pixels + 20 x "
           "--plates-spp x 2.25 pixels x 3 rays"};
 }
 

@@ -37,7 +37,7 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   }
   // One cached reference per scene of the shoot-out but the furnace (a closed form).
   for (const char* stem : {"cornell_ls0.1_12x9", "cornell_ls1_12x9", "cornell_ls3_12x9",
-                           "cornell-spheres_ls1_12x9"}) {
+                           "cornell-spheres_ls1_12x9", "smallpt_ls1_12x9"}) {
     EXPECT_TRUE(std::filesystem::exists(refs / (std::string(stem) + ".pfm"))) << stem;
     const auto info = read_json(refs / (std::string(stem) + ".json"));
     EXPECT_EQ(info["spp"], 4);
@@ -53,7 +53,7 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
     EXPECT_NE(std::find(header.begin(), header.end(), column), header.end()) << column;
   for (const char* column : {"seconds", "rays_per_second"})  // timings.json's, not the CSV's
     EXPECT_EQ(std::find(header.begin(), header.end(), column), header.end()) << column;
-  EXPECT_EQ(csv.size(), 5u * 6u * 2u);  // scenes x estimators x budgets
+  EXPECT_EQ(csv.size(), 6u * 6u * 2u);  // scenes x estimators x budgets
   for (std::size_t i = 0; i < csv.size(); ++i) {
     EXPECT_GE(csv.number(i, "spp"), 1.0);
     // photographed at the first pass that reaches the budget: past it by less than one pass
@@ -65,13 +65,14 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
                 1.0 / (csv.number(i, "rel_mse") * csv.number(i, "rays_per_pixel")),
                 1e-5 * csv.number(i, "efficiency"));  // the CSV's 6 significant digits
   }
-  EXPECT_EQ(read_json(dir / "timings.json")["shootout"].size(), 60u);
+  EXPECT_EQ(read_json(dir / "timings.json")["shootout"].size(), 72u);
   EXPECT_TRUE(std::filesystem::exists(dir / "contact_sheet.png"));
-  for (const char* scene : {"furnace", "cornell_x0.1", "cornell_x1", "cornell_x3", "cornell-spheres"})
+  for (const char* scene :
+       {"furnace", "cornell_x0.1", "cornell_x1", "cornell_x3", "cornell-spheres", "smallpt"})
     EXPECT_TRUE(std::filesystem::exists(dir / fmt::format("relmse_vs_rays_{}.gp", scene))) << scene;
   const auto summary = read_json(dir / "summary.json");
   EXPECT_EQ(summary["scene"], "cornell");
-  EXPECT_EQ(summary["shootout"].size(), 60u);
+  EXPECT_EQ(summary["shootout"].size(), 72u);
 
   // A second run reuses the cache; other settings rebuild it.
   const auto pfm = refs / "cornell_ls1_12x9.pfm";
