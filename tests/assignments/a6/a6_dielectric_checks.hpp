@@ -319,10 +319,12 @@ inline std::string diagnose_branch_counts(const std::vector<BranchCount>& counts
                          static_cast<double>(b.reflected) / k_a6_branch_samples,
                          k_a6_branch_samples, b.reflectance);
   const auto right = [](const BranchCount& b) { return b.reflectance; };
-  const auto entering_ratio =
-      [](const BranchCount& b) {  // Fresnel from air into glass, whichever the side
-        return b.c.entering ? b.reflectance : fresnel_dielectric(b.c.cos_i, 1.0, b.c.ior);
-      };
+  // Fresnel from air into glass, whichever the side (past the critical angle the direction
+  // still reflects: no refracted one exists)
+  const auto entering_ratio = [](const BranchCount& b) {
+    return b.c.entering || b.reflectance >= 1.0 ? b.reflectance
+                                                : fresnel_dielectric(b.c.cos_i, 1.0, b.c.ior);
+  };
   const auto swapped = [](const BranchCount& b) { return 1.0 - b.reflectance; };
   if (branch_p_value(counts, right, true) < k_seed_alpha &&
       branch_p_value(counts, entering_ratio, true) > 1e-3)
@@ -339,34 +341,41 @@ inline std::string diagnose_branch_counts(const std::vector<BranchCount>& counts
              "the fraction of samples that reflect is not the Fresnel reflectance R (table above)");
 }
 
+/// One seed of the branch test: 0 at the first invalid sample (its diagnosis in `wrong`), else
+/// the chi-square p-value of the reflected counts against R (on rejection, the table of
+/// fractions and a diagnosis in `table`, if still empty).
+template <class S>
+double dielectric_branch_p_value(S& subject, std::uint64_t seed, std::string& wrong,
+                                 std::string& table) {
+  std::vector<BranchCount> counts;
+  for (std::size_t i = 0; i < k_a6_dielectric_cases.size(); ++i) {
+    const DielectricCase& c = k_a6_dielectric_cases[i];
+    const std::vector<DielectricQuery> queries = a6_branch_queries(c, seed, i);
+    const std::vector<DielectricAnswer> answers = subject.a6_dielectric(c.ior, queries);
+    BranchCount b{c, expect_dielectric(c.ior, queries.front()).reflectance, 0};
+    for (std::size_t k = 0; k < queries.size(); ++k) {
+      bool reflected = false;
+      const std::string problem = judge_dielectric_sample(c.ior, queries[k], answers[k], reflected);
+      if (!problem.empty()) {
+        if (wrong.empty()) wrong = problem;
+        return 0.0;  // an invalid sample rejects outright
+      }
+      b.reflected += reflected;
+    }
+    counts.push_back(b);
+  }
+  const double p = branch_p_value(counts, [](const BranchCount& b) { return b.reflectance; });
+  if (p < k_seed_alpha && table.empty()) table = diagnose_branch_counts(counts);
+  return p;
+}
+
 /// a6.4: every sample valid (judge_dielectric_sample) and the reflected fractions following R,
 /// at the grading seeds (majority of 2 rejections at k_seed_alpha).
 template <class S>
 TaskResult check_dielectric_branches(S&& subject) {
   std::string wrong, table;
-  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    std::vector<BranchCount> counts;
-    for (std::size_t i = 0; i < k_a6_dielectric_cases.size(); ++i) {
-      const DielectricCase& c = k_a6_dielectric_cases[i];
-      const std::vector<DielectricQuery> queries = a6_branch_queries(c, seed, i);
-      const std::vector<DielectricAnswer> answers = subject.a6_dielectric(c.ior, queries);
-      BranchCount b{c, expect_dielectric(c.ior, queries.front()).reflectance, 0};
-      for (std::size_t k = 0; k < queries.size(); ++k) {
-        bool reflected = false;
-        const std::string problem =
-            judge_dielectric_sample(c.ior, queries[k], answers[k], reflected);
-        if (!problem.empty()) {
-          if (wrong.empty()) wrong = problem;
-          return 0.0;  // an invalid sample rejects outright
-        }
-        b.reflected += reflected;
-      }
-      counts.push_back(b);
-    }
-    const double p = branch_p_value(counts, [](const BranchCount& b) { return b.reflectance; });
-    if (p < k_seed_alpha && table.empty()) table = diagnose_branch_counts(counts);
-    return p;
-  });
+  const SeedVerdict v = at_grading_seeds(
+      [&](std::uint64_t seed) { return dielectric_branch_p_value(subject, seed, wrong, table); });
   std::string message =
       fmt::format("the reflected fraction against Fresnel's R at {} angles, {} samples each: {}",
                   k_a6_dielectric_cases.size(), k_a6_branch_samples, v.describe());
