@@ -61,8 +61,15 @@ inline double dielectric_reflectance(const Material& material, double cos_i, dou
 /// The dielectric: the path at a hit with unit normal n facing wo, `entering` when wo is on
 /// the outside (Hit::front_face), reflects with probability R and refracts otherwise; u in
 /// [0, 1) chooses. Outside is air (index 1), inside material.ior.
+///
+/// The contract (task a6.4): wi is a unit vector, either the mirror direction of wo or the
+/// direction Snell's law gives on the far side (transmitted = true); it is the mirror
+/// direction with probability R = dielectric_reflectance(...) for light arriving from the
+/// side wo is on (indices in that order), and always where no refracted direction exists;
+/// weight is the tint, is_delta true. Nothing in it may be NaN.
 inline BsdfSample sample_dielectric(const Material& material, const Vec3& wo, const Vec3& n,
                                     bool entering, double u) {
+  // ASSIGNMENT a6.4 BEGIN stub: (void)material; (void)wo; (void)n; (void)entering; (void)u; NOT_IMPLEMENTED(sample_dielectric);
   const double eta_i = entering ? 1.0 : material.ior, eta_t = entering ? material.ior : 1.0;
   const double eta = eta_i / eta_t;
   const double cos_i = std::clamp(glm::dot(wo, n), 0.0, 1.0);
@@ -71,6 +78,7 @@ inline BsdfSample sample_dielectric(const Material& material, const Vec3& wo, co
   const double reflectance = dielectric_reflectance(material, cos_i, *cos_t, eta_i, eta_t);
   if (u < reflectance) return sample_mirror(material, wo, n);
   return {glm::normalize(refract(wo, n, cos_i, *cos_t, eta)), material.tint, true, true};
+  // ASSIGNMENT a6.4 END
 }
 
 /// A delta material's sample at `hit`, wo = -(the arriving ray's direction); u in [0, 1) is

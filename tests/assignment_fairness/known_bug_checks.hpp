@@ -18,6 +18,8 @@
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "render/mis_known_bugs_a6.hpp"
+#include "render/dielectric_known_bugs_a6.hpp"
+#include "assignments/a6/a6_dielectric_checks.hpp"
 #include "render/recursive_estimator_known_bugs_a3.hpp"
 #include "integration/disk_area_known_bugs.hpp"
 #include "integration/monte_carlo_known_bugs.hpp"
@@ -292,6 +294,13 @@ inline std::vector<MeasuredBug> known_bugs() {
   // unbiased: the region test must pass it (its efficiency test catches it: a threshold row)
   mis("a6_light_sampling_passed_off_as_mis_regions", "A6LightSamplingPassedOffAsMis", light_sampling_as_mis(),
       A6Strategy::mis_balance, false);
+  // a6.4: a dielectric whose leaving Fresnel uses the indices of entering, through the branch test
+  add("a6_dielectric_fresnel_not_inverted", "A6DielectricFresnelNotInvertedWhenLeaving", "a6_dielectric_branch",
+      [](std::uint64_t seed) {
+        const auto wrong = with_dielectric(&dielectric_fresnel_not_inverted);
+        std::string invalid, table;
+        return dielectric_branch_p_value(wrong, seed, invalid, table);
+      });
   return bugs;
 }
 

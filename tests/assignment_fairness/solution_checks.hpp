@@ -15,6 +15,7 @@
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
 #include "assignments/a6/a6_checks.hpp"
+#include "assignments/a6/a6_dielectric_checks.hpp"
 #include "assignments/subject/subject.hpp"
 #include "sampling/cosine_power.hpp"
 
@@ -115,6 +116,12 @@ inline std::vector<MeasuredCheck> solution_checks() {
                         double z = 0.0;
                         return mis_regions_p_value(mis_region_stats_at(s, h, seed), worst, z);
                       }});
+  // a6.4: the glass's reflected fractions against Fresnel's R (an invalid sample gives 0)
+  checks.push_back({"a6_dielectric_branch", "a6.A6.Task4ReflectsInTheFresnelFraction", k_seed_alpha, true, false,
+                    [&s](std::uint64_t seed) {
+                      std::string wrong, table;
+                      return dielectric_branch_p_value(s, seed, wrong, table);
+                    }});
 #ifdef MCRT_FAIRNESS_HIDDEN
   for (MeasuredCheck& c : hidden_statistical_checks(s)) checks.push_back(std::move(c));
 #endif

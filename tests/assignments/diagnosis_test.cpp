@@ -21,6 +21,8 @@
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "render/mis_known_bugs_a6.hpp"
+#include "render/dielectric_known_bugs_a6.hpp"
+#include "assignments/a6/a6_dielectric_checks.hpp"
 #include "render/recursive_estimator_known_bugs_a3.hpp"
 #include "integration/disk_area_known_bugs.hpp"
 #include "integration/monte_carlo_known_bugs.hpp"
@@ -762,6 +764,42 @@ TEST_F(Diagnoses, A6ErrorMapFlagsWhereTheMissingWeightMatters) {
   EXPECT_EQ(at(k_a6_bsdf_region, 0), 255);
   EXPECT_LT(at(k_a6_bsdf_region, 1), 160) << "red: green and blue well below red";
   EXPECT_GT(at(k_a6_light_region, 1), 200) << "near white: |z| < 1";
+}
+
+// ---- a6.4 the dielectric (render/dielectric_known_bugs_a6.hpp)
+
+TEST_F(Diagnoses, A6DielectricSolutionPasses) {
+  const auto solution = with_dielectric(&sample_dielectric);
+  const TaskResult furnace = check_dielectric_furnace(solution);
+  EXPECT_TRUE(furnace.passed) << furnace.message;
+  const TaskResult branches = check_dielectric_branches(solution);
+  EXPECT_TRUE(branches.passed) << branches.message;
+}
+
+TEST_F(Diagnoses, A6DielectricFresnelNotInvertedWhenLeaving) {
+  const auto wrong = with_dielectric(&dielectric_fresnel_not_inverted);
+  // R + T = 1 still: the furnace cannot see it; the reflected fraction leaving the glass does
+  EXPECT_TRUE(check_dielectric_furnace(wrong).passed);
+  expect_diagnosis(check_dielectric_branches(wrong),
+                   "leaving the glass your reflected fraction follows Fresnel with the indices of entering");
+}
+
+TEST_F(Diagnoses, A6DielectricWithoutTotalInternalReflection) {
+  const auto wrong = with_dielectric(&dielectric_without_total_internal_reflection);
+  const TaskResult furnace = check_dielectric_furnace(wrong);  // the bubble (n = 0.75) meets it from outside
+  expect_diagnosis(furnace, "your direction is NaN");
+  EXPECT_NE(furnace.message.find("total internal reflection"), std::string::npos) << furnace.message;
+  expect_diagnosis(check_dielectric_branches(wrong), "your direction is NaN leaving glass of n = 1.5");
+  const TaskResult r = check_dielectric_branches(wrong);
+  EXPECT_NE(r.message.find("total internal reflection"), std::string::npos) << r.message;
+}
+
+TEST_F(Diagnoses, A6DielectricRefractionNotNormalised) {
+  const auto wrong = with_dielectric(&dielectric_refraction_not_normalised);
+  expect_diagnosis(check_dielectric_furnace(wrong), "your refracted direction has length");
+  const TaskResult r = check_dielectric_branches(wrong);
+  expect_diagnosis(r, "your refracted direction has length 1.500000, not 1, entering glass of n = 1.5");
+  EXPECT_NE(r.message.find("normalise it"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A6LightPdfPerUnitArea) {

@@ -6,6 +6,7 @@
 //   a6.1 sample_phong_lobe_local(u, m), phong_lobe_pdf(wi, reflected, m)
 //   a6.2 balance_heuristic(p_s, p_o), power_heuristic(p_s, p_o)
 //   a6.3 estimate_mis(scene, hit, wo, heuristic, rng, count) (and draw_light_sample in it)
+//   a6.4 sample_dielectric(material, wo, n, entering, u)
 
 #include <cstdint>
 #include <optional>
@@ -15,7 +16,9 @@
 #include "core/rng.hpp"
 #include "geometry/camera.hpp"
 #include "render/glossy_direct.hpp"
+#include "render/material.hpp"
 #include "render/mis.hpp"
+#include "render/specular.hpp"
 #include "render/veach_plates.hpp"
 
 namespace mcrt::testing::assignment {
@@ -72,6 +75,28 @@ std::vector<double> a6_region_samples(Mis&& mis, A6Strategy strategy, int width,
     }
     return mis(scene, hit, wo, MisHeuristic::power, rng, count);
   });
+}
+
+/// The glass a6.4 is graded on: index `ior` inside, air outside, tint 1, the exact Fresnel
+/// equations (so every weight is exactly 1, and the reflected fraction is R).
+inline Material a6_glass(double ior) {
+  Material glass;
+  glass.delta = Delta::dielectric;
+  glass.ior = ior;
+  return glass;
+}
+
+/// `sample(material, wo, n, entering, u)` (sample_dielectric or a known-wrong one) at each query.
+template <class Sample>
+std::vector<DielectricAnswer> dielectric_answers(Sample&& sample, double ior, const std::vector<DielectricQuery>& queries) {
+  const Material glass = a6_glass(ior);
+  std::vector<DielectricAnswer> out;
+  out.reserve(queries.size());
+  for (const DielectricQuery& q : queries) {
+    const BsdfSample s = sample(glass, q.wo, q.n, q.entering, q.u);
+    out.push_back({s.wi, Vec3(s.weight), s.transmitted});
+  }
+  return out;
 }
 
 }  // namespace mcrt::testing::assignment

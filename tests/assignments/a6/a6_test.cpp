@@ -1,11 +1,14 @@
 // Assignment a6, glossy surfaces and multiple importance sampling: the public tests (CTest
 // label a6). The Phong lobe's sampler and pdf are graded by the chi-square test and by the pdf
 // integrating to 1, the heuristics exactly, the MIS estimator region by region on Veach's
-// plates and by its variance at equal rays (a6_checks.hpp).
+// plates and by its variance at equal rays (a6_checks.hpp); the dielectric's sampling by the
+// glass ball's invisibility in a furnace and by the frequency of its reflections
+// (a6_dielectric_checks.hpp).
 
 #include <gtest/gtest.h>
 
 #include "assignments/a6/a6_checks.hpp"
+#include "assignments/a6/a6_dielectric_checks.hpp"
 #include "assignments/subject/subject.hpp"
 
 namespace mcrt::testing::assignment {
@@ -55,6 +58,16 @@ TEST(A6, Task3PowerRegionsAgreeWithTheReference) {
 
 TEST(A6, Task3MisBeatsEachStrategyAtEqualRays) {
   const TaskResult r = check_mis_efficiency(subject(), A6Strategy::mis_balance);
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A6, Task4GlassBallIsInvisibleInTheFurnace) {
+  const TaskResult r = check_dielectric_furnace(subject());
+  EXPECT_TRUE(r.passed) << r.message;
+}
+
+TEST(A6, Task4ReflectsInTheFresnelFraction) {
+  const TaskResult r = check_dielectric_branches(subject());
   EXPECT_TRUE(r.passed) << r.message;
 }
 

@@ -20,6 +20,7 @@
 #include "render/mis.hpp"
 #include "render/path_tracer.hpp"
 #include "render/pixel_estimate.hpp"
+#include "render/specular.hpp"
 #include "sampling/cone.hpp"
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
@@ -190,6 +191,15 @@ struct LocalSubject {
           return estimate_mis(scene, hit, wo, h, rng, count);
         },
         strategy, width, height, spp, seed);
+  }
+
+  /// a6.4: the student's sample_dielectric at each query, for glass of index `ior`.
+  std::vector<DielectricAnswer> a6_dielectric(double ior, const std::vector<DielectricQuery>& queries) const {
+    return dielectric_answers(
+        [](const Material& m, const Vec3& wo, const Vec3& n, bool entering, double u) {
+          return sample_dielectric(m, wo, n, entering, u);
+        },
+        ior, queries);
   }
 
   void stop() {}  // nothing runs apart from this process

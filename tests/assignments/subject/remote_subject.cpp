@@ -359,4 +359,22 @@ std::vector<double> RemoteSubject::a6_regions(A6Strategy strategy, int width, in
   return answer;
 }
 
+std::vector<DielectricAnswer> RemoteSubject::a6_dielectric(double ior, const std::vector<DielectricQuery>& queries) {
+  std::vector<double> params{ior};
+  params.reserve(1 + k_dielectric_query_numbers * queries.size());
+  for (const DielectricQuery& q : queries)
+    for (double x : {q.wo.x, q.wo.y, q.wo.z, q.n.x, q.n.y, q.n.z, q.entering ? 1.0 : 0.0, q.u}) params.push_back(x);
+  const std::vector<double> answer = call(k_request_a6_dielectric, params);
+  if (answer.size() != k_dielectric_answer_numbers * queries.size())
+    broken(k_request_a6_dielectric, fmt::format("{} numbers for {} queries", answer.size(), queries.size()));
+  std::vector<DielectricAnswer> out;
+  out.reserve(queries.size());
+  for (std::size_t i = 0; i < answer.size(); i += k_dielectric_answer_numbers) {
+    const double* a = answer.data() + i;
+    // the flag travels as a number: anything but exactly 1 is "not transmitted"
+    out.push_back({{a[0], a[1], a[2]}, {a[3], a[4], a[5]}, a[6] == 1.0});
+  }
+  return out;
+}
+
 }  // namespace mcrt::testing::assignment

@@ -65,6 +65,7 @@ class RemoteSubject {
   std::vector<double> a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points);
   std::vector<double> a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs);
   std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed);
+  std::vector<DielectricAnswer> a6_dielectric(double ior, const std::vector<DielectricQuery>& queries);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

@@ -101,6 +101,24 @@ inline constexpr const char* k_request_a6_lobe_samples = "a6_lobe_samples";
 inline constexpr const char* k_request_a6_lobe_pdf = "a6_lobe_pdf";
 inline constexpr const char* k_request_a6_weights = "a6_weights";
 inline constexpr const char* k_request_a6_regions = "a6_regions";
+/// a6.4: the dielectric's sample at each query, for glass of one index (tint 1, exact Fresnel).
+inline constexpr const char* k_request_a6_dielectric = "a6_dielectric";
+
+/// One call of sample_dielectric: wo and n unit, n facing wo, `entering` when wo is outside.
+struct DielectricQuery {
+  Vec3 wo;
+  Vec3 n;
+  bool entering = true;
+  double u = 0.0;
+};
+/// What it returned: the direction, the weight (its channels) and whether it refracted.
+struct DielectricAnswer {
+  Vec3 wi;
+  Vec3 weight;
+  bool transmitted = false;
+};
+inline constexpr std::size_t k_dielectric_query_numbers = 8;
+inline constexpr std::size_t k_dielectric_answer_numbers = 7;
 
 /// A seed, block or count sent as a double: exact below 2^53, which every request stays under.
 inline double as_number(std::uint64_t x) { return static_cast<double>(x); }

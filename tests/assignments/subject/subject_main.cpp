@@ -200,6 +200,21 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     return s.a6_regions(static_cast<A6Strategy>(whole(params[0], 3)), whole(params[1], 1024), whole(params[2], 1024),
                         whole(params[3], 1 << 16), seed(params[4]));
   }
+  if (name == k_request_a6_dielectric) {
+    if (params.empty() || (params.size() - 1) % k_dielectric_query_numbers != 0)
+      throw std::invalid_argument("a6_dielectric takes an index and queries");
+    std::vector<DielectricQuery> queries;
+    for (std::size_t i = 1; i < params.size(); i += k_dielectric_query_numbers) {
+      const double* q = params.data() + i;
+      queries.push_back({{q[0], q[1], q[2]}, {q[3], q[4], q[5]}, q[6] == 1.0, q[7]});
+    }
+    std::vector<double> out;
+    out.reserve(k_dielectric_answer_numbers * queries.size());
+    for (const DielectricAnswer& a : s.a6_dielectric(params[0], queries))
+      for (double x : {a.wi.x, a.wi.y, a.wi.z, a.weight.x, a.weight.y, a.weight.z, a.transmitted ? 1.0 : 0.0})
+        out.push_back(x);
+    return out;
+  }
   throw std::invalid_argument(fmt::format("unknown request {}", name));
 }
 
