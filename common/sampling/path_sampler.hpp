@@ -1,0 +1,97 @@
+#pragma once
+/// The uniforms of one path, drawn from a point set rather than a stream: --sampler.
+///
+/// A path needs a 2D point for its pixel position and one per bounce for its direction. With
+/// `independent` they come from the pixel sample's Rng stream (render/render.hpp). With
+/// `jittered` or `sobol`, the spp samples of a pixel are the points of 2D sets, one set per
+/// use ("padding", as pbrt-v4's padded Sobol' sampler does): set 0 places the samples in the
+/// pixel, set 1 + b gives bounce b its direction. Sample s of the pixel is point s of every set,
+/// and each set is randomised by a key of its own (seed, pixel, first sample, set), so:
+///   - within a set the spp points are stratified (one per cell, or a (0,m,2)-net at spp = 2^m);
+///   - across sets the pairing of points is random, so bounce b's direction does not correlate
+///     with the pixel position or with bounce b' (a d-dimensional net would need d dimensions
+///     of Sobol' matrices; padding needs only the first two and never runs out);
+///   - each point alone is uniform on [0,1)^2 (the sets are randomised), so the path's estimate
+///     keeps the expectation of the independent one: unbiased.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/math.hpp"
+#include "sampling/point_random.hpp"
+#include "sampling/point_sets.hpp"
+
+namespace mcrt {
+
+/// Where a path's uniforms come from.
+enum class PathSampler {
+  independent,  ///< the pixel sample's own random stream (the default, as before)
+  jittered,     ///< one sample in each cell of a near-square grid of spp cells, per 2D set
+  sobol,        ///< Owen-scrambled Sobol' points (dimensions 0 and 1), per 2D set
+};
+
+inline constexpr PathSampler k_path_samplers[] = {PathSampler::independent, PathSampler::jittered,
+                                                  PathSampler::sobol};
+
+/// The sampler's name on the command line: independent, jittered or sobol.
+inline std::string name_of(PathSampler sampler) {
+  const char* names[] = {"independent", "jittered", "sobol"};
+  return names[static_cast<int>(sampler)];
+}
+
+/// The sampler named `name`, if there is one.
+inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
+  for (PathSampler sampler : k_path_samplers)
+    if (name == name_of(sampler)) return sampler;
+  return std::nullopt;
+}
+
+/// Sample `index` of a pixel's `count` samples, as padded 2D sets: each uniform2() is the
+/// sample's point in the next set. A small value, made per sample: no allocation, no virtual
+/// call; the estimator takes it where it would take an Rng (uniform2() and uniform()).
+class PaddedSample {
+ public:
+  /// `pixel_key` names the pixel's randomisation (pixel_key below); kind is not independent.
+  PaddedSample(PathSampler kind, std::uint64_t pixel_key, std::uint32_t count, std::uint32_t index)
+      : kind_(kind), pixel_key_(pixel_key), count_(count), index_(index) {}
+
+  /// The seed's randomisation of pixel `pixel` for the samples from `first_sample` on: two
+  /// renders with different first samples (chapter 05's pair A, B) are independent.
+  static std::uint64_t pixel_key(std::uint64_t seed, std::uint64_t pixel,
+                                 std::uint64_t first_sample) {
+    return hash_bits(seed, pixel, first_sample);
+  }
+
+  /// The key of 2D set `set` (0: the pixel position, 1 + b: bounce b), its own scramble.
+  static std::uint64_t set_key(std::uint64_t pixel_key, unsigned set) {
+    return hash_bits(pixel_key, ~std::uint64_t{0}, set);
+  }
+
+  /// This sample's point in the next 2D set.
+  Vec2 uniform2() {
+    const std::uint64_t key = set_key(pixel_key_, set_++);
+    if (kind_ == PathSampler::sobol) {
+      const SobolPoints points{count_, key, SobolScramble::owen};
+      return {points(index_, 0), points(index_, 1)};
+    }
+    const JitteredPoints points{count_, 2, key};
+    return {points(index_, 0), points(index_, 1)};
+  }
+
+  /// A single uniform (a delta material's choice): the first coordinate of the next set, so
+  /// every bounce takes one set whatever it samples.
+  double uniform() { return uniform2().x; }
+
+  /// Sets drawn so far (1 + the bounces that sampled a direction).
+  unsigned sets_drawn() const { return set_; }
+
+ private:
+  PathSampler kind_;
+  std::uint64_t pixel_key_;
+  std::uint32_t count_, index_;
+  unsigned set_ = 0;
+};
+
+}  // namespace mcrt
