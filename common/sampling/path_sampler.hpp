@@ -51,11 +51,21 @@ inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
 /// Sample `index` of a pixel's `count` samples, as padded 2D sets: each uniform2() is the
 /// sample's point in the next set. A small value, made per sample: no allocation, no virtual
 /// call; the estimator takes it where it would take an Rng (uniform2() and uniform()).
+///
+/// The sets are those of point_sets.hpp, drawn two coordinates at once and with fewer hashes
+/// (each mix64, SplitMix64's finaliser, of a key stepped by the golden-ratio constant): the
+/// set's key, its two scrambles from one mix64 of it, and both coordinates' low bits from one
+/// mix64 of (key, index) (Sobol': the bits below the 32 scrambled ones; jittered: the place
+/// within the cell). Per bounce: three mix64, two Owen scrambles and one Sobol' column sum.
 class PaddedSample {
  public:
   /// `pixel_key` names the pixel's randomisation (pixel_key below); kind is not independent.
   PaddedSample(PathSampler kind, std::uint64_t pixel_key, std::uint32_t count, std::uint32_t index)
-      : kind_(kind), pixel_key_(pixel_key), count_(count), index_(index) {}
+      : kind_(kind),
+        pixel_key_(pixel_key),
+        count_(count),
+        index_(index),
+        columns_(kind == PathSampler::jittered ? JitteredPoints::grid_columns(count) : 1) {}
 
   /// The seed's randomisation of pixel `pixel` for the samples from `first_sample` on: two
   /// renders with different first samples (chapter 05's pair A, B) are independent.
@@ -66,18 +76,28 @@ class PaddedSample {
 
   /// The key of 2D set `set` (0: the pixel position, 1 + b: bounce b), its own scramble.
   static std::uint64_t set_key(std::uint64_t pixel_key, unsigned set) {
-    return hash_bits(pixel_key, ~std::uint64_t{0}, set);
+    return mix64(pixel_key + (set + std::uint64_t{1}) * k_stream_offset);
   }
 
   /// This sample's point in the next 2D set.
   Vec2 uniform2() {
     const std::uint64_t key = set_key(pixel_key_, set_++);
+    const std::uint64_t low_bits = mix64(key ^ (index_ + std::uint64_t{1}) * k_stream_offset);
+    const double low_x = static_cast<std::uint32_t>(low_bits) * 0x1p-32;
+    const double low_y = static_cast<std::uint32_t>(low_bits >> 32) * 0x1p-32;
     if (kind_ == PathSampler::sobol) {
-      const SobolPoints points{count_, key, SobolScramble::owen};
-      return {points(index_, 0), points(index_, 1)};
+      // Dimensions 0 and 1 of Sobol' point `index`, each Owen-scrambled by half of mix64(key):
+      // a (0,m,2)-net at count = 2^m, each point uniform. Dimension 0 is the radical inverse
+      // in base 2, the index's bits reversed (sobol_bits(i, 0) == reverse_bits(i)).
+      const std::uint64_t seeds = mix64(key);
+      const auto x = owen_scramble(reverse_bits(index_), static_cast<std::uint32_t>(seeds));
+      const auto y = owen_scramble(sobol_bits(index_, 1), static_cast<std::uint32_t>(seeds >> 32));
+      return {(x + low_x) * 0x1p-32, (y + low_y) * 0x1p-32};
     }
-    const JitteredPoints points{count_, 2, key};
-    return {points(index_, 0), points(index_, 1)};
+    // Jittered: the sample's cell of the columns x rows grid, by the set's permutation.
+    const std::uint32_t cell = permutation_element(index_, count_, key);
+    const std::uint32_t rows = count_ / columns_;
+    return {(cell % columns_ + low_x) / columns_, (cell / columns_ + low_y) / rows};
   }
 
   /// A single uniform (a delta material's choice): the first coordinate of the next set, so
@@ -91,6 +111,7 @@ class PaddedSample {
   PathSampler kind_;
   std::uint64_t pixel_key_;
   std::uint32_t count_, index_;
+  std::uint32_t columns_;  // of the jittered grid: the largest divisor of count <= sqrt(count)
   unsigned set_ = 0;
 };
 

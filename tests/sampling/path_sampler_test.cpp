@@ -70,6 +70,12 @@ TEST(PathSamplerTest, SobolSetsAreNetsAtPowersOfTwo) {
       }
 }
 
+// The padded Sobol' sets take dimension 0 as the reversed bits of the index (van der Corput),
+// which is what Boost's first Sobol' dimension is.
+TEST(PathSamplerTest, SobolDimensionZeroIsTheReversedIndex) {
+  for (std::uint32_t i = 0; i < 4096; ++i) ASSERT_EQ(sobol_bits(i, 0), reverse_bits(i)) << i;
+}
+
 // Padding: each bounce's set is scrambled by a key of its own, so two bounces (and the pixel
 // position) never repeat one another's points. Without padding (one scramble for every set),
 // a path's directions would be the same point at every bounce.
