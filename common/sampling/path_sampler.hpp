@@ -48,6 +48,31 @@ inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
   return std::nullopt;
 }
 
+/// Where sample i goes under the random permutation of {0, ..., n-1} named by key: a four-round
+/// Feistel network on 2h bits (2^(2h) >= n, each round's function a mix64 of the key, the
+/// round and the other half), walked back into [0, n) (see permutation.hpp). Four rounds of
+/// random functions make a permutation no test of the pairing can tell from a random one
+/// (Luby and Rackoff); the lighter permutation_element keeps enough of the index's low bits
+/// that two sets' first Sobol' digits, which are those bits, stay correlated.
+inline std::uint32_t shuffled_sample(std::uint32_t i, std::uint32_t n, std::uint64_t key) {
+  if (n <= 1) return 0;
+  unsigned h = 1;
+  while ((std::uint64_t{1} << (2 * h)) < n) ++h;
+  const std::uint64_t mask = (std::uint64_t{1} << h) - 1;
+  std::uint64_t x = i;
+  do {
+    std::uint64_t left = x >> h, right = x & mask;
+    for (std::uint64_t round = 1; round <= 4; ++round) {
+      const std::uint64_t f = mix64((key + round * k_stream_offset) ^ right) & mask;
+      const std::uint64_t next = left ^ f;
+      left = right;
+      right = next;
+    }
+    x = left << h | right;
+  } while (x >= n);
+  return static_cast<std::uint32_t>(x);
+}
+
 /// Sample `index` of a pixel's `count` samples, as padded 2D sets: each uniform2() is the
 /// sample's point in the next set. A small value, made per sample: no allocation, no virtual
 /// call; the estimator takes it where it would take an Rng (uniform2() and uniform()).
@@ -56,7 +81,9 @@ inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
 /// (each mix64, SplitMix64's finaliser, of a key stepped by the golden-ratio constant): the
 /// set's key, its two scrambles from one mix64 of it, and both coordinates' low bits from one
 /// mix64 of (key, index) (Sobol': the bits below the 32 scrambled ones; jittered: the place
-/// within the cell). Per bounce: three mix64, two Owen scrambles and one Sobol' column sum.
+/// within the cell). Per bounce: three mix64 and a permutation element (jittered: of the
+/// cells; sobol: of the samples, four more mix64, then two Owen scrambles and one Sobol'
+/// column sum).
 class PaddedSample {
  public:
   /// `pixel_key` names the pixel's randomisation (pixel_key below); kind is not independent.
@@ -86,12 +113,16 @@ class PaddedSample {
     const double low_x = static_cast<std::uint32_t>(low_bits) * 0x1p-32;
     const double low_y = static_cast<std::uint32_t>(low_bits >> 32) * 0x1p-32;
     if (kind_ == PathSampler::sobol) {
-      // Dimensions 0 and 1 of Sobol' point `index`, each Owen-scrambled by half of mix64(key):
-      // a (0,m,2)-net at count = 2^m, each point uniform. Dimension 0 is the radical inverse
-      // in base 2, the index's bits reversed (sobol_bits(i, 0) == reverse_bits(i)).
+      // Dimensions 0 and 1 of Sobol' point pi(index), each Owen-scrambled by half of
+      // mix64(key): a (0,m,2)-net at count = 2^m, each point uniform. pi, a random permutation
+      // of the samples per set (shuffled_sample; pbrt-v4's padded Sobol' sampler has one), pairs the sets at
+      // random: without it the scrambles of two sets would keep the sample order's nesting, and
+      // bounce b's first digit would equal bounce b''s, flipped or not, for every sample.
+      // Dimension 0 is the radical inverse in base 2: the index's bits reversed.
+      const std::uint32_t point = shuffled_sample(index_, count_, key);
       const std::uint64_t seeds = mix64(key);
-      const auto x = owen_scramble(reverse_bits(index_), static_cast<std::uint32_t>(seeds));
-      const auto y = owen_scramble(sobol_bits(index_, 1), static_cast<std::uint32_t>(seeds >> 32));
+      const auto x = owen_scramble(reverse_bits(point), static_cast<std::uint32_t>(seeds));
+      const auto y = owen_scramble(sobol_bits(point, 1), static_cast<std::uint32_t>(seeds >> 32));
       return {(x + low_x) * 0x1p-32, (y + low_y) * 0x1p-32};
     }
     // Jittered: the sample's cell of the columns x rows grid, by the set's permutation.

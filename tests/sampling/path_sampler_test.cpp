@@ -93,6 +93,37 @@ TEST(PathSamplerTest, EachBounceHasItsOwnScramble) {
         }
 }
 
+TEST(PathSamplerTest, ShuffledSampleIsAPermutation) {
+  for (std::uint32_t n = 1; n <= 70; ++n)
+    for (std::uint64_t key : {0ull, 3ull, 1234567ull}) {
+      std::vector<int> hits(n, 0);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t j = shuffled_sample(i, n, key);
+        ASSERT_LT(j, n);
+        ++hits[j];
+      }
+      for (int h : hits) EXPECT_EQ(h, 1) << "n " << n;
+    }
+}
+
+// Padding pairs two sets at random. Owen scrambling keeps the nesting of the sample order, so
+// without a permutation of the samples per set, the first binary digits of bounce 0's and
+// bounce 1's x would agree for all 16 samples of a pixel or for none, at every key. With it,
+// the number that agree is hypergeometric (8 of 16 on average; all or none with probability
+// 2 / C(16, 8) = 1.6e-4): over 200 keys, 3 or more such keys has probability below 1e-6.
+TEST(PathSamplerTest, PaddedSetsArePairedAtRandom) {
+  for (PathSampler kind : {PathSampler::jittered, PathSampler::sobol}) {
+    int all_or_none = 0;
+    for (std::uint64_t key = 0; key < 200; ++key) {
+      const std::vector<Vec2> a = set_points(kind, key, 16, 1), b = set_points(kind, key, 16, 2);
+      int agree = 0;
+      for (std::size_t s = 0; s < a.size(); ++s) agree += (a[s].x < 0.5) == (b[s].x < 0.5);
+      all_or_none += agree == 0 || agree == 16;
+    }
+    EXPECT_LE(all_or_none, 2) << name_of(kind);
+  }
+}
+
 // Two renders of the same pixel with different first samples (chapter 05's A and B) are
 // randomised independently: their keys, and so their points, differ.
 TEST(PathSamplerTest, PixelsAndSampleBlocksHaveTheirOwnKeys) {
