@@ -9,6 +9,10 @@
 //   strata on the disk's edge, -1 (jittered) and -3/2 (Owen-scrambled Sobol', N = 2^m) on a
 //   smooth integrand; and at one budget against the dimension k, where the gain fades.
 //
+// With --render-max-spp, the same idea in chapter 05's path tracer (render_study.hpp): each
+// pixel's samples drawn from independent streams, jittered or Owen-scrambled Sobol' 2D sets
+// padded per bounce (--sampler), the rms error against spp at depth 1 and at full depth.
+//
 // The point sets are in common/sampling/point_sets.hpp (each point alone is uniform: E[F_N] =
 // I); the studies in plan.hpp, the tables in tables.hpp, the figures in plots.hpp, the
 // console and summary.json in report.hpp.
@@ -27,6 +31,7 @@
 #include "app/usage_error.hpp"
 #include "plan.hpp"
 #include "plots.hpp"
+#include "render_study.hpp"
 #include "report.hpp"
 #include "tables.hpp"
 
@@ -63,6 +68,7 @@ struct Options {
   std::uint32_t budget = 1u << 16;  // N of the dimension study at every k: 2^16 = 2^k at k = 16
   std::vector<int> dims = {1, 2, 3, 4, 5, 6, 8, 10, 12, 14, 16};  // k of the dimension study
   int picture_points = 64;  // points of each set in point_sets.png
+  RenderStudyOptions render;  // the path tracer's samplers: off unless --render-max-spp
 };
 
 // Every task (one randomisation of one series at one N) on any core, largest first; each
@@ -104,6 +110,8 @@ void run(const CLI::App& app, const Options& o) {
   const Stopwatch clock;
   const std::vector<double> estimates = run_tasks(plan, o);
   const Tables t = tabulate(plan, estimates, o.trials, o.budget);
+  const RenderStudy render = run_render_study(o.render, o.common.seed, o.common.threads,
+                                              o.common.quiet);
   const double seconds = clock.seconds();
 
   write_csv(o.common.dir / "disk.csv", t.disk);
@@ -116,9 +124,26 @@ void run(const CLI::App& app, const Options& o) {
   write_plot(o.common.dir, error_plot("smooth", t.smooth, t.slopes, "e^{-|x|^2} on [0,1]^2"));
   write_plot(o.common.dir, dimension_plot(o.budget, t.dimension));
   write_plot(o.common.dir, point_sets_plot(o.picture_points));
-  write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, plan, t));
+  Json summary = summary_of(k_chapter, app, o, plan, t);
+  if (o.render.max_spp > 0) {
+    write_csv(o.common.dir / "render_error.csv", render.errors);
+    write_csv(o.common.dir / "render_slopes.csv", render.slopes);
+    write_plot(o.common.dir, render_error_plot(o.render, render.slopes));
+    write_four_spp_sheet(o.common.dir, o.render, render);
+    summary["render"] = {{"scene", o.render.scene.scene},
+                         {"width", o.render.width},
+                         {"height", o.render.height},
+                         {"depths", study_depths(o.render)},
+                         {"rays", render.rays},
+                         {"slopes", render.slopes.json()},
+                         {"errors", render.errors.json()}};
+  }
+  write_json(o.common.dir / "summary.json", summary);
   write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), app);
   if (!o.common.quiet) print_report(k_chapter, o, plan, t, seconds);
+  if (!o.common.quiet && o.render.max_spp > 0)
+    fmt::print("path tracer, {} {}x{}, rms error against spp:\n{}", o.render.scene.scene,
+               o.render.width, o.render.height, render.slopes.console());
 }
 
 // A power of two from `lowest` to 2^24, or a usage error naming the flag.
@@ -150,11 +175,51 @@ int main(int argc, char** argv) {
                   k_max_box_dims);
   add_number_option(app, "--picture-points", o.picture_points,
                     "Points of each set drawn in point_sets.png", 1, 4096);
+  std::string sampler_choice = "all";
+  add_choice_option(
+      app, "--sampler", {"all", "independent", "jittered", "sobol"}, sampler_choice,
+      [&](const std::string& name) { sampler_choice = name; },
+      "Samplers of the render study: all, or one of independent, jittered, sobol (jittered and "
+      "sobol: each pixel's samples stratified, padded per bounce)");
+  add_number_option(app, "--render-max-spp", o.render.max_spp,
+                    "The render study: chapter 05's path tracer at spp = 1, 2, 4, ..., this (a "
+                    "power of two; 0: no render study)",
+                    0, 1 << 14);
+  add_choice_option(
+      app, "--render-scene", {"cornell", "cornell-spheres"}, o.render.scene.scene,
+      [&](const std::string& name) { o.render.scene.scene = name; }, "Scene of the render study");
+  add_number_option(app, "--render-width", o.render.width, "Width of the render study's images",
+                    1, 4096);
+  add_number_option(app, "--render-height", o.render.height,
+                    "Height of the render study's images", 1, 4096);
+  add_number_option(app, "--render-depth", o.render.full_depth,
+                    "The render study's full depth (its other depth is 1: direct light)", 2, 1000);
+  add_number_option(app, "--render-reference-spp", o.render.reference_spp,
+                    "Samples per pixel of the render study's references (chapter 08's MIS, cached "
+                    "under --reference-dir)",
+                    2, 1 << 20);
+  add_path_option(app, "--reference-dir", o.render.reference_dir,
+                  "Folder of the cached references of the render study: new, empty, or made by an "
+                  "earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/"
+                  "mcrt-companion, else ~/.cache/mcrt-companion)");
   return app.run(argc, argv, [&] {
     o.max_n = static_cast<std::uint32_t>(max_n);
     o.budget = static_cast<std::uint32_t>(budget);
     check_power_of_two("--max-n", o.max_n, 64);  // N = 16, 32, 64: a slope and its error
     check_power_of_two("--budget", o.budget, 16);
+    if (sampler_choice != "all") o.render.samplers = {*path_sampler_named(sampler_choice)};
+    if (o.render.max_spp > 0) {
+      const auto max_spp = static_cast<std::uint32_t>(o.render.max_spp);
+      if ((max_spp & (max_spp - 1)) != 0)
+        throw UsageError(fmt::format("--render-max-spp {}: give 0 or a power of two up to {}",
+                                     max_spp, 1 << 14));
+      check_image_size({o.render.width, o.render.height});
+      check_ray_limit(study_work(o.render), k_max_rays,
+                      "--render-max-spp, --render-width, --render-height, --render-depth, "
+                      "--render-reference-spp",
+                      o.common.threads, "lower one of them");
+      check_reference_folder(reference_folder(o.render.reference_dir), o.common.out);
+    }
     run(app, o);
   });
 }

@@ -31,8 +31,11 @@
 namespace mcrt {
 
 /// One path's estimate of the radiance arriving along `ray`, with at most `max_depth` bounces
-/// (max_depth + 1 closest-hit queries, each counted in `count`).
-inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, Rng& rng,
+/// (max_depth + 1 closest-hit queries, each counted in `count`). `rng` is where the uniforms
+/// come from: an Rng stream, or a PaddedSample (sampling/path_sampler.hpp, --sampler) whose
+/// uniform2() is the next 2D set's point; each bounce asks for one 2D point (or one uniform).
+template <class Uniforms = Rng>
+inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, Uniforms& rng,
                                     RayCount& count) {
   // ASSIGNMENT a4.1 BEGIN needs=a2.1 stub: (void)scene; (void)ray; (void)max_depth; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_path_radiance);
   Color radiance(0.0);

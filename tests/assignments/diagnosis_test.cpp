@@ -484,7 +484,7 @@ bool sky_region_sees_only_sky(int column, int row) {
 }
 
 TEST_F(Diagnoses, A4SolutionsErrorMapFlagsNoRegion) {
-  const RegionResult r = check_reference_regions(sky_of(estimate_path_radiance));
+  const RegionResult r = check_reference_regions(sky_of(estimate_path_radiance<Rng>));
   ASSERT_TRUE(r.passed) << r.message;
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)

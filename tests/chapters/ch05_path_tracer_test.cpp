@@ -157,12 +157,38 @@ TEST(Ch05Test, BothEnginesWriteTheSameImages) {
   EXPECT_EQ(a.numbers("rays"), b.numbers("rays"));
 }
 
+// --sampler jittered and sobol render one path at a time whatever --engine (the four lanes
+// serve the independent streams only), the same bytes for any thread count; each differs from
+// the independent image, and from the other.
+TEST(Ch05Test, SamplersRenderTheSameImageWhateverTheEngineAndThreads) {
+  const std::string flags =
+      "--scene cornell --width 15 --height 11 --spp 4 --depth 4 --seed 3 --reference-spp 0 --quiet";
+  const auto independent = fresh_dir("ch05_sampler_independent");
+  ASSERT_EQ(run_program(k_program, flags + " --out " + independent.string()).exit_code, 0);
+  std::string previous = read_text(independent / "spp_0004.pfm");
+  for (const char* sampler : {"jittered", "sobol"}) {
+    const auto lanes = fresh_dir(std::string("ch05_sampler_lanes_") + sampler);
+    const auto loop = fresh_dir(std::string("ch05_sampler_loop_") + sampler);
+    const std::string with = flags + " --sampler " + sampler;
+    ASSERT_EQ(run_program(k_program, with + " --threads 1 --out " + lanes.string()).exit_code, 0);
+    ASSERT_EQ(run_program(k_program, with + " --engine loop --threads 2 --out " + loop.string())
+                  .exit_code,
+              0);
+    const std::string image = read_text(lanes / "spp_0004.pfm");
+    EXPECT_EQ(image, read_text(loop / "spp_0004.pfm")) << sampler;
+    EXPECT_EQ(read_text(lanes / "rmse_vs_spp.csv").size() > 0, true);
+    EXPECT_EQ(read_json(lanes / "summary.json")["flags"]["sampler"], sampler);
+    EXPECT_NE(image, previous) << sampler;
+    previous = image;
+  }
+}
+
 TEST(Ch05Test, HelpNamesEveryFlag) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--scene", "--width", "--height", "--spp", "--depth", "--seed",
                            "--threads", "--out", "--quiet", "--reference-spp", "--reference-dir",
-                           "--engine", "--bias-depths", "--print-flags"})
+                           "--engine", "--sampler", "--bias-depths", "--print-flags"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -192,6 +218,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--spp x", "--spp"}, BadInput{"--depth -1", "--depth"},
                       BadInput{"--scene moon", "--scene"},
                       BadInput{"--engine simd", "--engine"},
+                      BadInput{"--sampler halton", "--sampler"},
+                      BadInput{"--sampler", "--sampler"},
                       BadInput{"--reference-spp -1", "--reference-spp"},
                       BadInput{"--reference-spp 2000000", "--reference-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},

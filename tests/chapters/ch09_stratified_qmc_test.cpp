@@ -165,7 +165,8 @@ TEST(Ch09Test, PrintsTheSlopesTableAndHelp) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
   for (const char* flag : {"--trials", "--max-n", "--budget", "--dims", "--picture-points",
-                           "--seed", "--threads", "--out", "--quiet"})
+                           "--seed", "--threads", "--out", "--quiet", "--sampler",
+                           "--render-max-spp", "--render-scene", "--reference-dir"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -188,6 +189,63 @@ TEST(Ch09Test, SameSeedGivesIdenticalFilesWhateverTheThreadCount) {
   EXPECT_NE(read_text(one / "disk.csv"), read_text(other / "disk.csv"));
 }
 
+// The render study, tiny: chapter 05's path tracer with each sampler at spp 1, 2, 4, 8 and
+// depths 1 and 3, against references cached in a folder of the test's own; the same files
+// whatever --threads.
+const std::string k_render =
+    "--trials 2 --max-n 64 --budget 16 --dims 2 --picture-points 4 --quiet --render-max-spp 8 "
+    "--render-width 12 --render-height 9 --render-depth 3 --render-reference-spp 64";
+
+TEST(Ch09Test, RenderStudyWritesErrorsSlopesAndImages) {
+  const auto dir = fresh_dir("ch09_render"), cache = fresh_dir("ch09_render_cache");
+  const ProgramRun run = run_program(
+      k_program, k_render + " --reference-dir " + cache.string() + " --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CsvFile errors(dir / "render_error.csv");
+  EXPECT_EQ(errors.header(),
+            (std::vector<std::string>{"sampler", "depth", "spp", "rays", "rmse_vs_reference",
+                                      "reference_standard_error", "rmse", "fitted"}));
+  ASSERT_EQ(errors.size(), 3u * 2u * 4u);  // samplers x depths x spp
+  for (std::size_t r = 0; r < errors.size(); ++r) {
+    const double spp = errors.number(r, "spp"), depth = errors.number(r, "depth");
+    // One camera ray per sample, at most depth more: equal spp is at most equal rays.
+    EXPECT_GE(errors.number(r, "rays"), 12 * 9 * spp);
+    EXPECT_LE(errors.number(r, "rays"), 12 * 9 * spp * (depth + 1));
+    EXPECT_GT(errors.number(r, "rmse_vs_reference"), 0.0);
+    EXPECT_LE(errors.number(r, "rmse"), errors.number(r, "rmse_vs_reference"));
+  }
+  EXPECT_EQ(CsvFile(dir / "render_slopes.csv").size(), 6u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "render_4spp.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "render_error_vs_spp.gp"));
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(summary["render"]["slopes"].size(), 6u);
+  EXPECT_EQ(summary["render"]["depths"], (std::vector<int>{1, 3}));
+
+  const auto solo = fresh_dir("ch09_render_sobol");
+  ASSERT_EQ(run_program(k_program, k_render + " --sampler sobol --threads 1 --reference-dir " +
+                                       cache.string() + " --out " + solo.string())
+                .exit_code,
+            0);
+  EXPECT_EQ(CsvFile(solo / "render_error.csv").size(), 2u * 4u);
+  EXPECT_TRUE(std::filesystem::exists(solo / "render_4spp.png"));  // a sheet of one
+}
+
+TEST(Ch09Test, RenderStudyIsTheSameWhateverTheThreadCount) {
+  const auto one = fresh_dir("ch09_render_threads1"), two = fresh_dir("ch09_render_threads2");
+  const auto cache_one = fresh_dir("ch09_render_cache1"), cache_two = fresh_dir("ch09_render_cache2");
+  const std::string flags = k_render + " --sampler sobol";
+  ASSERT_EQ(run_program(k_program, flags + " --threads 1 --reference-dir " + cache_one.string() +
+                                       " --out " + one.string())
+                .exit_code,
+            0);
+  ASSERT_EQ(run_program(k_program, flags + " --threads 2 --reference-dir " + cache_two.string() +
+                                       " --out " + two.string())
+                .exit_code,
+            0);
+  for (const char* name : {"render_error.csv", "render_slopes.csv", "summary.json"})
+    EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
+}
+
 class Ch09BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(Ch09BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
@@ -206,6 +264,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--dims 17", "--dims"}, BadInput{"--dims 1,,2", "--dims"},
         BadInput{"--picture-points 0", "--picture-points"}, BadInput{"--threads 0", "--threads"},
         BadInput{"--seed 18446744073709551616", "--seed"},
+        BadInput{"--sampler halton", "--sampler"},
+        BadInput{"--sampler sobol,owen", "--sampler"},
+        BadInput{"--render-max-spp 12", "--render-max-spp"},
+        BadInput{"--render-scene furnace", "--render-scene"},
+        BadInput{"--render-max-spp 16384 --render-width 4096 --render-height 4096",
+                 "--render-max-spp"},
         // Far too much work in all: refused at once, with the estimate.
         BadInput{"--trials 100000 --max-n 16777216", "--trials"}),
     bad_input_name);

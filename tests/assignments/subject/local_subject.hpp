@@ -117,18 +117,18 @@ struct LocalSubject {
 
   /// a4: n furnace paths of estimate_path_radiance (furnace_values).
   std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) const {
-    return furnace_values(estimate_path_radiance, albedo, depth, n, seed, block);
+    return furnace_values(estimate_path_radiance<Rng>, albedo, depth, n, seed, block);
   }
 
   /// a4: every sample of the sky scene's size x size render (sky_values).
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed) const {
-    return sky_values(estimate_path_radiance, size, depth, spp, seed);
+    return sky_values(estimate_path_radiance<Rng>, size, depth, spp, seed);
   }
 
   /// a4: one furnace path from the centre along `direction` (furnace_path).
   PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
                          std::uint64_t stream) const {
-    return furnace_path(estimate_path_radiance, albedo, emission, direction, depth, seed, stream);
+    return furnace_path(estimate_path_radiance<Rng>, albedo, emission, direction, depth, seed, stream);
   }
 
   /// a4.2: the student's estimate_pixel, as a4_produce.hpp's producers take it.
