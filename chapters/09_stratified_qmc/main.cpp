@@ -117,7 +117,7 @@ void run(const CLI::App& app, const Options& o) {
   write_plot(o.common.dir, dimension_plot(o.budget, t.dimension));
   write_plot(o.common.dir, point_sets_plot(o.picture_points));
   write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, plan, t));
-  write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), app);
+  write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), run_flags_json(app));
   if (!o.common.quiet) print_report(k_chapter, o, plan, t, seconds);
 }
 
