@@ -69,7 +69,7 @@ Color trace(const Scene& scene, const Ray& ray, RayCount& count) {
 
 void write_summary(const CLI::App& app, const Options& o, const RenderResult& result,
                    const std::optional<Falloff>& falloff) {
-  Json summary = start_summary(k_chapter, o.common);
+  Json summary = start_summary(k_chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   add_render_totals(summary, totals_of(result));
@@ -83,9 +83,9 @@ void write_summary(const CLI::App& app, const Options& o, const RenderResult& re
                           {"largest_relative_deviation", falloff->largest_deviation}};
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(k_chapter, o.common);
+  Json timings = start_timings(k_chapter.name, o.common.threads);
   add_render_timings(timings, totals_of(result));
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 void print_summary(const Options& o, const RenderResult& result,

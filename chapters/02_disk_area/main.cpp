@@ -147,7 +147,7 @@ void run(const CLI::App& app, const Options& o) {
   write_plot(o.common.dir, picture_plot(o.points, r.picture_estimate));
   write_plot(o.common.dir, ball_error_plot({2, 5, 10}));
   write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, r));
-  write_timings(o.common.dir, timings_of(k_chapter, o, r), app);
+  write_timings(o.common.dir, timings_of(k_chapter, o, r), run_flags_json(app));
   if (!o.common.quiet) print_report(k_chapter, o, r);
 }
 

@@ -11,7 +11,7 @@ namespace mcrt {
 
 // summary.json: the disk study's fit and speed, the ball tables, the picture, the flags.
 inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& o, const auto& r) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   summary["disk"] = {{"sizes", r.disk.size()}, {"trials", o.trials}, {"largest_n", o.max_n},
                      {"estimate_at_largest_n", r.disk.numbers("mean_estimate").back()},
                      {"fitted_slope", r.disk_fit.slope},
@@ -27,7 +27,7 @@ inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& 
 
 // timings.json: how fast the disk study ran, and on which path.
 inline Json timings_of(const Chapter& chapter, const auto& o, const auto& r) {
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   timings["disk"] = {{"seconds", r.disk_seconds},
                      {"samples_per_second", r.disk_points / r.disk_seconds},
                      {"avx2", disk_count_uses_avx2()}};

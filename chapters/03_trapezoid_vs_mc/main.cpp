@@ -158,7 +158,7 @@ void run(const CLI::App& app, const Options& o) {
   write_csv(o.common.dir / "budget.csv", r.budget);
   write_plots(o, plan, r);
   write_json(o.common.dir / "summary.json", summary_of(k_chapter, app, o, plan, r));
-  write_timings(o.common.dir, timings_of(k_chapter, o, plan, r), app);
+  write_timings(o.common.dir, timings_of(k_chapter, o, plan, r), run_flags_json(app));
   if (!o.common.quiet) print_report(k_chapter, o, plan, r);
 }
 

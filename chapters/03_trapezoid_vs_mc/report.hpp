@@ -16,7 +16,7 @@ namespace mcrt {
 // summary.json: the setup, every study's reference, the slopes and the errors at the budget.
 inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& o,
                        const Plan& plan, const auto& r) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   summary["trials"] = o.trials;
   summary["max_evaluations"] = o.max_evaluations;
   summary["dims"] = o.dims;
@@ -33,7 +33,7 @@ inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& 
 
 // timings.json: the run's seconds and evaluations per second.
 inline Json timings_of(const Chapter& chapter, const auto& o, const Plan& plan, const auto& r) {
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   timings["seconds"] = r.seconds;
   timings["evaluations_per_second"] = r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0;
   return timings;

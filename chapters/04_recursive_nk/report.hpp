@@ -38,7 +38,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                           const Plan& plan, const RecursiveRenderer& work, const Table& rays,
                           const Table& missing, const Table& equal, std::size_t best,
                           const std::string& verdict, int light_spp) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   summary["branching"] = o.branching;
@@ -55,9 +55,9 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                            {"rows", equal.json()}, {"conclusion", verdict}};
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, work.total);
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 // The console: the sweep, the missing light, the equal-cost table and the verdict.

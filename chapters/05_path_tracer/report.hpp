@@ -125,7 +125,7 @@ inline void write_rmse_plot(const auto& o, const Table& errors, double slope, co
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& errors, double slope, const RenderTotals& total,
                           const Image& last, const Reference* reference, const Table& bias) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   summary["depth"] = o.depth;
@@ -144,10 +144,10 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   if (reference) summary["reference"].erase("seconds");  // the machine's: timings.json's
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, total);
   if (reference && reference->info.contains("seconds")) timings["reference_seconds"] = reference->info["seconds"];
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 inline void print_table(const Chapter& chapter, const auto& o, const Table& errors, double slope,

@@ -36,7 +36,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                           const auto& r) {
   const double a = o.scene.params.furnace_albedo, le = o.scene.params.furnace_emission;
   const int d = o.roulette.min_depth;
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   summary["depth"] = o.depth;
@@ -70,10 +70,10 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["renders"] = r.renders.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, r.total);
   timings["best_q"] = best_q(r.efficiency);  // chosen by measured efficiency
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 // The console: the furnace, its four studies, the renders.

@@ -22,7 +22,7 @@ inline double cosine_furnace_variance(const Table& variances) {
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& variances, const Table& equal_time,
                           const RenderTotals& total) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   summary["depth"] = o.depth;
@@ -36,9 +36,9 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["equal_time"] = equal_time.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, total);
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 // The console: the variance per pdf, the furnace's cosine row, the errors against the

@@ -18,7 +18,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
                           const Table& images, const Shootout& shootout, const Json& reference,
                           const RenderTotals& total, const Table& plates,
                           const Table& light_choice) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["light_scale"] = o.scene.params.light_scale;
   summary["spp"] = o.spp;
@@ -31,7 +31,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["light_choice"] = light_choice.json();
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, total);
   if (reference.contains("seconds")) timings["reference_seconds"] = reference["seconds"];
   // The same photographs in seconds, every column (Table::json leaves timing columns out).
@@ -42,7 +42,7 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
     seconds.push_back(std::move(row));
   }
   timings["shootout"] = std::move(seconds);
-  write_timings(o.common.dir, timings, app);
+  write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 inline void print_report(const Chapter& chapter, const auto& o, const Table& images,

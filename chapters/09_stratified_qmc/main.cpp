@@ -139,7 +139,7 @@ void run(const CLI::App& app, const Options& o) {
                          {"errors", render.errors.json()}};
   }
   write_json(o.common.dir / "summary.json", summary);
-  write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), app);
+  write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), run_flags_json(app));
   if (!o.common.quiet) print_report(k_chapter, o, plan, t, seconds);
   if (!o.common.quiet && o.render.max_spp > 0)
     fmt::print("path tracer, {} {}x{}, rms error against spp:\n{}", o.render.scene.scene,

@@ -39,7 +39,7 @@ inline Json gains(const Table& dimension) {
 
 inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& o, const Plan& plan,
                        const Tables& t) {
-  Json summary = start_summary(chapter, o.common);
+  Json summary = start_summary(chapter.name, o.common.seed);
   summary["trials"] = o.trials;
   summary["max_n"] = o.max_n;
   summary["budget"] = o.budget;
@@ -66,7 +66,7 @@ inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& 
 }
 
 inline Json timings_of(const Chapter& chapter, const auto& o, const Plan& plan, double seconds) {
-  Json timings = start_timings(chapter, o.common);
+  Json timings = start_timings(chapter.name, o.common.threads);
   timings["seconds"] = seconds;
   timings["points_per_second"] = seconds > 0.0 ? plan.points / seconds : 0.0;
   return timings;

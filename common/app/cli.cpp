@@ -56,93 +56,75 @@ std::string bound(T value) {
   return std::to_string(value);
 }
 
-// A number flag: the text as given is read by app/numbers. --help shows what CLI11 shows for a
-// range check on a T: "--width INT:INT in [1 - 16384]=640".
+// One number of a flag, read by app/numbers (an item of a list says so in its refusal).
 template <class T>
-CLI::Option* add_number(CLI::App& app, const std::string& flag, T& value,
-                        const std::string& description, T lowest, T highest) {
+T parse_number(std::string_view text, const std::string& flag, T lowest, T highest,
+               bool in_list = false) {
+  if constexpr (std::is_floating_point_v<T>)
+    return parse_real_number(text, flag, lowest, highest,
+                             in_list ? "a comma-separated list of numbers" : "a number");
+  return static_cast<T>(parse_whole_number(
+      text, flag, static_cast<std::uint64_t>(std::max(lowest, T{})),
+      static_cast<std::uint64_t>(std::max(highest, T{})),
+      in_list ? "a comma-separated list of whole numbers" : "a whole number"));
+}
+
+}  // namespace
+
+// --help shows what CLI11 shows for a range check on a T: "--width INT:INT in [1 - 16384]=640".
+template <class T>
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, T& value,
+                               const std::string& description, std::type_identity_t<T> lowest,
+                               std::type_identity_t<T> highest) {
   if (std::is_same_v<T, int> && (lowest < T{} || highest < lowest))
     throw std::invalid_argument("add_number_option " + flag + ": needs 0 <= lowest <= highest");
   const std::string type = CLI::detail::type_name<T>();
   const auto read = [&value, flag, lowest, highest](const std::string& text) {
-    if constexpr (std::is_floating_point_v<T>) value = parse_real_number(text, flag, lowest, highest);
-    else value = static_cast<T>(parse_whole_number(text, flag, lowest, highest));
+    value = parse_number<T>(text, flag, lowest, highest);
   };
   return app.add_option_function<std::string>(flag, read, description)
       ->type_name(type)
       ->check(CLI::Validator(type + " in [" + bound(lowest) + " - " + bound(highest) + "]"))
       ->default_str(CLI::detail::to_string(value));
 }
+template CLI::Option* add_number_option<int>(CLI::App&, const std::string&, int&,
+                                             const std::string&, int, int);
+template CLI::Option* add_number_option<std::uint64_t>(CLI::App&, const std::string&,
+                                                       std::uint64_t&, const std::string&,
+                                                       std::uint64_t, std::uint64_t);
+template CLI::Option* add_number_option<double>(CLI::App&, const std::string&, double&,
+                                                const std::string&, double, double);
 
-// The comma-separated items of `text`, each read by `read`, sorted, duplicates dropped.
-template <class T, class Read>
-std::vector<T> parse_list(const std::string& text, Read read) {
+template <class T>
+std::vector<T> parse_list(const std::string& text, const std::string& flag, T lowest, T highest) {
   std::vector<T> values;
   for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
     end = text.find(',', start);
-    values.push_back(read(std::string_view(text).substr(start, end - start)));
+    values.push_back(parse_number<T>(std::string_view(text).substr(start, end - start), flag,
+                                     lowest, highest, true));
   }
   std::sort(values.begin(), values.end());
   values.erase(std::unique(values.begin(), values.end()), values.end());
   return values;
 }
+template std::vector<int> parse_list<int>(const std::string&, const std::string&, int, int);
+template std::vector<double> parse_list<double>(const std::string&, const std::string&, double,
+                                                double);
 
 template <class T>
-void add_list(CLI::App& app, const std::string& flag, std::vector<T>& values,
-              const std::string& description, T lowest, T highest) {
-  app.add_option_function<std::string>(
-         flag,
-         [&values, flag, lowest, highest](const std::string& text) {
-           if constexpr (std::is_floating_point_v<T>) values = parse_real_list(text, flag, lowest, highest);
-           else values = parse_int_list(text, flag, lowest, highest);
-         },
-         description)
+void add_list_option(CLI::App& app, const std::string& flag, std::vector<T>& values,
+                     const std::string& description, std::type_identity_t<T> lowest,
+                     std::type_identity_t<T> highest) {
+  const auto read = [&values, flag, lowest, highest](const std::string& text) {
+    values = parse_list<T>(text, flag, lowest, highest);
+  };
+  app.add_option_function<std::string>(flag, read, description)
       ->default_str(fmt::format("{}", fmt::join(values, ",")));
 }
-
-}  // namespace
-
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, int& value,
-                               const std::string& description, int lowest, int highest) {
-  return add_number(app, flag, value, description, lowest, highest);
-}
-
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::uint64_t& value,
-                               const std::string& description, std::uint64_t lowest,
-                               std::uint64_t highest) {
-  return add_number(app, flag, value, description, lowest, highest);
-}
-
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& value,
-                               const std::string& description, double lowest, double highest) {
-  return add_number(app, flag, value, description, lowest, highest);
-}
-
-std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
-                                int highest) {
-  return parse_list<int>(text, [&](std::string_view item) {
-    return static_cast<int>(parse_whole_number(item, flag, static_cast<std::uint64_t>(std::max(lowest, 0)),
-                                               static_cast<std::uint64_t>(std::max(highest, 0)),
-                                               "a comma-separated list of whole numbers"));
-  });
-}
-
-std::vector<double> parse_real_list(const std::string& text, const std::string& flag,
-                                    double lowest, double highest) {
-  return parse_list<double>(text, [&](std::string_view item) {
-    return parse_real_number(item, flag, lowest, highest, "a comma-separated list of numbers");
-  });
-}
-
-void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
-                     const std::string& description, int lowest, int highest) {
-  add_list(app, flag, values, description, lowest, highest);
-}
-
-void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
-                     const std::string& description, double lowest, double highest) {
-  add_list(app, flag, values, description, lowest, highest);
-}
+template void add_list_option<int>(CLI::App&, const std::string&, std::vector<int>&,
+                                   const std::string&, int, int);
+template void add_list_option<double>(CLI::App&, const std::string&, std::vector<double>&,
+                                      const std::string&, double, double);
 
 void add_choice_option(CLI::App& app, const std::string& flag,
                        const std::vector<std::string>& choices, const std::string& fallback,
@@ -163,10 +145,9 @@ void show_default_as(CLI::Option* option, const std::string& text) { option->def
 void check_image_size(const ImageOptions& options) {
   const long long pixels = static_cast<long long>(options.width) * options.height;
   if (pixels > k_max_pixels)
-    throw UsageError("--width x --height: " + std::to_string(options.width) + " x " +
-                     std::to_string(options.height) + " = " + std::to_string(pixels) +
-                     " pixels is above the limit of " + std::to_string(k_max_pixels) +
-                     " (8192 x 4096)");
+    throw UsageError(fmt::format("--width x --height: {} x {} = {} pixels is above the limit of {} "
+                                 "(8192 x 4096)",
+                                 options.width, options.height, pixels, k_max_pixels));
 }
 
 namespace {
@@ -185,13 +166,8 @@ nlohmann::ordered_json option_values(const CLI::App& app, bool run_flags) {
     if (names.empty() || names.front() == "help" || names.front() == "print-flags" ||
         is_run_flag(names.front()) != run_flags)
       continue;
-    std::string value;
-    if (option->count() > 0) {
-      for (const std::string& r : option->results()) value += (value.empty() ? "" : ",") + r;
-    } else {
-      value = option->get_default_str();
-    }
-    flags[names.front()] = value;
+    flags[names.front()] = option->count() == 0 ? option->get_default_str()
+                                                : fmt::format("{}", fmt::join(option->results(), ","));
   }
   return flags;
 }
@@ -258,34 +234,30 @@ std::optional<std::string> refused_value(const CLI::App& app, int argc, char** a
   return std::nullopt;
 }
 
+}  // namespace
+
 // Parses argv, then runs body; every failure becomes its exit code and one line.
-int parse_and_run(CLI::App& app, const std::string& program, int argc, char** argv,
-                  const std::function<int()>& body) {
-  if (const std::optional<std::string> refused = refused_value(app, argc, argv)) {
-    std::cerr << program << ": error: " << *refused << " (see --help)\n";
-    return 2;
-  }
+int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
+  const std::string program = app.get_name().empty() ? "chapter" : app.get_name();
+  const auto fail = [&](int code, const std::string& message) {
+    std::cerr << program << ": error: " << message << (code == 2 ? " (see --help)\n" : "\n");
+    return checked_stdout(program, code);
+  };
+  if (const std::optional<std::string> refused = refused_value(app, argc, argv))
+    return fail(2, *refused);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
-    return app.exit(e);
+    return checked_stdout(program, app.exit(e));
   } catch (const CLI::ParseError& e) {
-    std::cerr << program << ": error: " << e.what() << " (see --help)\n";
-    return 2;
+    return fail(2, e.what());
   }
   try {
-    return body();
+    return checked_stdout(program, body());
   } catch (const std::exception& e) {
     std::cerr << program << ": error: " << message_of(e) << '\n';
-    return dynamic_cast<const UsageError*>(&e) ? 2 : 1;
+    return checked_stdout(program, dynamic_cast<const UsageError*>(&e) ? 2 : 1);
   }
-}
-
-}  // namespace
-
-int run_chapter(CLI::App& app, int argc, char** argv, const std::function<int()>& body) {
-  const std::string program = app.get_name().empty() ? "chapter" : app.get_name();
-  return checked_stdout(program, parse_and_run(app, program, argc, argv, body));
 }
 
 ChapterApp::ChapterApp(const Chapter& chapter, CommonOptions& common)

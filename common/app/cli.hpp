@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -53,22 +54,22 @@ inline constexpr int k_max_threads = 256;
 
 void add_common_options(CLI::App& app, CommonOptions& options, const Chapter& chapter);
 
-/// A numeric flag read as written (app/numbers.hpp), from `lowest` (>= 0) to `highest`; --help
-/// shows its type, range and default; flags_json records the value as given.
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, int& value,
-                               const std::string& description, int lowest, int highest);
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, std::uint64_t& value,
-                               const std::string& description, std::uint64_t lowest,
-                               std::uint64_t highest);
-CLI::Option* add_number_option(CLI::App& app, const std::string& flag, double& value,
-                               const std::string& description, double lowest, double highest);
+/// A numeric flag (T: int, std::uint64_t or double) read as written (app/numbers.hpp), from
+/// `lowest` (>= 0) to `highest`; --help shows its type, range and default; flags_json records
+/// the value as given.
+template <class T>
+CLI::Option* add_number_option(CLI::App& app, const std::string& flag, T& value,
+                               const std::string& description, std::type_identity_t<T> lowest,
+                               std::type_identity_t<T> highest);
 
-/// A list flag such as --dims 1,2,4 or --q 0.5,0.7: comma-separated numbers as above, sorted,
-/// duplicates dropped; an empty item is refused.
-void add_list_option(CLI::App& app, const std::string& flag, std::vector<int>& values,
-                     const std::string& description, int lowest, int highest);
-void add_list_option(CLI::App& app, const std::string& flag, std::vector<double>& values,
-                     const std::string& description, double lowest, double highest);
+/// A list flag such as --dims 1,2,4 or --q 0.5,0.7 (T: int or double): comma-separated numbers
+/// as above, sorted, duplicates dropped; an empty item is refused. parse_list reads it.
+template <class T>
+void add_list_option(CLI::App& app, const std::string& flag, std::vector<T>& values,
+                     const std::string& description, std::type_identity_t<T> lowest,
+                     std::type_identity_t<T> highest);
+template <class T>
+std::vector<T> parse_list(const std::string& text, const std::string& flag, T lowest, T highest);
 
 /// A flag whose value is one of `choices` (`fallback` when not given), passed to `set`.
 void add_choice_option(CLI::App& app, const std::string& flag,
@@ -82,12 +83,6 @@ void add_path_option(CLI::App& app, const std::string& flag, std::filesystem::pa
 
 /// What --help shows as the default of `option` where the value would mislead ("none").
 void show_default_as(CLI::Option* option, const std::string& text);
-
-/// The parsers behind add_list_option.
-std::vector<int> parse_int_list(const std::string& text, const std::string& flag, int lowest,
-                                int highest);
-std::vector<double> parse_real_list(const std::string& text, const std::string& flag,
-                                    double lowest, double highest);
 
 /// Throws UsageError if width x height exceeds k_max_pixels.
 void check_image_size(const ImageOptions& options);

@@ -25,8 +25,6 @@ class OutOfMemory : public std::bad_alloc {
   }
 };
 
-[[noreturn]] void throw_out_of_memory() { throw OutOfMemory(); }
-
 // A "Name: value kB" line of a /proc file, in bytes; infinity if absent.
 double proc_kilobytes(const char* file, std::string_view name) {
   std::ifstream in(file);
@@ -74,7 +72,7 @@ double available_memory_bytes() {
 }
 
 void check_memory_limit(const MemoryUse& use, std::string_view flags, std::string_view remedy) {
-  std::set_new_handler(throw_out_of_memory);
+  std::set_new_handler([] { throw OutOfMemory(); });
   const double available = available_memory_bytes();
   if (use.bytes <= available) return;
   throw UsageError(fmt::format("{}: about {:.3g} bytes of memory ({}), over the {:.3g} bytes "

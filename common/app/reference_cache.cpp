@@ -46,6 +46,21 @@ constexpr std::uint64_t k_reference_first_sample = std::uint64_t{1} << 30;
 
 bool is_furnace(const ReferenceSpec& spec) { return spec.scene.scene == "furnace"; }
 
+// The settings the JSON must match for a cached reference to be reused.
+nlohmann::ordered_json reference_settings(const ReferenceSpec& spec) {
+  const SceneParams& p = spec.scene.params;
+  return {{"scene", spec.scene.scene},
+          {"light_scale", spec.scene.scene == "cornell" ? p.light_scale : 1.0},
+          {"furnace_albedo", p.furnace_albedo},
+          {"furnace_emission", p.furnace_emission},
+          {"width", spec.width},
+          {"height", spec.height},
+          {"spp", 2 * std::max(1, spec.spp / 2)},
+          {"max_depth", spec.max_depth},
+          {"seed", spec.seed},
+          {"estimator", "mis_power"}};
+}
+
 Reference furnace_reference(const ReferenceSpec& spec) {
   const SceneParams& p = spec.scene.params;
   const double value =
@@ -67,21 +82,14 @@ constexpr std::string_view k_tag_signature = "Signature: 8a477f597d28d172789f068
 constexpr std::string_view k_index_name = "index.txt";
 
 // The cache folder, open: every file is used relative to it, whatever is renamed meanwhile.
-class CacheFolder {
- public:
-  CacheFolder(int fd, fs::path path) : fd_(fd), path_(std::move(path)) {}
-  CacheFolder(CacheFolder&& other) noexcept : fd_(std::exchange(other.fd_, -1)), path_(other.path_) {}
-  CacheFolder(const CacheFolder&) = delete;
-  CacheFolder& operator=(const CacheFolder&) = delete;
+struct CacheFolder {
+  int fd;
+  fs::path path;
+  CacheFolder(int descriptor, fs::path where) : fd(descriptor), path(std::move(where)) {}
+  CacheFolder(CacheFolder&& other) noexcept : fd(std::exchange(other.fd, -1)), path(other.path) {}
   ~CacheFolder() {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd >= 0) ::close(fd);
   }
-  int fd() const { return fd_; }
-  const fs::path& path() const { return path_; }
-
- private:
-  int fd_ = -1;
-  fs::path path_;
 };
 
 [[noreturn]] void refuse_folder(const fs::path& dir, const std::string& why,
@@ -90,121 +98,90 @@ class CacheFolder {
                                dir.string(), why, what_to_do));
 }
 
-// A shared (readers) or exclusive (writers) lock on the folder: a reader sees a PFM and its
-// JSON from one writer. Bounded: anyone may lock it, and the checksum suffices without it.
-class FolderLock {
- public:
-  FolderLock(int fd, int operation) : fd_(fd) {
-    // 100 tries 50 ms apart: 5 s, well above the milliseconds a writer holds it.
-    for (int attempt = 0; attempt < 100 && !held_; ++attempt) {
-      held_ = ::flock(fd_, operation | LOCK_NB) == 0;
-      if (!held_) ::usleep(50'000);
-    }
+// An exclusive lock on the folder while its index or tag changes. Bounded, since anyone who may
+// read the folder may lock it: 100 tries 50 ms apart, far above the milliseconds a writer holds it.
+struct FolderLock {
+  int fd;
+  bool held = false;
+  explicit FolderLock(int folder_fd) : fd(folder_fd) {
+    for (int attempt = 0; attempt < 100 && !held; ++attempt)
+      if (!(held = ::flock(fd, LOCK_EX | LOCK_NB) == 0)) ::usleep(50'000);
   }
   ~FolderLock() {
-    if (held_) ::flock(fd_, LOCK_UN);
+    if (held) ::flock(fd, LOCK_UN);
   }
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-  bool held() const { return held_; }
-
- private:
-  int fd_;
-  bool held_ = false;
 };
 
-// `name`, opened if it is a regular file of ours of at most `limit` bytes (and, with
-// `single_link`, no other name), checked before it is opened (a FIFO never is) and again once
-// open: its descriptor, or -1 and `problem` ("missing" when there is no such file).
-int open_own_file(int dir_fd, const std::string& name, off_t limit, std::string& problem,
-                  bool single_link = false) {
-  struct stat before {}, opened {};
-  if (::fstatat(dir_fd, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0)
-    problem = errno == ENOENT ? "missing" : std::strerror(errno);
-  else if (!S_ISREG(before.st_mode) || (single_link && before.st_nlink != 1))
-    problem = name + " is not a regular file";
-  else if (before.st_uid != ::geteuid())
-    problem = name + " belongs to another user";
-  else if (before.st_size > limit)
-    problem = fmt::format("{} holds {} bytes, more than it may", name, before.st_size);
-  if (!problem.empty()) return -1;
+// `name` opened without following a link or blocking (a FIFO opens at once and is refused),
+// if it is a regular file of ours of at most `limit` bytes: its descriptor, or -1 and
+// `problem` ("missing" when there is no such file).
+int open_own_file(int dir_fd, const std::string& name, off_t limit, std::string& problem) {
   const int fd = ::openat(dir_fd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) problem = fmt::format("{}: {}", name, std::strerror(errno));
-  else if (::fstat(fd, &opened) != 0 || opened.st_ino != before.st_ino ||
-           opened.st_dev != before.st_dev || opened.st_size > limit)
-    problem = name + " changed while it was opened";
+  struct stat info {};
+  if (fd < 0)
+    problem = errno == ENOENT ? "missing" : fmt::format("{}: {}", name, std::strerror(errno));
+  else if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode))
+    problem = name + " is not a regular file";
+  else if (info.st_uid != ::geteuid())
+    problem = name + " belongs to another user";
+  else if (info.st_size > limit)
+    problem = fmt::format("{} holds {} bytes, more than it may", name, info.st_size);
   if (fd >= 0 && !problem.empty()) ::close(fd);
   return problem.empty() ? fd : -1;
 }
 
-// A cache file's bytes, or why it cannot be used (as open_own_file says).
-struct FileBytes {
-  std::optional<std::string> bytes;
-  std::string problem;
-};
-
-FileBytes read_cache_file(int dir_fd, const std::string& name, off_t limit) {
-  FileBytes file;
-  const int fd = open_own_file(dir_fd, name, limit, file.problem);
-  if (fd < 0) return file;
+// A cache file's bytes, or nullopt and why (as open_own_file says).
+std::optional<std::string> read_cache_file(int dir_fd, const std::string& name, off_t limit,
+                                           std::string& problem) {
+  const int fd = open_own_file(dir_fd, name, limit, problem);
   struct stat info {};
-  ::fstat(fd, &info);
+  if (fd < 0 || ::fstat(fd, &info) != 0) return std::nullopt;
   std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
-  if (read_all(fd, bytes) == bytes.size()) file.bytes = std::move(bytes);
-  else file.problem = name + " is shorter than its size";
+  if (read_all(fd, bytes) != bytes.size()) problem = name + " is shorter than its size";
   ::close(fd);
-  return file;
+  return problem.empty() ? std::optional(std::move(bytes)) : std::nullopt;
+}
+
+bool has_tag(int dir_fd) {
+  std::string problem;
+  const auto tag = read_cache_file(dir_fd, std::string(k_tag_name), 4096, problem);
+  return tag && tag->starts_with(k_tag_signature);
 }
 
 using NamedBytes = std::pair<std::string, std::string_view>;
 void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files,
                  std::set<std::string>* index = nullptr);
 
-bool has_tag(int dir_fd) {
-  const FileBytes tag = read_cache_file(dir_fd, std::string(k_tag_name), 4096);
-  return tag.bytes && tag.bytes->starts_with(k_tag_signature);
-}
-
-bool is_empty(int dir_fd) {  // the open folder itself, by its descriptor's name
-  std::error_code ec;
-  return fs::is_empty(fs::path("/proc/self/fd") / std::to_string(dir_fd), ec) && !ec;
-}
-
 // Opens `dir` (never through a link); nullopt if it does not exist. UsageError as
 // check_reference_folder says; an empty folder is adopted: tagged.
 std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
   const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  struct stat info {};
   if (fd < 0) {
     const int reason = errno;
-    struct stat status {};
-    if (::lstat(dir.c_str(), &status) != 0 && (errno == ENOENT || errno == ENOTDIR))
+    if (::lstat(dir.c_str(), &info) != 0 && (errno == ENOENT || errno == ENOTDIR))
       return std::nullopt;
-    if (S_ISLNK(status.st_mode)) refuse_folder(dir, "it is a symbolic link");
+    if (S_ISLNK(info.st_mode)) refuse_folder(dir, "it is a symbolic link");
     if (reason == ENOTDIR) refuse_folder(dir, "it is not a folder");
     throw IoError(fmt::format("cannot open the reference cache '{}': {}", dir.string(),
                               std::strerror(reason)));
   }
   CacheFolder folder(fd, dir);
-  struct stat status {};
-  if (::fstat(fd, &status) != 0)
-    throw IoError(fmt::format("cannot open the reference cache '{}': {}", dir.string(),
-                              std::strerror(errno)));
-  if (status.st_uid != ::geteuid())
-    refuse_folder(dir, fmt::format("it belongs to another user (uid {})", status.st_uid));
-  if ((status.st_mode & S_IWOTH) && !(status.st_mode & S_ISVTX))
-    refuse_folder(dir, "anyone may write in it (o+w, no sticky bit)");
-  if (!has_tag(fd)) {
-    // Locked: two runs adopting one new folder see each other's tag, not someone's files.
-    const FolderLock lock(fd, LOCK_EX);
-    if (has_tag(fd)) return folder;
-    if (!is_empty(fd))
-      refuse_folder(dir, fmt::format("it holds files and no {} (not a cache)", k_tag_name),
-                    "give a new or empty folder");
-    const std::string tag = fmt::format(
-        "{}\n# The cache of mcrt-companion's reference images: safe to delete.\n",
-        k_tag_signature);
-    write_files(folder, {{std::string(k_tag_name), tag}});
-  }
+  ::fstat(fd, &info);
+  // As for --out, save that a sticky cache (1777, like /tmp) keeps others from our files.
+  if (const std::string why = not_our_folder(info, true, false); !why.empty())
+    refuse_folder(dir, "it " + why);
+  if (has_tag(fd)) return folder;
+  // Locked: two runs adopting one new folder see each other's tag, not someone's files.
+  const FolderLock lock(fd);
+  std::error_code ec;  // the open folder itself, by its descriptor's name
+  if (has_tag(fd)) return folder;
+  if (!fs::is_empty(fs::path("/proc/self/fd") / std::to_string(fd), ec) || ec)
+    refuse_folder(dir, fmt::format("it holds files and no {} (not a cache)", k_tag_name),
+                  "give a new or empty folder");
+  const std::string tag = fmt::format(
+      "{}\n# The cache of mcrt-companion's reference images: safe to delete.\n", k_tag_signature);
+  write_files(folder, {{std::string(k_tag_name), tag}});
   return folder;
 }
 
@@ -236,10 +213,12 @@ CacheFolder create_cache_folder(const fs::path& dir) {
   throw IoError(fmt::format("cannot create the reference cache '{}': it vanished", dir.string()));
 }
 
-// The names the cache wrote or is writing (none if unreadable); under the exclusive lock.
+// The names the cache wrote or is writing (none if unreadable); under the folder's lock.
 std::set<std::string> read_index(int dir_fd) {
+  std::string problem;
+  std::istringstream lines(
+      read_cache_file(dir_fd, std::string(k_index_name), 1 << 20, problem).value_or(""));
   std::set<std::string> names;
-  std::istringstream lines(read_cache_file(dir_fd, std::string(k_index_name), 1 << 20).bytes.value_or(""));
   for (std::string name; std::getline(lines, name);)
     if (!name.empty() && name.find('/') == std::string::npos && name != "." && name != "..")
       names.insert(name);
@@ -255,13 +234,13 @@ void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files
   std::error_code failure;
   std::string failed = std::string(k_index_name);
   for (const auto& [name, bytes] : files) {
-    temporaries.push_back(create_temporary(folder.fd(), name));
-    if (temporaries.back().fd < 0) {
-      failure = temporaries.back().error, failed = name;
-      temporaries.pop_back();
+    NewFile file = create_temporary(folder.fd, name);
+    if ((failure = file.error)) {
+      failed = name;
       break;
     }
-    if (index) index->insert({name, temporaries.back().name});
+    if (index) index->insert({name, file.name});
+    temporaries.push_back(std::move(file));
   }
   if (index && !failure) {
     std::string text;
@@ -275,52 +254,47 @@ void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files
   for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
     if ((failure = write_all(temporaries[i].fd, files[i].second))) failed = files[i].first;
   for (std::size_t i = 0; i < temporaries.size() && !failure; ++i)
-    if (::renameat(folder.fd(), temporaries[i].name.c_str(), folder.fd(),
-                   files[i].first.c_str()) != 0)
+    if (::renameat(folder.fd, temporaries[i].name.c_str(), folder.fd, files[i].first.c_str()) != 0)
       failure = {errno, std::generic_category()}, failed = files[i].first;
   for (const NewFile& file : temporaries) {
-    if (failure) ::unlinkat(folder.fd(), file.name.c_str(), 0);  // ours: we hold its lock
+    if (failure) ::unlinkat(folder.fd, file.name.c_str(), 0);  // ours: we hold its lock
     ::close(file.fd);  // after the rename: the lock marks a live writer until then
   }
   if (failure)
-    throw IoError(fmt::format("cannot write '{}': {}", (folder.path() / failed).string(),
+    throw IoError(fmt::format("cannot write '{}': {}", (folder.path / failed).string(),
                               failure.message()));
 }
 
 bool missing(int dir_fd, const std::string& name) {
-  struct stat status {};
-  return ::fstatat(dir_fd, name.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT;
+  struct stat info {};
+  return ::fstatat(dir_fd, name.c_str(), &info, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT;
 }
 
 // Removes what killed writers left, and only that: files the index names, regular and ours,
 // that are a temporary whose lock is free (a live writer in any PID namespace holds it) or a
 // PFM without its JSON. Any error (EMFILE, EIO) leaves the file.
 void remove_leftovers(const CacheFolder& folder) {
-  const FolderLock lock(folder.fd(), LOCK_EX);
-  if (!lock.held()) return;
-  const std::set<std::string> named = read_index(folder.fd());
+  const FolderLock lock(folder.fd);
+  if (!lock.held) return;
+  const std::set<std::string> named = read_index(folder.fd);
   std::set<std::string> kept;
   for (const std::string& name : named) {
-    if (missing(folder.fd(), name)) continue;  // renamed or removed: dropped from the index
+    if (missing(folder.fd, name)) continue;  // renamed or removed: dropped from the index
     const bool temporary = name.starts_with(".") && name.find(".tmp-") != std::string::npos;
     const bool orphan_pfm = !temporary && name.ends_with(".pfm") &&
-                            missing(folder.fd(), name.substr(0, name.size() - 4) + ".json");
-    bool removed = false;
-    if (temporary || orphan_pfm) {
-      std::string problem;
-      const int fd = open_own_file(folder.fd(), name, std::numeric_limits<off_t>::max(), problem, true);
-      if (fd >= 0 && (orphan_pfm || ::flock(fd, LOCK_EX | LOCK_NB) == 0))
-        removed = ::unlinkat(folder.fd(), name.c_str(), 0) == 0;
-      if (fd >= 0) ::close(fd);
-    }
+                            missing(folder.fd, name.substr(0, name.size() - 4) + ".json");
+    std::string problem;
+    const int fd = temporary || orphan_pfm
+                       ? open_own_file(folder.fd, name, std::numeric_limits<off_t>::max(), problem)
+                       : -1;
+    const bool removed = fd >= 0 && (orphan_pfm || ::flock(fd, LOCK_EX | LOCK_NB) == 0) &&
+                         ::unlinkat(folder.fd, name.c_str(), 0) == 0;
+    if (fd >= 0) ::close(fd);
     if (!removed) kept.insert(name);
   }
-  if (kept != named) {
-    try {
-      std::set<std::string> index = kept;
-      write_files(folder, {}, &index);
-    } catch (const IoError&) {  // a stale index only names files that are gone
-    }
+  try {
+    if (kept != named) write_files(folder, {}, &kept);
+  } catch (const IoError&) {  // a stale index only names files that are gone
   }
 }
 
@@ -331,48 +305,34 @@ std::string checksum(std::string_view bytes) {
   return fmt::format("{:016x}", hash);
 }
 
-// The cache's PFM: exactly the bytes encode_pfm writes for an image of the spec's size.
-std::size_t expected_pfm_bytes(const ReferenceSpec& spec) {
-  return fmt::format("PF\n{} {}\n-1.0\n", spec.width, spec.height).size() +
-         static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 12;
-}
-
-// The cached reference, or why it cannot be used ("" for a normal miss). A JSON is a few
-// hundred bytes: 64 KiB bounds what is read.
+// The cached reference, or why it cannot be used ("" for a normal miss). Read without a lock:
+// a PFM and a JSON of two crossing writers disagree on the checksum. A JSON is a few hundred
+// bytes: 64 KiB bounds what is read.
 std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
                                                  const ReferenceSpec& spec) {
   const std::string stem = reference_stem(spec);
   const std::string json_name = stem + ".json", pfm_name = stem + ".pfm";
-  const FolderLock lock(folder.fd(), LOCK_SH);
-  FileBytes json_bytes = read_cache_file(folder.fd(), json_name, 64 * 1024);
-  if (!json_bytes.bytes) return json_bytes.problem == "missing" ? "" : json_bytes.problem;
-  nlohmann::ordered_json info;
-  try {
-    info = nlohmann::ordered_json::parse(*json_bytes.bytes);
-  } catch (const nlohmann::json::exception&) {
-    return json_name + " is not valid JSON";
-  }
+  std::string problem;
+  const auto json = read_cache_file(folder.fd, json_name, 64 * 1024, problem);
+  if (!json) return problem == "missing" ? "" : problem;
+  const auto info = nlohmann::ordered_json::parse(*json, nullptr, false);
   if (!info.is_object() || !info.contains("settings")) return json_name + " has no settings";
   if (info["settings"] != reference_settings(spec)) return "";
-  const auto& record = info.contains("pfm") ? info["pfm"] : nlohmann::ordered_json();
-  if (!record.is_object() || !record.contains("bytes") || !record["bytes"].is_number_unsigned() ||
-      !record.contains("fnv1a64") || !record["fnv1a64"].is_string())
-    return json_name + " records no size and checksum of its PFM (an older or partial cache)";
-  const std::size_t expected = expected_pfm_bytes(spec);
-  if (record["bytes"].get<std::size_t>() != expected)
-    return fmt::format("{} records a PFM of {} bytes, not the {} of a {}x{} image", json_name,
-                       record["bytes"].get<std::size_t>(), expected, spec.width, spec.height);
-  FileBytes pfm = read_cache_file(folder.fd(), pfm_name, static_cast<off_t>(expected));
-  if (!pfm.bytes)
-    return pfm.problem == "missing" ? pfm_name + " is missing" : pfm.problem;
-  if (pfm.bytes->size() != expected)
-    return fmt::format("{} holds {} bytes, not the {} its description records", pfm_name,
-                       pfm.bytes->size(), expected);
-  if (checksum(*pfm.bytes) != record["fnv1a64"].get<std::string>())
+  if (!info.contains("pfm") || !info["pfm"].contains("fnv1a64"))
+    return json_name + " records no checksum of its PFM (an older or partial cache)";
+  // Exactly the bytes encode_pfm writes for an image of the spec's size.
+  const std::size_t expected = fmt::format("PF\n{} {}\n-1.0\n", spec.width, spec.height).size() +
+                               std::size_t{12} * spec.width * spec.height;
+  const auto pfm = read_cache_file(folder.fd, pfm_name, static_cast<off_t>(expected), problem);
+  if (!pfm) return problem == "missing" ? pfm_name + " is missing" : problem;
+  if (pfm->size() != expected)
+    return fmt::format("{} holds {} bytes, not the {} of a {}x{} image", pfm_name, pfm->size(),
+                       expected, spec.width, spec.height);
+  if (info["pfm"]["fnv1a64"] != checksum(*pfm))
     return pfm_name + " does not match the checksum its description records";
   Reference r;
   try {
-    r.image = decode_pfm(*pfm.bytes, pfm_name);
+    r.image = decode_pfm(*pfm, pfm_name);
   } catch (const IoError& e) {
     return e.what();
   }
@@ -383,8 +343,8 @@ std::variant<Reference, std::string> load_cached(const CacheFolder& folder,
       if (!std::isfinite(pixel[c]) || pixel[c] < 0.0)
         return fmt::format("{} holds a value that is not finite and non-negative ({})", pfm_name,
                            pixel[c]);
-  info.erase("pfm");
-  r.info = std::move(info);
+  r.info = info;
+  r.info.erase("pfm");
   return r;
 }
 
@@ -446,20 +406,6 @@ std::string reference_stem(const ReferenceSpec& spec) {
   return stem;
 }
 
-nlohmann::ordered_json reference_settings(const ReferenceSpec& spec) {
-  const SceneParams& p = spec.scene.params;
-  return {{"scene", spec.scene.scene},
-          {"light_scale", spec.scene.scene == "cornell" ? p.light_scale : 1.0},
-          {"furnace_albedo", p.furnace_albedo},
-          {"furnace_emission", p.furnace_emission},
-          {"width", spec.width},
-          {"height", spec.height},
-          {"spp", 2 * std::max(1, spec.spp / 2)},
-          {"max_depth", spec.max_depth},
-          {"seed", spec.seed},
-          {"estimator", "mis_power"}};
-}
-
 fs::path reference_folder(const fs::path& flag) {
   return flag.empty() ? default_cache_folder() : flag;
 }
@@ -494,8 +440,8 @@ Reference load_or_render_reference(const fs::path& dir, const ReferenceSpec& spe
   nlohmann::ordered_json description = r.info;
   description["pfm"] = {{"bytes", pfm.size()}, {"fnv1a64", checksum(pfm)}};
   const std::string json = description.dump(2) + "\n", stem = reference_stem(spec);
-  const FolderLock lock(folder.fd(), LOCK_EX);  // no reader takes this PFM with another's JSON
-  std::set<std::string> index = read_index(folder.fd());
+  const FolderLock lock(folder.fd);  // the index read and rewritten by one writer at a time
+  std::set<std::string> index = read_index(folder.fd);
   write_files(folder, {{stem + ".pfm", pfm}, {stem + ".json", json}}, &index);
   return r;
 }

@@ -39,9 +39,6 @@ struct Reference {
 /// `<scene>_ls<scale>_<w>x<h>` (and `_d<depth>` with a depth cut): the cache's file stem.
 std::string reference_stem(const ReferenceSpec& spec);
 
-/// The settings the JSON must match for a cached reference to be reused.
-nlohmann::ordered_json reference_settings(const ReferenceSpec& spec);
-
 /// `flag` (--reference-dir) if given, else $XDG_CACHE_HOME/mcrt-companion, else
 /// $HOME/.cache/mcrt-companion (absolute paths only); UsageError if neither is set.
 std::filesystem::path reference_folder(const std::filesystem::path& flag);
@@ -53,11 +50,11 @@ std::filesystem::path reference_folder(const std::filesystem::path& flag);
 void check_reference_folder(const std::filesystem::path& dir, const std::filesystem::path& out);
 
 /// The reference for `spec`: the furnace's closed form, a cached entry that verifies (regular
-/// files of ours, the spec's settings, the recorded size and checksum, finite non-negative
-/// values), or a new render written there (one line on stderr says why a cached one is not
-/// used). Files are read and written relative to the folder opened once; writers create
-/// locked temporaries named in the index first. Only temporaries whose lock is free and PFMs
-/// without a JSON, named by the index, are ever removed. Throws IoError if it cannot write.
+/// files of ours, the spec's settings, the PFM's size and recorded checksum, finite
+/// non-negative values), or a new render written there (one line on stderr says why a cached
+/// one is not used). Writers name their locked temporaries in the index first; only those
+/// whose lock is free and PFMs without a JSON, named by the index, are ever removed. Throws
+/// IoError if it cannot write.
 Reference load_or_render_reference(const std::filesystem::path& dir, const ReferenceSpec& spec);
 
 /// Rays a reference render would trace at most (app/ray_limit): pixels x spp x rays_per_sample.

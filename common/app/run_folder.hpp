@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include <sys/types.h>
+#include <sys/stat.h>
 
 namespace mcrt {
 
@@ -73,6 +73,11 @@ std::optional<std::string> first_foreign_entry(const std::filesystem::path& dir)
 
 /// `.<name>.staging-<suffix>`, `name` cut at a UTF-8 boundary to fit NAME_MAX with "-previous".
 std::string staging_name(const std::string& name, const std::string& suffix);
+
+/// Why the folder `info` describes is not one this user can own (git's safe.directory rule), or
+/// "": "is owned by another user" (unless `root_ok` and root owns it), or "can be written by
+/// other users" (unless `sticky_ok` and its sticky bit, as /tmp's, keeps them off our files).
+std::string not_our_folder(const struct stat& info, bool sticky_ok, bool root_ok);
 
 /// `path` absolute, links followed as far as they exist, without a trailing '/'.
 std::filesystem::path resolved(const std::filesystem::path& path);

@@ -20,32 +20,26 @@ std::string random_suffix() {
   return fmt::format("{:016x}", bits);
 }
 
-NewFile create_temporary(int dir_fd, std::string_view stem) {
+NewFile create_temporary(int dir_fd, const std::filesystem::path& beside) {
   NewFile file;
   // 64 random bits: a name already taken is someone's plant or a one-in-2^64 draw; a few
   // tries are plenty for the second, and the first is never opened.
   for (int attempt = 0; attempt < 8; ++attempt) {
-    std::string name(1, '.');
-    name.append(stem).append(".tmp-").append(random_suffix());
-    file.name = std::move(name);
+    const auto name = fmt::format(".{}.tmp-{}", beside.filename().string(), random_suffix());
+    file.name = (beside.parent_path() / name).string();
     file.fd = ::openat(dir_fd, file.name.c_str(),
                        O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, k_temporary_mode);
-    if (file.fd >= 0) {
-      ::flock(file.fd, LOCK_EX);  // held until closed: the mark of a live writer
-      // A cleaner may have taken the lock first, between the open and the flock, and removed
-      // the name: then this file is nobody's, and another is made.
-      struct stat status {};
-      if (::fstat(file.fd, &status) == 0 && status.st_nlink > 0) {
-        file.error.clear();
-        return file;
-      }
-      ::close(file.fd);
-      file.fd = -1;
-      file.error = std::make_error_code(std::errc::no_such_file_or_directory);
-      continue;
-    }
-    file.error = {errno, std::generic_category()};
-    if (errno != EEXIST) break;
+    file.error = {file.fd < 0 ? errno : 0, std::generic_category()};
+    if (file.fd < 0 && errno != EEXIST) break;
+    if (file.fd < 0) continue;
+    ::flock(file.fd, LOCK_EX);  // held until closed: the mark of a live writer
+    // A cleaner may have taken the lock first, between the open and the flock, and removed
+    // the name: then this file is nobody's, and another is made.
+    struct stat status {};
+    if (::fstat(file.fd, &status) == 0 && status.st_nlink > 0) return file;
+    ::close(file.fd);
+    file.fd = -1;
+    file.error = std::make_error_code(std::errc::no_such_file_or_directory);
   }
   return file;
 }

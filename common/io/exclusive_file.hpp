@@ -2,6 +2,7 @@
 /// Files created, never reused: every temporary is made O_CREAT|O_EXCL|O_NOFOLLOW under a name
 /// nobody can predict, so a link or file planted under that name is never written through.
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -21,9 +22,10 @@ struct NewFile {
   std::error_code error;
 };
 
-/// Creates `.<stem>.tmp-<random_suffix()>` in the folder open as `dir_fd` and locks it (flock):
-/// a lock nobody holds marks the file of a writer that died (the reference cache's clean-up).
-NewFile create_temporary(int dir_fd, std::string_view stem);
+/// Creates `.<name>.tmp-<random_suffix()>` beside `beside` (relative to the folder open as
+/// `dir_fd`, or AT_FDCWD) and locks it (flock): a lock nobody holds marks the file of a writer
+/// that died (the reference cache's clean-up).
+NewFile create_temporary(int dir_fd, const std::filesystem::path& beside);
 
 /// Writes all of `bytes` to `fd`; the system's reason on failure (a write of nothing: a full disk).
 std::error_code write_all(int fd, std::string_view bytes);

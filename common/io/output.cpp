@@ -1,8 +1,6 @@
 #include "io/output.hpp"
 
 #include <cerrno>
-#include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <system_error>
 
@@ -32,31 +30,14 @@ void prepare_output_dir(const fs::path& dir) {
                   std::strerror(errno));
 }
 
-fs::path temporary_path_for(const fs::path& path) {
-  return path.parent_path() / std::string(".").append(path.filename().string()).append(".tmp-").append(random_suffix());
-}
-
-void commit_file(const fs::path& from, const fs::path& to) {
-  std::error_code renamed;
-  fs::rename(from, to, renamed);
-  if (!renamed) return;
-  std::error_code ignored;  // the rename's reason is the one to report
-  fs::remove(from, ignored);
-  throw IoError("cannot write '" + to.string() + "': " + renamed.message());
-}
-
 void write_file_atomic(const fs::path& path, std::string_view bytes) {
-  const fs::path temporary = temporary_path_for(path);  // new: never one planted under this name
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-                        k_temporary_mode);
-  std::error_code failure = fd < 0 ? std::error_code(errno, std::generic_category()) : write_all(fd, bytes);
-  if (fd >= 0 && ::close(fd) != 0 && !failure) failure = {errno, std::generic_category()};
-  if (failure) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw IoError("cannot write '" + path.string() + "': " + failure.message());
-  }
-  commit_file(temporary, path);
+  const NewFile file = create_temporary(AT_FDCWD, path);  // new: never one planted there
+  std::error_code failure = file.fd < 0 ? file.error : write_all(file.fd, bytes);
+  if (file.fd >= 0 && ::close(file.fd) != 0 && !failure) failure = {errno, std::generic_category()};
+  if (!failure && ::rename(file.name.c_str(), path.c_str()) != 0)
+    failure = {errno, std::generic_category()};
+  if (failure && file.fd >= 0) ::unlink(file.name.c_str());  // ours: made O_EXCL
+  if (failure) throw IoError("cannot write '" + path.string() + "': " + failure.message());
 }
 
 }  // namespace mcrt

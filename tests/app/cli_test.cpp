@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
-using mcrt::parse_int_list;
+constexpr auto parse_int_list = &mcrt::parse_list<int>;
 
 namespace {
 
@@ -79,7 +79,7 @@ TEST(AddListOptionTest, TheOptionParsesIntoTheVectorAndKeepsItsDefault) {
 // A list of reals such as --q: parsed, sorted and deduplicated, or rejected naming the flag.
 std::string real_rejection(const std::string& text) {
   try {
-    mcrt::parse_real_list(text, "--q", 0.001, 0.999);
+    mcrt::parse_list<double>(text, "--q", 0.001, 0.999);
   } catch (const CLI::ValidationError& e) {
     return e.what();
   }
@@ -88,9 +88,9 @@ std::string real_rejection(const std::string& text) {
 
 TEST(ParseRealListTest, SortsAndDropsDuplicates) {
   using Reals = std::vector<double>;
-  EXPECT_EQ(mcrt::parse_real_list("0.9,0.5,0.5,5e-1,0.7", "--q", 0.001, 0.999),
+  EXPECT_EQ(mcrt::parse_list<double>("0.9,0.5,0.5,5e-1,0.7", "--q", 0.001, 0.999),
             (Reals{0.5, 0.7, 0.9}));
-  EXPECT_EQ(mcrt::parse_real_list("0.001,0.999", "--q", 0.001, 0.999), (Reals{0.001, 0.999}));
+  EXPECT_EQ(mcrt::parse_list<double>("0.001,0.999", "--q", 0.001, 0.999), (Reals{0.001, 0.999}));
 }
 
 TEST(ParseRealListTest, RejectsWhatIsNotAFiniteDecimalInRange) {

@@ -138,6 +138,18 @@ TEST(ReferenceCacheTest, ALinkOrAnOpenFolderIsRefusedWithExitTwo) {
   EXPECT_TRUE(fs::is_regular_file(parent / "missing" / "CACHEDIR.TAG"));  // made and tagged
 }
 
+// The cache follows --out's rule of a folder of one's own (app/run_folder.hpp): one that
+// another group can write is refused too. Root only: it needs a group the test is not in.
+TEST(ReferenceCacheTest, AFolderAnotherGroupCanWriteIsRefused) {
+  if (::geteuid() != 0) GTEST_SKIP() << "needs root to give a folder another group";
+  const fs::path dir = fresh_dir("group") / "cache";
+  fs::create_directory(dir);
+  ASSERT_EQ(::chown(dir.c_str(), static_cast<uid_t>(-1), ::getegid() + 4242), 0);
+  ASSERT_EQ(::chmod(dir.c_str(), 0775), 0);
+  EXPECT_THROW(mcrt::check_reference_folder(dir, ""), mcrt::UsageError);
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 // The exact signature line of the Cache Directory Tagging convention.
 TEST(ReferenceCacheTest, TheFolderIsTaggedAsACache) {
   const fs::path dir = fresh_dir("tagged") / "cache";

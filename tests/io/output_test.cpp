@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <string>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include "io/exclusive_file.hpp"
 #include "support/temp_files.hpp"
 
 namespace fs = std::filesystem;
@@ -41,15 +43,13 @@ TEST(OutputTest, WritesTheWholeFileAndLeavesNoTemporary) {
 TEST(OutputTest, AFailedRenameGivesItsRealReasonAndRemovesTheTemporary) {
   const fs::path dir = fresh_dir("rename");
   fs::create_directories(dir / "target" / "inside");  // a non-empty folder cannot be replaced
-  const fs::path from = dir / ".temporary";
-  write_text(from, "new\n");
-  const std::string message = io_error([&] { mcrt::commit_file(from, dir / "target"); });
+  const std::string message = io_error([&] { mcrt::write_file_atomic(dir / "target", "new\n"); });
   EXPECT_NE(message.find((dir / "target").string()), std::string::npos) << message;
   EXPECT_EQ(message.find("Success"), std::string::npos) << message;
   EXPECT_TRUE(message.find("directory") != std::string::npos ||
               message.find("Directory") != std::string::npos)
       << message;
-  EXPECT_FALSE(fs::exists(from));
+  EXPECT_EQ(entries(dir), 1);  // the temporary removed
 }
 
 TEST(OutputTest, AFailedWriteGivesItsRealReason) {
@@ -71,9 +71,13 @@ TEST(OutputTest, ADanglingLinkAsTheOutputFolderIsNamedAsSuch) {
 // Issue 34: the temporary name was `.<name>.tmp-<pid>-<n>`, so another user could plant links
 // under the next pids' names. It now holds 64 random bits and no pid.
 TEST(OutputTest, TemporaryNamesCannotBeGuessed) {
-  const fs::path first = mcrt::temporary_path_for("/somewhere/summary.json");
-  const fs::path second = mcrt::temporary_path_for("/somewhere/summary.json");
-  EXPECT_EQ(first.parent_path(), fs::path("/somewhere"));  // beside it: rename() is atomic
+  const fs::path dir = fresh_dir("names");
+  const mcrt::NewFile one = mcrt::create_temporary(AT_FDCWD, dir / "summary.json");
+  const mcrt::NewFile two = mcrt::create_temporary(AT_FDCWD, dir / "summary.json");
+  ::close(one.fd);
+  ::close(two.fd);
+  const fs::path first = one.name, second = two.name;
+  EXPECT_EQ(first.parent_path(), dir);  // beside it: rename() is atomic
   const std::string a = first.filename().string(), b = second.filename().string();
   EXPECT_EQ(a.rfind(".summary.json.tmp-", 0), 0u) << a;
   EXPECT_EQ(a.find(std::to_string(::getpid())), std::string::npos) << a;
