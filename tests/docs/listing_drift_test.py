@@ -5,7 +5,8 @@ appear in that file, in order.
 
     listing_drift_test.py REPO_ROOT
 
-Lines are compared with their indentation stripped; blank lines and the assignment markers of
+Lines are compared with their indentation stripped and runs of spaces made one (the aligned
+trailing comments clang-format writes are layout, not code); blank lines and the assignment markers of
 the source are ignored. A line of the listing that starts with `...` or `// ...` elides source
 lines: what comes after it must follow later in the file. A kit's stubbed file (a region
 replaced by NOT_IMPLEMENTED) is not compared: the kit's pages leave its solution out.
@@ -31,9 +32,14 @@ def elision(line):
     return line.startswith("...") or line.startswith("// ...")
 
 
+def normal(line):
+    """The line without its indentation, its runs of spaces made one."""
+    return " ".join(line.split())
+
+
 def source_lines(path):
     with open(path, encoding="utf-8") as f:
-        return [l.strip() for l in f if l.strip() and "ASSIGNMENT " not in l]
+        return [normal(l) for l in f if l.strip() and "ASSIGNMENT " not in l]
 
 
 def listings(page):
@@ -41,7 +47,7 @@ def listings(page):
     with open(os.path.join(REPO, "docs", page), encoding="utf-8") as f:
         text = f.read()
     for m in LISTING.finditer(text):
-        lines = [l.strip() for l in m.group(1).splitlines() if l.strip()]
+        lines = [normal(l) for l in m.group(1).splitlines() if l.strip()]
         yield text.count("\n", 0, m.start()) + 1, lines
 
 
