@@ -29,7 +29,7 @@ fail() { echo "kit_test $a: $*" >&2; exit 1; }
 if [ "$mode" = variant ]; then
   secret=${4:?kit_test.sh ROOT variant aN SECRET}
   build=$tmp/build
-  [ -n "${KIT_TEST_REUSE:-}" ] && build=$KIT_TEST_REUSE/variant-build
+  if [ -n "${KIT_TEST_REUSE:-}" ]; then build=$KIT_TEST_REUSE/variant-build; fi
   "$root/scripts/make-assignment" "$a" --out "$tmp/kit" --solution --variant "$secret"
   "$root/scripts/make-assignment" "$a" --autograder "$tmp/autograder" --variant "$secret"
   "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$tmp/autograder/hidden" --build "$build" \
