@@ -14,7 +14,9 @@
 #                                   answers lose points (the variant's numbers are its own)
 # With KIT_TEST_REUSE=DIR (scripts/test --kits), the stub kit is synced into DIR/kit, only the
 # files whose content changed being rewritten, and built in DIR/build: one kit after another
-# recompiles only what their stubs change, not the whole project.
+# recompiles only what their stubs change, not the whole project. A variant's gradings use
+# DIR/variant-build, the grader's --build folder kept from one assignment to the next (as
+# Gradescope keeps /autograder/base): each rebuilds only what its grading tree changes.
 set -eu
 root=$1 mode=$2 a=${3:-a2}
 tmp=$(mktemp -d /tmp/mcrt-kit-test.XXXXXX)
@@ -26,13 +28,15 @@ fail() { echo "kit_test $a: $*" >&2; exit 1; }
 
 if [ "$mode" = variant ]; then
   secret=${4:?kit_test.sh ROOT variant aN SECRET}
+  build=$tmp/build
+  if [ -n "${KIT_TEST_REUSE:-}" ]; then build=$KIT_TEST_REUSE/variant-build; fi
   "$root/scripts/make-assignment" "$a" --out "$tmp/kit" --solution --variant "$secret"
   "$root/scripts/make-assignment" "$a" --autograder "$tmp/autograder" --variant "$secret"
-  "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$tmp/autograder/hidden" --build "$tmp/build" \
+  "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$tmp/autograder/hidden" --build "$build" \
       --gradescope "$tmp/results.json" > "$tmp/grade.txt" 2>&1 || { cat "$tmp/grade.txt"; fail "the variant's solution kit lost points"; }
   cat "$tmp/grade.txt"
   grep -q '"visibility": "after_published"' "$tmp/results.json" || fail "no hidden test was graded"
-  if "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$root/tests/assignments/hidden" --build "$tmp/build" \
+  if "$root/scripts/grade" "$a" --kit "$tmp/kit" --hidden "$root/tests/assignments/hidden" --build "$build" \
       > "$tmp/default.txt" 2>&1; then
     fail "the variant's answers scored full marks against the default key"
   fi
