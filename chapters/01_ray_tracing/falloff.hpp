@@ -20,11 +20,11 @@
 namespace mcrt {
 
 struct Falloff {
-  double height = 0.0;           ///< h: from the lamp to the surface straight below it
-  double predicted_below = 0.0;  ///< (rho / pi) Le A / h^2, the mean of its three colours
-  double measured_below = 0.0;   ///< shade() at that point, the mean of its three colours
-  int points = 0;                ///< the angles whose point lies on that plane (theta = 0 too)
-  double largest_angle = 0.0;    ///< in degrees, of those points
+  double height = 0.0;             ///< h: from the lamp to the surface straight below it
+  double predicted_below = 0.0;    ///< (rho / pi) Le A / h^2, the mean of its three colours
+  double measured_below = 0.0;     ///< shade() at that point, the mean of its three colours
+  int points = 0;                  ///< the angles whose point lies on that plane (theta = 0 too)
+  double largest_angle = 0.0;      ///< in degrees, of those points
   double largest_deviation = 0.0;  ///< max over points and colours of |L / L_predicted - 1|
 };
 
@@ -35,8 +35,8 @@ std::optional<Falloff> measure_falloff(const Scene& scene, Shade shade) {
   const PointLight& light = scene.point_light;
   const Vec3 down = light.normal;  // the lamp's normal points at the floor
   if (light.intensity == Color(0.0) || glm::length(down) == 0.0) return std::nullopt;
-  const Vec3 u = glm::normalize(glm::cross(down, std::abs(down.x) < 0.9 ? Vec3(1, 0, 0)
-                                                                        : Vec3(0, 1, 0)));
+  const Vec3 u =
+      glm::normalize(glm::cross(down, std::abs(down.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
   const Vec3 v = glm::cross(down, u);
   std::optional<Falloff> falloff;
   for (int step = 0; step <= 28; ++step) {  // theta = step x 2.5 degrees
@@ -57,8 +57,8 @@ std::optional<Falloff> measure_falloff(const Scene& scene, Shade shade) {
         continue;
       const Material& material = scene.material(*hit);
       const double c = std::cos(theta);
-      const Color predicted = material.brdf() * light.intensity * (c * c * c * c) /
-                              (falloff->height * falloff->height);
+      const Color predicted =
+          material.brdf() * light.intensity * (c * c * c * c) / (falloff->height * falloff->height);
       RayCount count;
       const Color measured = shade(scene, *hit, count) - material.emission;
       for (int k = 0; k < 3; ++k)

@@ -97,11 +97,13 @@ void print_summary(const Options& o, const RenderResult& result,
   fmt::print("  rays per second  {:.3g}\n", result.rays_per_second());
   fmt::print("  mean radiance    {:.4f}\n", mean_radiance(result.image));
   if (falloff)
-    fmt::print("  below the lamp   {:.6g} (predicted (rho/pi) Le A / h^2 = {:.6g}); cos^4 law at "
-               "{} floor points to {} degrees: largest deviation {:.1e}\n",
-               falloff->measured_below, falloff->predicted_below, falloff->points,
-               falloff->largest_angle, falloff->largest_deviation);
-  fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json,timings.json}}\n", o.common.out.string());
+    fmt::print(
+        "  below the lamp   {:.6g} (predicted (rho/pi) Le A / h^2 = {:.6g}); cos^4 law at "
+        "{} floor points to {} degrees: largest deviation {:.1e}\n",
+        falloff->measured_below, falloff->predicted_below, falloff->points, falloff->largest_angle,
+        falloff->largest_deviation);
+  fmt::print("  wrote            {}/{{image.png,image.pfm,summary.json,timings.json}}\n",
+             o.common.out.string());
 }
 
 void run(const CLI::App& app, const Options& o) {
@@ -115,12 +117,12 @@ void run(const CLI::App& app, const Options& o) {
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
 
-  ProgressBar progress("ch01 rendering", static_cast<std::uint64_t>(o.image.height), o.common.quiet);
+  ProgressBar progress("ch01 rendering", static_cast<std::uint64_t>(o.image.height),
+                       o.common.quiet);
   RenderSettings settings{o.spp, 0, o.common.seed, o.common.threads, &progress};
-  const RenderResult result =
-      render(camera, settings, [&](const Ray& ray, Rng&, RayCount& count) {
-        return trace(scene, ray, count);
-      });
+  const RenderResult result = render(camera, settings, [&](const Ray& ray, Rng&, RayCount& count) {
+    return trace(scene, ray, count);
+  });
   progress.finish();
 
   write_png(o.common.dir / "image.png", result.image);

@@ -50,8 +50,8 @@ struct Options {
   std::uint64_t max_n = 10'000'000;  // largest N of the 2D error study (from N = 10)
   int trials = 100;                  // independent estimates per N
   std::vector<int> dims = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};  // k of the ball table
-  std::uint64_t ball_n = 100'000;    // N of the ball table; largest N of the ball error study
-  int points = 2000;                 // points drawn in the picture
+  std::uint64_t ball_n = 100'000;  // N of the ball table; largest N of the ball error study
+  int points = 2000;               // points drawn in the picture
 };
 
 constexpr int k_per_decade = 4;  // sizes per factor of 10 on the N grids
@@ -65,18 +65,20 @@ Table disk_study(const std::vector<std::uint64_t>& grid, const Options& o, Progr
                real("empirical_std"), real("theory_std"), real("rmse")});
   for (std::uint64_t i = 0; i < grid.size(); ++i) {
     const ErrorStats e = repeated_estimates(
-        grid[i], o.trials, k_pi, o.common.seed, o.common.threads, progress,
-        estimate_disk_area_fast,
-        [&](std::uint64_t t) { return stream_key({{disk_error, k_parts}, {i, k_indices}, {t, k_trials}}); });
-    table.add_row({grid[i], o.trials, e.mean(), e.bias(), e.stddev(),
-                   disk_area_theory_std(grid[i]), e.rmse()});
+        grid[i], o.trials, k_pi, o.common.seed, o.common.threads, progress, estimate_disk_area_fast,
+        [&](std::uint64_t t) {
+          return stream_key({{disk_error, k_parts}, {i, k_indices}, {t, k_trials}});
+        });
+    table.add_row({grid[i], o.trials, e.mean(), e.bias(), e.stddev(), disk_area_theory_std(grid[i]),
+                   e.rmse()});
   }
   return table;
 }
 
 // 3. The picture: --points points, inside or not, and their estimate 4 M / N.
 Table draw_points(const Options& o, double& estimate) {
-  Table table({{"x", Column::real, 6, Column::fixed}, {"y", Column::real, 6, Column::fixed},
+  Table table({{"x", Column::real, 6, Column::fixed},
+               {"y", Column::real, 6, Column::fixed},
                integer("inside")});
   Rng rng(o.common.seed, stream_key({{picture, k_parts}, {0, k_indices}, {0, k_trials}}));
   int inside = 0;
@@ -112,7 +114,8 @@ Results run_studies(const Options& o) {
                    k_max_ball_coordinates, "--ball-n x --trials x --dims",
                    "lower --ball-n, --trials or --dims");
 
-  const double ball_points = ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
+  const double ball_points =
+      ball_n * static_cast<double>(o.dims.size()) + 3 * o.trials * sum(ball_grid);
   ProgressBar progress("ch02 sampling", static_cast<std::uint64_t>(disk_points + ball_points),
                        o.common.quiet);
   const Stopwatch disk_clock;
@@ -129,8 +132,15 @@ Results run_studies(const Options& o) {
   std::vector<double> std_ratios = disk.numbers("empirical_std");
   const std::vector<double> theory_std = disk.numbers("theory_std");
   for (std::size_t i = 0; i < std_ratios.size(); ++i) std_ratios[i] /= theory_std[i];
-  return {std::move(disk), std::move(balls), std::move(ball_errors), std::move(ball_slopes),
-          std::move(points), disk_fit, disk_points, disk_seconds, median(std_ratios),
+  return {std::move(disk),
+          std::move(balls),
+          std::move(ball_errors),
+          std::move(ball_slopes),
+          std::move(points),
+          disk_fit,
+          disk_points,
+          disk_seconds,
+          median(std_ratios),
           picture_estimate};
 }
 

@@ -15,13 +15,14 @@ namespace mcrt {
 inline Plot error_plot(double fitted_slope, double guide_constant) {
   Plot plot;
   plot.name = "error_vs_n";
-  plot.title = fmt::format(
-      "Disk area 4M/N: rms error against N (fitted slope {:.3f}, theory -1/2)", fitted_slope);
+  plot.title = fmt::format("Disk area 4M/N: rms error against N (fitted slope {:.3f}, theory -1/2)",
+                           fitted_slope);
   plot.x_label = "points N";
   plot.y_label = "rms error of 4M/N";
   plot.log_x = plot.log_y = true;
-  plot.settings = fmt::format(
-      "set key bottom left\nset autoscale xfix\nguide(n) = {:.6g} / sqrt(n)\n", guide_constant);
+  plot.settings =
+      fmt::format("set key bottom left\nset autoscale xfix\nguide(n) = {:.6g} / sqrt(n)\n",
+                  guide_constant);
   plot.plot =
       "plot 'disk_area.csv' using \"n\":\"rmse\":(column(\"rmse\") / sqrt(2 * column(\"trials\"))) "
       "with yerrorbars pt 7 lc rgb '#1f77b4' title 'rmse over the trials', \\\n"

@@ -42,8 +42,8 @@ const Chapter k_chapter{"ch03_trapezoid_vs_mc",
 
 struct Options {
   CommonOptions common;
-  int trials = 16;                          // Monte Carlo runs per N: rmse over these
-  std::uint64_t max_evaluations = 1 << 20;  // N of the largest point of every study
+  int trials = 16;                                   // Monte Carlo runs per N: rmse over these
+  std::uint64_t max_evaluations = 1 << 20;           // N of the largest point of every study
   std::vector<int> dims = {1, 2, 3, 4, 5, 6, 7, 8};  // the k of the k-dimensional integrands
 };
 
@@ -91,9 +91,8 @@ struct Results {
                 real("fitted_slope", 6, Column::fixed), real("standard_error", 6, Column::fixed),
                 real("theory_slope", 6, Column::fixed), integer("points")}};
   Table budget{{text("integrand"), integer("dims"), real("reference", 17, Column::general),
-                integer("points_per_axis"),
-                integer("trapezoid_evaluations"), real("trapezoid_error", 6, Column::scientific),
-                integer("monte_carlo_evaluations"),
+                integer("points_per_axis"), integer("trapezoid_evaluations"),
+                real("trapezoid_error", 6, Column::scientific), integer("monte_carlo_evaluations"),
                 real("monte_carlo_rmse", 6, Column::scientific)}};
   std::vector<SlopeLine> lines;  // one per row of slopes
   double seconds = 0.0;
@@ -174,6 +173,7 @@ int main(int argc, char** argv) {
                     k_max_budget);
   add_list_option(app, "--dims", o.dims,
                   "Dimensions k of the k-dimensional integrands, e.g. 1,2,4,8 (the ball at "
-                  "k >= 2, and always at k = 2)", 1, k_max_dims);
+                  "k >= 2, and always at k = 2)",
+                  1, k_max_dims);
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -28,9 +28,10 @@ struct SlopeLine {
 // autoscaled x axis either.
 inline std::string select_rows(const std::string& integrand, int dims, const char* method,
                                const char* value) {
-  return fmt::format("(strcol(\"integrand\") eq '{}' && column(\"dims\") == {} && "
-                     "strcol(\"method\") eq '{}' ? column(\"{}\") : 1/0)",
-                     integrand, dims, method, value);
+  return fmt::format(
+      "(strcol(\"integrand\") eq '{}' && column(\"dims\") == {} && "
+      "strcol(\"method\") eq '{}' ? column(\"{}\") : 1/0)",
+      integrand, dims, method, value);
 }
 
 // Error against N for one integrand: the trapezoid's |T - I|, Monte Carlo's rmse, and a line
@@ -44,10 +45,11 @@ inline Plot error_plot(const std::string& name, const std::string& title,
   plot.x_label = "function evaluations N";
   plot.y_label = "error";
   plot.log_x = plot.log_y = true;
-  plot.settings = fmt::format("set key bottom left\nset autoscale xfix\n"
-                              "set style data linespoints\n"
-                              "c_trap = {:.17g}\nc_mc = {:.17g}\n",
-                              trapezoid.constant, monte_carlo.constant);
+  plot.settings = fmt::format(
+      "set key bottom left\nset autoscale xfix\n"
+      "set style data linespoints\n"
+      "c_trap = {:.17g}\nc_mc = {:.17g}\n",
+      trapezoid.constant, monte_carlo.constant);
   plot.plot = fmt::format(
       "plot 'errors.csv' using {}:\"abs_error\" pt 7 lc rgb '#1f77b4' "
       "title 'trapezoid |Q_n - I| (slope {:.2f})', \\\n"
@@ -66,26 +68,31 @@ inline Plot error_plot(const std::string& name, const std::string& title,
 // k-dimensional studies, the x values drawn (the axis ends at the data's k).
 inline Plot slopes_plot(const std::vector<double>& dims) {
   const auto series = [](const char* integrand, const char* method) {
-    return fmt::format("using (strcol(\"integrand\") eq '{}' && strcol(\"method\") eq '{}' ? "
-                       "column(\"dims\") : 1/0):\"fitted_slope\":\"standard_error\" "
-                       "with yerrorlines",
-                       integrand, method);
+    return fmt::format(
+        "using (strcol(\"integrand\") eq '{}' && strcol(\"method\") eq '{}' ? "
+        "column(\"dims\") : 1/0):\"fitted_slope\":\"standard_error\" "
+        "with yerrorlines",
+        integrand, method);
   };
   Plot plot;
   plot.name = "slopes_vs_k";
   plot.title = "Fitted slope of log(error) against log(N), by dimension D";
   plot.x_label = "dimension D";
   plot.y_label = "slope";
-  plot.settings = "set key bottom right\nset autoscale xfix\nset yrange [-2.2:0.3]\n"
-                  "set xtics 1\nset samples 400\n";
+  plot.settings =
+      "set key bottom right\nset autoscale xfix\nset yrange [-2.2:0.3]\n"
+      "set xtics 1\nset samples 400\n";
   plot.x_values = dims;
   plot.plot = "plot 'slopes.csv' " + series("gaussian_kd", "trapezoid") +
               " pt 7 lc rgb '#1f77b4' title 'trapezoid, smooth (e^{-|x|^2})', \\\n"
-              "  '' " + series("unit_ball_kd", "trapezoid") +
+              "  '' " +
+              series("unit_ball_kd", "trapezoid") +
               " pt 9 lc rgb '#2ca02c' title 'trapezoid, ball indicator', \\\n"
-              "  '' " + series("gaussian_kd", "monte_carlo") +
+              "  '' " +
+              series("gaussian_kd", "monte_carlo") +
               " pt 5 lc rgb '#d62728' title 'Monte Carlo, smooth', \\\n"
-              "  '' " + series("unit_ball_kd", "monte_carlo") +
+              "  '' " +
+              series("unit_ball_kd", "monte_carlo") +
               " pt 11 lc rgb '#ff7f0e' title 'Monte Carlo, ball indicator', \\\n"
               "  -2.0/x with lines dt 2 lc rgb '#1f77b4' title 'theory -2/D (smooth)', \\\n"
               "  -1.0/x with lines dt 2 lc rgb '#2ca02c' title 'theory -1/D (jump)', \\\n"
@@ -98,14 +105,17 @@ inline Plot slopes_plot(const std::vector<double>& dims) {
 // floor(budget^(1/k)) points per axis against Monte Carlo's rmse / I at N = budget, against k.
 inline Plot budget_plot(std::uint64_t budget, const Table& at_budget) {
   const auto series = [](const char* integrand, const char* value) {
-    return fmt::format("using (strcol(\"integrand\") eq '{}' ? column(\"dims\") : 1/0):"
-                       "(column(\"{}\") / column(\"reference\")) with linespoints",
-                       integrand, value);
+    return fmt::format(
+        "using (strcol(\"integrand\") eq '{}' ? column(\"dims\") : 1/0):"
+        "(column(\"{}\") / column(\"reference\")) with linespoints",
+        integrand, value);
   };
   Plot plot;
   plot.name = "error_at_budget_vs_k";
-  plot.title = fmt::format("At a fixed budget of {} evaluations: relative error against "
-                           "dimension D", budget);
+  plot.title = fmt::format(
+      "At a fixed budget of {} evaluations: relative error against "
+      "dimension D",
+      budget);
   plot.x_label = "dimension D";
   plot.y_label = "relative error at the budget (error / I)";
   plot.log_y = true;
@@ -121,9 +131,11 @@ inline Plot budget_plot(std::uint64_t budget, const Table& at_budget) {
               "n = floor(budget^{1/D}) per axis', \\\n  '' " +
               series("unit_ball_kd", "trapezoid_error") +
               " pt 9 lw 2 lc rgb '#2ca02c' title 'trapezoid, ball indicator', \\\n"
-              "  '' " + series("gaussian_kd", "monte_carlo_rmse") +
+              "  '' " +
+              series("gaussian_kd", "monte_carlo_rmse") +
               " pt 5 lw 2 lc rgb '#d62728' title 'Monte Carlo rmse / I, smooth', \\\n"
-              "  '' " + series("unit_ball_kd", "monte_carlo_rmse") +
+              "  '' " +
+              series("unit_ball_kd", "monte_carlo_rmse") +
               " pt 11 lw 2 lc rgb '#ff7f0e' title 'Monte Carlo, ball indicator'";
   return plot;
 }

@@ -14,8 +14,8 @@
 namespace mcrt {
 
 // summary.json: the setup, every study's reference, the slopes and the errors at the budget.
-inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& o,
-                       const Plan& plan, const auto& r) {
+inline Json summary_of(const Chapter& chapter, const CLI::App& app, const auto& o, const Plan& plan,
+                       const auto& r) {
   Json summary = start_summary(chapter.name, o.common.seed);
   summary["trials"] = o.trials;
   summary["max_evaluations"] = o.max_evaluations;
@@ -41,14 +41,15 @@ inline Json timings_of(const Chapter& chapter, const auto& o, const Plan& plan, 
 
 // The console: the slopes table, the work and what was written.
 inline void print_report(const Chapter& chapter, const auto& o, const Plan& plan, const auto& r) {
-  fmt::print("{}  N up to {}  {} trials  k = {}  {} threads\n{}", chapter.name,
-             o.max_evaluations, o.trials, fmt::join(o.dims, ","), o.common.threads,
+  fmt::print("{}  N up to {}  {} trials  k = {}  {} threads\n{}", chapter.name, o.max_evaluations,
+             o.trials, fmt::join(o.dims, ","), o.common.threads,
              r.slopes.console({"integrand", "dims", "method", "fitted_slope", "standard_error",
                                "theory_slope"}));
-  fmt::print("  {:.3g} evaluations in {:.2f} s ({:.3g} per second)\n"
-             "  wrote {}/{{errors,slopes,budget}}.csv, summary.json, timings.json and plots\n",
-             plan.total_evaluations, r.seconds,
-             r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0, o.common.out.string());
+  fmt::print(
+      "  {:.3g} evaluations in {:.2f} s ({:.3g} per second)\n"
+      "  wrote {}/{{errors,slopes,budget}}.csv, summary.json, timings.json and plots\n",
+      plan.total_evaluations, r.seconds, r.seconds > 0.0 ? plan.total_evaluations / r.seconds : 0.0,
+      o.common.out.string());
 }
 
 }  // namespace mcrt

@@ -40,11 +40,23 @@ struct Study {
 template <class Visit>
 auto with_integrand(const Study& study, Visit&& visit) {
   switch (study.kind) {
-    case Kind::gaussian_1d: { const Gaussian1D f; return visit(f, f.domain); }
-    case Kind::ceil_sin_1d: { const CeilSinSquare1D f; return visit(f, f.domain); }
-    case Kind::gaussian_kd: { const GaussianProduct f{study.dims}; return visit(f, f.domain()); }
+    case Kind::gaussian_1d: {
+      const Gaussian1D f;
+      return visit(f, f.domain);
+    }
+    case Kind::ceil_sin_1d: {
+      const CeilSinSquare1D f;
+      return visit(f, f.domain);
+    }
+    case Kind::gaussian_kd: {
+      const GaussianProduct f{study.dims};
+      return visit(f, f.domain());
+    }
     case Kind::unit_ball_kd:
-    default: { const UnitBallIndicator f{study.dims}; return visit(f, f.domain()); }
+    default: {
+      const UnitBallIndicator f{study.dims};
+      return visit(f, f.domain());
+    }
   }
 }
 
@@ -85,10 +97,11 @@ inline void check_grids(const std::vector<int>& dims, std::uint64_t max_evaluati
   const int largest = std::max(dims.back(), k_disk_dims);
   const std::uint64_t smallest_grid = grid_evaluations(3, largest);
   if (smallest_grid > max_evaluations)
-    throw UsageError(fmt::format("--max-evaluations {} is below the smallest trapezoid study at "
-                                 "--dims {}: n = 2 and 3 points per axis need 3^{} = {} "
-                                 "evaluations; raise --max-evaluations or lower --dims",
-                                 max_evaluations, largest, largest, smallest_grid));
+    throw UsageError(
+        fmt::format("--max-evaluations {} is below the smallest trapezoid study at "
+                    "--dims {}: n = 2 and 3 points per axis need 3^{} = {} "
+                    "evaluations; raise --max-evaluations or lower --dims",
+                    max_evaluations, largest, largest, smallest_grid));
 }
 
 inline Plan make_plan(const std::vector<int>& dims, std::uint64_t max_evaluations, int trials) {
@@ -103,14 +116,17 @@ inline Plan make_plan(const std::vector<int>& dims, std::uint64_t max_evaluation
     for (std::size_t i = 0; i < grid.size(); ++i)
       plan.tasks.push_back({s, i, true, grid[i], grid_evaluations(grid[i], k)});
     for (std::size_t i = 0; i < samples.size(); ++i)
-      plan.tasks.push_back({s, i, false, samples[i], static_cast<std::uint64_t>(trials) * samples[i]});
+      plan.tasks.push_back(
+          {s, i, false, samples[i], static_cast<std::uint64_t>(trials) * samples[i]});
   }
-  for (const Task& task : plan.tasks) plan.total_evaluations += static_cast<double>(task.evaluations);
+  for (const Task& task : plan.tasks)
+    plan.total_evaluations += static_cast<double>(task.evaluations);
   if (plan.total_evaluations > k_max_total_evaluations)  // far too much work: refused at once
-    throw UsageError(fmt::format("--trials {} with --max-evaluations {} and {} --dims: {:.3g} "
-                                 "evaluations in all, above the limit of {:.3g}; lower one of them",
-                                 trials, max_evaluations, dims.size(), plan.total_evaluations,
-                                 k_max_total_evaluations));
+    throw UsageError(
+        fmt::format("--trials {} with --max-evaluations {} and {} --dims: {:.3g} "
+                    "evaluations in all, above the limit of {:.3g}; lower one of them",
+                    trials, max_evaluations, dims.size(), plan.total_evaluations,
+                    k_max_total_evaluations));
   for (std::size_t i = 0; i < plan.tasks.size(); ++i) plan.schedule.push_back(i);
   std::stable_sort(plan.schedule.begin(), plan.schedule.end(), [&](std::size_t a, std::size_t b) {
     return plan.tasks[a].evaluations > plan.tasks[b].evaluations;

@@ -22,10 +22,15 @@ namespace mcrt {
 // goes to `images` for grid.png's bottom row.
 inline Table equal_cost(RecursiveRenderer& render_recursive, const auto& o, const Plan& plan,
                         std::vector<Image>& images) {
-  Table table({{"branching", Column::integer}, {"depth", Column::integer}, {"spp", Column::integer},
-               {"predicted_rays_per_pixel", Column::integer}, {"rays_per_pixel", Column::real, 9},
-               {"seconds", Column::real, 6}, {"mean_radiance", Column::real, 9},
-               {"rms_error", Column::real, 9}, {"relative_rms_error", Column::real, 9},
+  Table table({{"branching", Column::integer},
+               {"depth", Column::integer},
+               {"spp", Column::integer},
+               {"predicted_rays_per_pixel", Column::integer},
+               {"rays_per_pixel", Column::real, 9},
+               {"seconds", Column::real, 6},
+               {"mean_radiance", Column::real, 9},
+               {"rms_error", Column::real, 9},
+               {"relative_rms_error", Column::real, 9},
                {"rms_error_at_budget", Column::real, 9}});
   const int k = o.equal_cost_depth;
   for (std::size_t i = 0; i < o.branching.size(); ++i) {

@@ -80,9 +80,13 @@ struct Options {
 
 // 1. The explosion: every N, every k (rays.csv).
 Table sweep(RecursiveRenderer& render_recursive, const Options& o) {
-  Table rays({{"branching", Column::integer}, {"depth", Column::integer}, {"rays", Column::integer},
-              {"predicted_max_rays", Column::integer}, {"seconds", Column::real, 6},
-              {"rays_per_second", Column::real, 6}, {"mean_radiance", Column::real, 9}});
+  Table rays({{"branching", Column::integer},
+              {"depth", Column::integer},
+              {"rays", Column::integer},
+              {"predicted_max_rays", Column::integer},
+              {"seconds", Column::real, 6},
+              {"rays_per_second", Column::real, 6},
+              {"mean_radiance", Column::real, 9}});
   const std::uint64_t pixels = static_cast<std::uint64_t>(o.image.width) * o.image.height;
   for (int n : o.branching)
     for (int k = 0; k <= o.max_depth; ++k) {
@@ -95,8 +99,10 @@ Table sweep(RecursiveRenderer& render_recursive, const Options& o) {
 
 // 2. The missing light, measured closely: N = 1 with many samples at every k, and deep.
 Table missing_light(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan) {
-  Table missing({{"depth", Column::integer}, {"mean_radiance", Column::real, 9},
-                 {"limit_mean_radiance", Column::real, 9}, {"missing_fraction", Column::real, 6}});
+  Table missing({{"depth", Column::integer},
+                 {"mean_radiance", Column::real, 9},
+                 {"limit_mean_radiance", Column::real, 9},
+                 {"missing_fraction", Column::real, 6}});
   std::vector<double> mean_by_depth;
   for (int k = 0; k <= o.max_depth; ++k)
     mean_by_depth.push_back(mean_radiance(render_recursive({1, k}, k_light_spp, 0).image));
@@ -116,15 +122,16 @@ void run(const CLI::App& app, const Options& o) {
   // blown-up copies, the sheet: images wider than 256 are not blown up, and narrower ones are
   // small), beside 4 more (measured: 175 bytes per pixel at --branching 1 --max-depth 1 with the
   // earlier grid of N x (depth + 1) images, counted 192).
-  check_memory_limit(
-      images_in_memory(static_cast<double>(o.image.width) * o.image.height,
-                       4.0 + 3.0 * (static_cast<double>(o.branching.size()) + o.max_depth + 1),
-                       o.common.threads, "4 + 3 x (N values + depth + 1) images"),
-      "--width, --height, --branching, --max-depth", "lower them");
+  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height,
+                                      4.0 + 3.0 * (static_cast<double>(o.branching.size()) +
+                                                   o.max_depth + 1),
+                                      o.common.threads, "4 + 3 x (N values + depth + 1) images"),
+                     "--width, --height, --branching, --max-depth", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
 
-  ProgressBar progress("ch04 sweep", static_cast<std::uint64_t>(plan.predicted_rays), o.common.quiet);
+  ProgressBar progress("ch04 sweep", static_cast<std::uint64_t>(plan.predicted_rays),
+                       o.common.quiet);
   RecursiveRenderer render_recursive{scene, camera, o.common.seed, o.common.threads, &progress, {}};
   const Table rays = sweep(render_recursive, o);
   const Table missing = missing_light(render_recursive, o, plan);
@@ -134,7 +141,8 @@ void run(const CLI::App& app, const Options& o) {
   const Table equal = equal_cost(render_recursive, o, plan, at_equal_cost);
   progress.finish();
   const std::vector<double> error = equal.numbers("rms_error_at_budget");
-  const auto best = static_cast<std::size_t>(std::min_element(error.begin(), error.end()) - error.begin());
+  const auto best =
+      static_cast<std::size_t>(std::min_element(error.begin(), error.end()) - error.begin());
   const std::string verdict = conclusion(o, equal, best);
 
   write_csv(o.common.dir / "rays.csv", rays);

@@ -51,11 +51,12 @@ inline void check_plan(const auto& o, const Plan& plan) {
   const int cheapest = o.branching.front();  // sorted: the smallest N
   const std::uint64_t cheapest_sample = max_rays_per_sample(cheapest, o.equal_cost_depth);
   if (static_cast<std::uint64_t>(o.budget) < cheapest_sample)
-    throw UsageError(fmt::format("--budget: {} rays per pixel cannot pay for one sample at "
-                                 "--equal-cost-depth {} (N = {} needs {}); give at least that",
-                                 o.budget, o.equal_cost_depth, cheapest, cheapest_sample));
-  check_ray_limit({plan.predicted_rays, "sweep, missing-light and equal-cost renders"},
-                  o.max_rays, "--max-rays", o.common.threads,
+    throw UsageError(
+        fmt::format("--budget: {} rays per pixel cannot pay for one sample at "
+                    "--equal-cost-depth {} (N = {} needs {}); give at least that",
+                    o.budget, o.equal_cost_depth, cheapest, cheapest_sample));
+  check_ray_limit({plan.predicted_rays, "sweep, missing-light and equal-cost renders"}, o.max_rays,
+                  "--max-rays", o.common.threads,
                   "lower --max-depth, --branching, --spp, --budget or --grid-spp, or raise "
                   "--max-rays");
 }

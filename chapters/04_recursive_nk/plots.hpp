@@ -41,7 +41,10 @@ inline Plot missing_light_plot(const std::vector<double>& missing, double albedo
   const double a = fitted ? fitted_albedo(missing) : albedo;
   Plot plot{"missing_light_vs_depth",
             "Missing light against depth: it decays geometrically, a straight line on a log axis",
-            "depth k", "missing fraction 1 - L(k) / limit", false, true,
+            "depth k",
+            "missing fraction 1 - L(k) / limit",
+            false,
+            true,
             fmt::format("a = {:.6g}\nset xtics 1\nset autoscale xfix\nset key top right\n", a),
             fmt::format("plot 'missing_light.csv' using \"depth\":"
                         "(column(\"missing_fraction\") > 0 ? column(\"missing_fraction\") : 1/0) "
@@ -68,36 +71,48 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
   const std::string per_n =
       fmt::format("Ns = '{}'\nset xtics 1\nset autoscale xfix\n", fmt::join(branching, " "));
   const auto of_n = [](const char* column) {
-    return fmt::format("'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
-                       "column(\"{}\") : NaN)", column);
+    return fmt::format(
+        "'rays.csv' using \"depth\":(column(\"branching\") == word(Ns, i) + 0 ? "
+        "column(\"{}\") : NaN)",
+        column);
   };
   write_plot(out,
              {"rays_vs_depth", "Rays traced against depth: at most N times more per bounce (N^k)",
               "depth k", "rays traced", false, true, per_n + "set key top left\n",
-              "plot for [i=1:words(Ns)] " + of_n("rays") + " with linespoints pt 7 lw 2 lc i "
-              "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " + of_n("predicted_max_rays") +
-              " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
-  Plot radiance{"mean_radiance_vs_depth",
-                "Mean radiance against depth: the cut at k drops the light of longer paths",
-                "depth k", "mean radiance of the image", false, false,
-                per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
-                                    "set offsets 0, 0, graph 0.1, 0\n", limit),
-                fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
-                            "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
-                            "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
-                            "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
-                            "'limit (N = 1, k = {}, {} spp)'",
-                            of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)};
+              "plot for [i=1:words(Ns)] " + of_n("rays") +
+                  " with linespoints pt 7 lw 2 lc i "
+                  "title 'N = '.word(Ns, i), for [i=1:words(Ns)] " +
+                  of_n("predicted_max_rays") +
+                  " with lines dt 2 lc i title 'N = '.word(Ns, i).' predicted (no escapes)'"});
+  Plot radiance{
+      "mean_radiance_vs_depth",
+      "Mean radiance against depth: the cut at k drops the light of longer paths",
+      "depth k",
+      "mean radiance of the image",
+      false,
+      false,
+      per_n + fmt::format("limit = {:.9g}\nset key bottom right\nset yrange [0:*]\n"
+                          "set offsets 0, 0, graph 0.1, 0\n",
+                          limit),
+      fmt::format("plot for [i=1:words(Ns)] {} with linespoints pt 7 lw 2 lc i title "
+                  "'N = '.word(Ns, i).', {} spp', 'missing_light.csv' using "
+                  "\"depth\":\"mean_radiance\" with linespoints pt 5 lw 3 lc 'black' title "
+                  "'N = 1, {} spp', limit with lines dt 2 lw 2 lc 'black' title "
+                  "'limit (N = 1, k = {}, {} spp)'",
+                  of_n("mean_radiance"), spp, light_spp, limit_depth, light_spp)};
   radiance.y_values = radiances;
   write_plot(out, radiance);
   Plot equal{"equal_cost",
-              fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
-              "branching N", "RMS error at the budget", true, true,
-              fmt::format("set key top left\nset format x '%g'\nset xtics ({})\n"
-                          "set xrange [{}:{}]\n",
-                          fmt::join(branching, ", "), branching.front(), branching.back()),
-              "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
-              "pt 7 lw 2 title 'RMS error'"};
+             fmt::format("Equal cost: {} rays per pixel at depth {}", budget, equal_cost_depth),
+             "branching N",
+             "RMS error at the budget",
+             true,
+             true,
+             fmt::format("set key top left\nset format x '%g'\nset xtics ({})\n"
+                         "set xrange [{}:{}]\n",
+                         fmt::join(branching, ", "), branching.front(), branching.back()),
+             "plot 'equal_cost.csv' using \"branching\":\"rms_error_at_budget\" with linespoints "
+             "pt 7 lw 2 title 'RMS error'"};
   equal.y_values = errors;
   equal.x_values.assign(branching.begin(), branching.end());  // one N: a range around it
   write_plot(out, equal);
@@ -110,9 +125,8 @@ inline void write_plots(const std::filesystem::path& out, const std::vector<int>
 // and RMS error (equal_cost.csv): the same rays per pixel, more branches buy fewer samples.
 // Small images are blown up (nearest neighbour, so the noise stays visible) to about 256 wide.
 inline void write_grid(const std::filesystem::path& out, std::vector<Image> by_depth,
-                       std::vector<Image> at_equal_cost, const Table& missing,
-                       const Table& equal, int grid_spp, int budget, double exposure,
-                       int width) {
+                       std::vector<Image> at_equal_cost, const Table& missing, const Table& equal,
+                       int grid_spp, int budget, double exposure, int width) {
   const std::size_t columns = std::max(by_depth.size(), at_equal_cost.size());
   std::vector<Image> images;
   std::vector<std::string> labels;
@@ -143,7 +157,8 @@ inline void write_grid(const std::filesystem::path& out, std::vector<Image> by_d
   const int k = equal.size() > 0 ? static_cast<int>(equal.at(0, "depth").number()) : 0;
   layout.title = fmt::format(
       "top: N=1, {} spp, cut at depth k; bottom: k={}, at most {} rays/pixel each; exposure x{:g} "
-      "({:+g} stop{})", grid_spp, k, budget, exposure, stops, std::abs(stops) == 1.0 ? "" : "s");
+      "({:+g} stop{})",
+      grid_spp, k, budget, exposure, stops, std::abs(stops) == 1.0 ? "" : "s");
   write_png(out / "grid.png", labelled_grid(images, labels, factor, layout));
 }
 

@@ -24,13 +24,14 @@ inline std::string conclusion(const auto& o, const Table& equal, std::size_t bes
       static_cast<std::size_t>(std::max_element(error.begin(), error.end()) - error.begin());
   const auto n = [&](std::size_t row) { return equal.at(row, "branching").number(); };
   const auto spp = [&](std::size_t row) { return equal.at(row, "spp").number(); };
-  return fmt::format("At equal cost ({} rays per pixel, depth {}) N = {} with {} spp has the "
-                     "smallest error, {:.3g}; N = {} with {} spp has {:.2f}x more. {}",
-                     o.budget, o.equal_cost_depth, n(best), spp(best), error[best], n(worst),
-                     spp(worst), error[best] > 0.0 ? error[worst] / error[best] : 1.0,
-                     n(best) == 1 ? "Spend rays on camera samples, not on branches: one path "
-                                    "per sample is chapter 05's path tracer."
-                                  : "Here branching paid off.");
+  return fmt::format(
+      "At equal cost ({} rays per pixel, depth {}) N = {} with {} spp has the "
+      "smallest error, {:.3g}; N = {} with {} spp has {:.2f}x more. {}",
+      o.budget, o.equal_cost_depth, n(best), spp(best), error[best], n(worst), spp(worst),
+      error[best] > 0.0 ? error[worst] / error[best] : 1.0,
+      n(best) == 1 ? "Spend rays on camera samples, not on branches: one path "
+                     "per sample is chapter 05's path tracer."
+                   : "Here branching paid off.");
 }
 
 // summary.json: the setup, the totals, every table and the equal-cost verdict; timings.json.
@@ -46,13 +47,17 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   summary["predicted_max_rays"] = plan.predicted_rays;
   add_render_totals(summary, work.total);
   summary["sweep"] = rays.json();
-  summary["limit"] = {{"branching", 1}, {"depth", plan.limit_depth}, {"spp", light_spp},
+  summary["limit"] = {{"branching", 1},
+                      {"depth", plan.limit_depth},
+                      {"spp", light_spp},
                       {"mean_radiance", missing.at(0, "limit_mean_radiance").number()}};
   summary["missing_light"] = missing.json();
   summary["grid"] = {{"top_row_spp", o.grid_spp}, {"bottom_row_rays_per_pixel", o.budget}};
-  summary["equal_cost"] = {{"budget_rays_per_pixel", o.budget}, {"depth", o.equal_cost_depth},
+  summary["equal_cost"] = {{"budget_rays_per_pixel", o.budget},
+                           {"depth", o.equal_cost_depth},
                            {"best_branching", equal.at(best, "branching").json()},
-                           {"rows", equal.json()}, {"conclusion", verdict}};
+                           {"rows", equal.json()},
+                           {"conclusion", verdict}};
   summary["flags"] = flags_json(app);
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter.name, o.common.threads);
@@ -71,10 +76,11 @@ inline void print_tables(const Chapter& chapter, const auto& o, const RenderTota
   fmt::print("equal cost: {} rays per pixel, depth {}\n{}", o.budget, o.equal_cost_depth,
              equal.console({"branching", "spp", "rays_per_pixel", "rms_error",
                             "rms_error_at_budget", "relative_rms_error"}));
-  fmt::print("{}\ntotal: {} rays in {:.2f} s ({:.3g} rays/s)\n", verdict, total.rays,
-             total.seconds, total.rays_per_second());
-  fmt::print("wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json, timings.json\n",
-             o.common.out.string());
+  fmt::print("{}\ntotal: {} rays in {:.2f} s ({:.3g} rays/s)\n", verdict, total.rays, total.seconds,
+             total.rays_per_second());
+  fmt::print(
+      "wrote {}/{{rays,missing_light,equal_cost}}.csv, grid.png, plots, summary.json, timings.json\n",
+      o.common.out.string());
 }
 
 }  // namespace mcrt

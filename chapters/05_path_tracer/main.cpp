@@ -82,13 +82,13 @@ struct Options {
   std::vector<int> bias_depths{0, 1, 2};    // shallow depths rendered again against the reference
   bool lanes = true;                        // --engine lanes (true) or loop
   PathSampler sampler = PathSampler::independent;  // where each path's uniforms come from
-  std::filesystem::path reference_dir;      // default: the user's cache folder
+  std::filesystem::path reference_dir;             // default: the user's cache folder
 };
 
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
 // images of growing spp share their first samples, so they show one image converging.
-std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Camera& camera,
-                                                  int spp, int depth, const Options& o) {
+std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Camera& camera, int spp,
+                                                  int depth, const Options& o) {
   ProgressBar progress(fmt::format("ch05 {:4} spp depth {}", spp, depth), 2ull * o.image.height,
                        o.common.quiet);
   const auto render_paths = [&](std::uint64_t first_sample) {
@@ -171,7 +171,8 @@ int main(int argc, char** argv) {
                     0, 1000);
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of the reference image, without a depth cut (cached under "
-                    "--reference-dir; 0: no reference)", 0, 1 << 20);
+                    "--reference-dir; 0: no reference)",
+                    0, 1 << 20);
   add_choice_option(
       app, "--engine", {"lanes", "loop"}, "lanes",
       [&](const std::string& name) { o.lanes = name == "lanes"; },
@@ -186,8 +187,10 @@ int main(int argc, char** argv) {
   add_list_option(app, "--bias-depths", o.bias_depths,
                   "Depths rendered again at every --spp against the reference, for "
                   "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
-                  "off at their bias (a list: 0,1,2; only with a reference)", 0, 1000);
-  add_path_option(app, "--reference-dir", o.reference_dir,
-                  "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
+                  "off at their bias (a list: 0,1,2; only with a reference)",
+                  0, 1000);
+  add_path_option(
+      app, "--reference-dir", o.reference_dir,
+      "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -49,9 +49,10 @@ inline RayWork predicted_work(const auto& o) {
   double study_depths = 0.0;  // the bias study's rays per sample, summed over its depths
   if (o.reference_spp > 0)
     for (int depth : o.bias_depths) study_depths += depth + 1.0;
-  const double reference = o.reference_spp > 0 ? reference_predicted_rays(
-                                                     reference_spec(o), reference_rays_per_sample(o))
-                                               : 0.0;
+  const double reference =
+      o.reference_spp > 0
+          ? reference_predicted_rays(reference_spec(o), reference_rays_per_sample(o))
+          : 0.0;
   return {samples * o.image.width * o.image.height * (o.depth + 1.0 + study_depths) + reference,
           "2 renders x sum of spp x pixels x (depth + 1 + sum of (bias depth + 1)) + reference "
           "spp x pixels x 32 (furnace: 2 (3 + 1 / (1 - albedo)) if more)"};

@@ -42,12 +42,11 @@ inline Table depth_bias_table() {
                 {"rays", Column::integer}});
 }
 
-
 // The slope of log RMS error against log spp; NaN with fewer than two points or a zero error.
 inline double fitted_slope(const Table& errors) {
   const std::vector<double> spp = errors.numbers("spp"), rmse = errors.numbers("rmse");
-  const bool can_fit = spp.size() >= 2 && std::all_of(rmse.begin(), rmse.end(),
-                                                       [](double e) { return e > 0.0; });
+  const bool can_fit =
+      spp.size() >= 2 && std::all_of(rmse.begin(), rmse.end(), [](double e) { return e > 0.0; });
   return can_fit ? fit_log_log(spp, rmse).slope : std::nan("");
 }
 
@@ -75,7 +74,8 @@ inline void write_rmse_plot(const auto& o, const Table& errors, double slope, co
                   errors.at(0, "rmse").number(), o.spp.front()) +
       (std::isfinite(slope)
            ? fmt::format("set label 1 'depth {}: fitted slope {:.3f} (theory -0.5)' at graph "
-                         "0.98, graph 0.95 right\n", o.depth, slope)
+                         "0.98, graph 0.95 right\n",
+                         o.depth, slope)
            : std::string());
   if (o.spp.size() > 1)  // the x axis ends where the data end
     settings += fmt::format("set xrange [{}:{}]\n", o.spp.front(), o.spp.back());
@@ -83,7 +83,11 @@ inline void write_rmse_plot(const auto& o, const Table& errors, double slope, co
             bias ? "RMS error against spp: two renders see only noise; the reference also sees "
                    "the depth cut's bias"
                  : "RMS error against samples per pixel",
-            "samples per pixel", "RMS error", true, true, settings,
+            "samples per pixel",
+            "RMS error",
+            true,
+            true,
+            settings,
             fmt::format("plot 'rmse_vs_spp.csv' using \"spp\":\"rmse\" with linespoints pt 6 "
                         "ps 1.3 lw 2 lc 'black' title 'depth {}: two renders (noise)', rmse1 * "
                         "(x / spp1)**-0.5 with lines dt 3 lc 'gray40' title 'slope -1/2'",
@@ -93,24 +97,29 @@ inline void write_rmse_plot(const auto& o, const Table& errors, double slope, co
   plot.x_values = errors.numbers("spp");  // one spp, or zero error (no light): still a plot
   plot.y_values = errors.numbers("rmse");
   if (bias) {
-    plot.plot += fmt::format(", 'rmse_vs_spp.csv' using \"spp\":\"rmse_vs_reference\" with "
-                             "linespoints pt 7 ps 1.1 lw 2 dt 2 lc 'black' title 'depth {}: "
-                             "against the reference (noise and bias)'", o.depth);
+    plot.plot += fmt::format(
+        ", 'rmse_vs_spp.csv' using \"spp\":\"rmse_vs_reference\" with "
+        "linespoints pt 7 ps 1.1 lw 2 dt 2 lc 'black' title 'depth {}: "
+        "against the reference (noise and bias)'",
+        o.depth);
     // One colour per study depth; its rows of depth_bias.csv picked by the depth column.
     const auto of_depth = [](int depth, const char* column) {
-      return fmt::format("'depth_bias.csv' using \"spp\":(column(\"depth\") == {} ? "
-                         "column(\"{}\") : NaN)", depth, column);
+      return fmt::format(
+          "'depth_bias.csv' using \"spp\":(column(\"depth\") == {} ? "
+          "column(\"{}\") : NaN)",
+          depth, column);
     };
-    static constexpr const char* k_colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd",
-                                                "#ff7f0e", "#8c564b"};
+    static constexpr const char* k_colours[] = {"#d62728", "#1f77b4", "#2ca02c",
+                                                "#9467bd", "#ff7f0e", "#8c564b"};
     for (std::size_t i = 0; i < o.bias_depths.size(); ++i) {
       const int depth = o.bias_depths[i];
       const char* colour = k_colours[i % std::size(k_colours)];
       plot.plot += fmt::format(
           ", {} with linespoints pt 6 ps 1.3 lw 2 lc rgb '{}' title 'depth {}: two renders', "
           "{} with linespoints pt 7 ps 1.1 lw 2 dt 2 lc rgb '{}' title 'depth {}: against the "
-          "reference'", of_depth(depth, "rmse"), colour, depth,
-          of_depth(depth, "rmse_vs_reference"), colour, depth);
+          "reference'",
+          of_depth(depth, "rmse"), colour, depth, of_depth(depth, "rmse_vs_reference"), colour,
+          depth);
     }
     const std::vector<double> against = errors.numbers("rmse_vs_reference");
     plot.y_values.insert(plot.y_values.end(), against.begin(), against.end());
@@ -146,29 +155,33 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   write_json(o.common.dir / "summary.json", summary);
   Json timings = start_timings(chapter.name, o.common.threads);
   add_render_timings(timings, total);
-  if (reference && reference->info.contains("seconds")) timings["reference_seconds"] = reference->info["seconds"];
+  if (reference && reference->info.contains("seconds"))
+    timings["reference_seconds"] = reference->info["seconds"];
   write_timings(o.common.dir, timings, run_flags_json(app));
 }
 
 inline void print_table(const Chapter& chapter, const auto& o, const Table& errors, double slope,
-                        const RenderTotals& total, const Image& last,
-                        const Reference* reference) {
+                        const RenderTotals& total, const Image& last, const Reference* reference) {
   fmt::print("{}  scene {}  {}x{}  depth {}  {} threads\n", chapter.name, o.scene.scene,
              o.image.width, o.image.height, o.depth, o.common.threads);
-  fmt::print("{}", errors.console({"spp", "rmse", "rmse_vs_reference", "seconds",
-                                   "rays_per_second"}));
+  fmt::print("{}",
+             errors.console({"spp", "rmse", "rmse_vs_reference", "seconds", "rays_per_second"}));
   if (std::isfinite(slope))
     fmt::print("  fitted slope of log RMS error against log spp: {:.3f} (theory -0.5)\n", slope);
   if (reference)
-    fmt::print("  rmse = two-render estimate (noise only); rmse_vs_reference also holds the "
-               "depth cut's bias, about {:.3g} RMS\n  mean radiance {:.5g}, reference {:.5g} "
-               "(without a depth cut)\n", depth_cut_bias_rms(errors, reference), mean_radiance(last),
-               mean_radiance(reference->image));
+    fmt::print(
+        "  rmse = two-render estimate (noise only); rmse_vs_reference also holds the "
+        "depth cut's bias, about {:.3g} RMS\n  mean radiance {:.5g}, reference {:.5g} "
+        "(without a depth cut)\n",
+        depth_cut_bias_rms(errors, reference), mean_radiance(last),
+        mean_radiance(reference->image));
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
-  fmt::print("  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
-             "depth_bias.csv (with a reference), "
-             "summary.json, timings.json}}\n", o.common.out.string());
+  fmt::print(
+      "  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
+      "depth_bias.csv (with a reference), "
+      "summary.json, timings.json}}\n",
+      o.common.out.string());
 }
 
 }  // namespace mcrt

@@ -29,12 +29,12 @@ inline constexpr std::uint64_t k_efficiency_block = 16;  // + the row
 struct Furnace {
   Scene scene;
   double albedo = 0.5, emission = 1.0;
-  int paths = 0;             // paths per row of every study
+  int paths = 0;  // paths per row of every study
   std::uint64_t seed = 1;
   int threads = 1;
-  int depth = 10;            // the largest k of the bias study
-  Roulette roulette;         // the bias study's policy; d and --fixed-q of the other two
-  std::vector<double> q;     // the efficiency sweep
+  int depth = 10;         // the largest k of the bias study
+  Roulette roulette;      // the bias study's policy; d and --fixed-q of the other two
+  std::vector<double> q;  // the efficiency sweep
 
   template <class Estimator>
   std::vector<FurnacePath> trace(std::uint64_t block, Estimator&& estimate) const {
@@ -72,10 +72,15 @@ inline PathStats measure(const Furnace& furnace, std::uint64_t block, Estimator&
 
 // bias.csv: the depth cut at k and roulette after k bounces, against Le / (1 - a).
 inline Table bias_study(const Furnace& f) {
-  Table bias({{"k", Column::integer}, {"cut_mean", Column::real}, {"cut_bias", Column::real},
-              {"cut_ci", Column::real}, {"cut_bias_theory", Column::real},
-              {"roulette_mean", Column::real}, {"roulette_bias", Column::real},
-              {"roulette_ci", Column::real}, {"roulette_rays_per_path", Column::real, 6}});
+  Table bias({{"k", Column::integer},
+              {"cut_mean", Column::real},
+              {"cut_bias", Column::real},
+              {"cut_ci", Column::real},
+              {"cut_bias_theory", Column::real},
+              {"roulette_mean", Column::real},
+              {"roulette_bias", Column::real},
+              {"roulette_ci", Column::real},
+              {"roulette_rays_per_path", Column::real, 6}});
   const double exact = furnace_radiance_untruncated(f.albedo, f.emission);
   for (int k = 0; k <= f.depth; ++k) {
     const PathStats cut = measure(f, k_cut_block, f.depth_cut(k));
@@ -119,24 +124,30 @@ inline Table efficiency_study(const Furnace& f) {
         (best == f.q.size() || efficiency(rows[i]) > efficiency(rows[best])))
       best = i;
 
-  Table table({{"policy", Column::text}, {"q", Column::real, 4}, {"mean", Column::real},
-               {"variance", Column::real}, {"variance_theory", Column::real},
-               {"rays_per_path", Column::real, 6}, {"rays_per_path_theory", Column::real, 6},
-               {"seconds", Column::real, 4}, {"efficiency", Column::real, 6},
-               {"efficiency_theory", Column::real, 6}, {"best_efficiency", Column::integer}});
+  Table table({{"policy", Column::text},
+               {"q", Column::real, 4},
+               {"mean", Column::real},
+               {"variance", Column::real},
+               {"variance_theory", Column::real},
+               {"rays_per_path", Column::real, 6},
+               {"rays_per_path_theory", Column::real, 6},
+               {"seconds", Column::real, 4},
+               {"efficiency", Column::real, 6},
+               {"efficiency_theory", Column::real, 6},
+               {"best_efficiency", Column::integer}});
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const PathStats& r = rows[i];
     const bool fixed = i < f.q.size();
-    const double var = fixed ? furnace_roulette_variance(f.albedo, f.emission,
-                                                         f.roulette.min_depth, f.q[i])
-                             : std::nan("");
-    const double length = fixed ? furnace_roulette_mean_rays(f.roulette.min_depth, f.q[i])
-                                : std::nan("");
+    const double var =
+        fixed ? furnace_roulette_variance(f.albedo, f.emission, f.roulette.min_depth, f.q[i])
+              : std::nan("");
+    const double length =
+        fixed ? furnace_roulette_mean_rays(f.roulette.min_depth, f.q[i]) : std::nan("");
     const auto known = [](double x) { return std::isfinite(x) ? Cell(x) : Cell(); };
-    table.add_row({fixed ? "fixed" : "throughput", fixed ? Cell(f.q[i]) : Cell(),
-                   r.radiance.mean(), r.radiance.variance(), known(var), r.rays.mean(),
-                   known(length), r.seconds, efficiency(r),
-                   known(1.0 / (var * length * seconds_per_ray)), fixed && i == best ? 1 : 0});
+    table.add_row({fixed ? "fixed" : "throughput", fixed ? Cell(f.q[i]) : Cell(), r.radiance.mean(),
+                   r.radiance.variance(), known(var), r.rays.mean(), known(length), r.seconds,
+                   efficiency(r), known(1.0 / (var * length * seconds_per_ray)),
+                   fixed && i == best ? 1 : 0});
   }
   return table;
 }
@@ -154,8 +165,11 @@ inline Table path_length_study(const Furnace& f, PathStats& stats) {
     stats.rays.add(static_cast<double>(path.rays));
     if (path.rays <= static_cast<std::uint64_t>(longest)) ++count[path.rays];
   }
-  Table table({{"rays", Column::integer}, {"paths", Column::integer}, {"fraction", Column::real},
-               {"probability", Column::real}, {"expected", Column::real, 6}});
+  Table table({{"rays", Column::integer},
+               {"paths", Column::integer},
+               {"fraction", Column::real},
+               {"probability", Column::real},
+               {"expected", Column::real, 6}});
   for (int rays = 1; rays <= longest; ++rays) {
     const double p = furnace_roulette_length_probability(r.min_depth, r.q, rays);
     const auto n = count[static_cast<std::size_t>(rays)];

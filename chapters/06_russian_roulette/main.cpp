@@ -61,11 +61,12 @@ struct Options {
   ImageOptions image{256, 192};
   int spp = 64;    // samples per pixel of both images
   int depth = 10;  // the depth cut of depth_cut.png, and the largest k of bias.csv
-  Roulette roulette{3, RoulettePolicy::throughput, 0.7, 0.05};  // --min-depth --policy --fixed-q --floor
+  Roulette roulette{3, RoulettePolicy::throughput, 0.7,
+                    0.05};  // --min-depth --policy --fixed-q --floor
   std::vector<double> q{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};  // the efficiency sweep
   int paths = 200000;  // furnace paths per row of every study (/ n for splitting.csv)
-  std::vector<double> split_q{0.6, 0.8};  // the splitting study's fixed q
-  std::vector<int> split_n{1, 2, 4, 8, 16};       // the splitting study's n
+  std::vector<double> split_q{0.6, 0.8};     // the splitting study's fixed q
+  std::vector<int> split_n{1, 2, 4, 8, 16};  // the splitting study's n
 };
 
 template <class Estimator>
@@ -73,8 +74,8 @@ RenderResult render_image(const Camera& camera, const Options& o, const char* la
                           Estimator&& estimate) {
   ProgressBar progress(fmt::format("ch06 {}", label), static_cast<std::uint64_t>(o.image.height),
                        o.common.quiet);
-  RenderResult result = render(camera, {o.spp, 0, o.common.seed, o.common.threads, &progress},
-                               estimate);
+  RenderResult result =
+      render(camera, {o.spp, 0, o.common.seed, o.common.threads, &progress}, estimate);
   progress.finish();
   write_png(o.common.dir / (std::string(label) + ".png"), result.image);
   write_pfm(o.common.dir / (std::string(label) + ".pfm"), result.image);
@@ -82,9 +83,12 @@ RenderResult render_image(const Camera& camera, const Options& o, const char* la
 }
 
 Table renders_table() {
-  return Table({{"estimator", Column::text}, {"spp", Column::integer},
-                {"mean_radiance", Column::real}, {"rays", Column::integer},
-                {"rays_per_sample", Column::real, 6}, {"seconds", Column::real, 4},
+  return Table({{"estimator", Column::text},
+                {"spp", Column::integer},
+                {"mean_radiance", Column::real},
+                {"rays", Column::integer},
+                {"rays_per_sample", Column::real, 6},
+                {"seconds", Column::real, 4},
                 {"rays_per_second", Column::real, 4}});
 }
 
@@ -105,12 +109,23 @@ void run(const CLI::App& app, const Options& o) {
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   const SceneParams& p = o.scene.params;
-  const Furnace furnace{make_furnace(p.furnace_albedo, p.furnace_emission), p.furnace_albedo,
-                        p.furnace_emission, o.paths, o.common.seed, o.common.threads, o.depth,
-                        o.roulette, o.q};
+  const Furnace furnace{make_furnace(p.furnace_albedo, p.furnace_emission),
+                        p.furnace_albedo,
+                        p.furnace_emission,
+                        o.paths,
+                        o.common.seed,
+                        o.common.threads,
+                        o.depth,
+                        o.roulette,
+                        o.q};
 
-  Results r{bias_study(furnace), efficiency_study(furnace), Table({}), renders_table(),
-            splitting_study(furnace, o.split_q, o.split_n), {}, {}};
+  Results r{bias_study(furnace),
+            efficiency_study(furnace),
+            Table({}),
+            renders_table(),
+            splitting_study(furnace, o.split_q, o.split_n),
+            {},
+            {}};
   r.lengths = path_length_study(furnace, r.fixed_paths);
   const RenderResult cut =
       render_image(camera, o, "depth_cut", [&](const Ray& ray, Rng& rng, RayCount& count) {

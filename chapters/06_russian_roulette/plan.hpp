@@ -45,8 +45,9 @@ inline RayWork predicted_work(const auto& o) {
 inline void check_request(const auto& o) {
   check_image_size(o.image);
   check_furnace_albedo(o.scene.params.furnace_albedo);
-  check_ray_limit(predicted_work(o), k_max_rays, "--paths, --q, --fixed-q, --split, --split-q, --spp, --depth",
-                  o.common.threads, "lower one of them, or the image size");
+  check_ray_limit(predicted_work(o), k_max_rays,
+                  "--paths, --q, --fixed-q, --split, --split-q, --spp, --depth", o.common.threads,
+                  "lower one of them, or the image size");
   // At most 3 images at once (measured: 34 bytes per pixel at 1024x512).
   check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height, 3.0,
                                       o.common.threads, "3 images of --width x --height"),

@@ -27,9 +27,13 @@ struct PlotSetup {
 // bias.png: the depth cut's bias against k with its closed form, roulette's beside it at 0.
 inline void write_bias_plot(const std::filesystem::path& out, const PlotSetup& s,
                             const Table& bias) {
-  Plot plot{"bias", "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
-                    "k loses nothing",
-            "k (depth cut, or bounces before roulette)", "mean - Le/(1-a)", false, false,
+  Plot plot{"bias",
+            "Bias against k: the depth cut at k loses Le a^(k+1)/(1-a); roulette after "
+            "k loses nothing",
+            "k (depth cut, or bounces before roulette)",
+            "mean - Le/(1-a)",
+            false,
+            false,
             fmt::format("set key bottom right\nset autoscale xfix\n{}",
                         s.depth <= 20 ? "set xtics 1\n" : ""),
             "plot 0 with lines lc 'gray' notitle, "
@@ -60,8 +64,8 @@ inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSe
   // Without light every variance is 0 and every efficiency infinite: nothing finite to draw.
   const auto finite = [](double x) { return std::isfinite(x) ? x : 0.0; };
   const auto per_ray = [&](std::size_t i) {
-    return 1.0 / (efficiency.at(i, "variance").number() *
-                  efficiency.at(i, "rays_per_path").number());
+    return 1.0 /
+           (efficiency.at(i, "variance").number() * efficiency.at(i, "rays_per_path").number());
   };
   for (std::size_t i = 0; i < efficiency.size(); ++i) {
     const double e = per_ray(i);
@@ -96,40 +100,39 @@ inline void write_efficiency_plot(const std::filesystem::path& out, const PlotSe
       highest > 0.0 ? 1.35 * highest : 1.0,
       std::isfinite(best_q)
           ? fmt::format("set label 1 'best q = {:g}' at first {:.9g}, first {:.9g} point pt 6 "
-                        "ps 3 lw 2 offset 1.5, 1.5\n", best_q, best_q, best)
+                        "ps 3 lw 2 offset 1.5, 1.5\n",
+                        best_q, best_q, best)
           : std::string());
   const std::string fixed =
       "(stringcolumn(\"policy\") eq 'fixed' && column(\"q\") {} q4 ? "
       "per_ray(column(\"variance\"), column(\"rays_per_path\")) : NaN)";
-  write_plot(out,
-             {"efficiency", "Efficiency of fixed-q roulette: 1 / (variance x rays per path)",
-              "q (probability of going on)", "efficiency (1 / (variance x rays))", false, false,
-              settings,
-              fmt::format("plot 'efficiency.csv' using \"q\":{} with points pt 7 ps 1.5 lc 1 "
-                          "title 'measured', '' using \"q\":{} with points pt 6 ps 1.5 lw 2 "
-                          "lc 1 title 'measured, unreliable (infinite 4th moment)', "
-                          "eff(x) with lines dt 2 lw 2 lc 'black' title 'closed form', "
-                          "{:.9g} with lines dt 3 lw 2 lc 2 title 'throughput policy "
-                          "(measured)'",
-                          fmt::format(fmt::runtime(fixed), ">"),
-                          fmt::format(fmt::runtime(fixed), "<="), throughput)});
+  write_plot(out, {"efficiency", "Efficiency of fixed-q roulette: 1 / (variance x rays per path)",
+                   "q (probability of going on)", "efficiency (1 / (variance x rays))", false,
+                   false, settings,
+                   fmt::format("plot 'efficiency.csv' using \"q\":{} with points pt 7 ps 1.5 lc 1 "
+                               "title 'measured', '' using \"q\":{} with points pt 6 ps 1.5 lw 2 "
+                               "lc 1 title 'measured, unreliable (infinite 4th moment)', "
+                               "eff(x) with lines dt 2 lw 2 lc 'black' title 'closed form', "
+                               "{:.9g} with lines dt 3 lw 2 lc 2 title 'throughput policy "
+                               "(measured)'",
+                               fmt::format(fmt::runtime(fixed), ">"),
+                               fmt::format(fmt::runtime(fixed), "<="), throughput)});
 }
 
 // path_length.png: the fraction of paths that traced r rays against the geometric law (rows of
 // no paths, r <= d, left out: the axis starts where the paths do).
 inline void write_path_length_plot(const std::filesystem::path& out, const PlotSetup& s) {
-  write_plot(out,
-             {"path_length",
-              fmt::format("Path lengths at q = {:g}, d = {}: geometric after d + 1 rays",
-                          s.fixed_q, s.min_depth),
-              "rays traced by the path", "fraction of paths", false, true,
-              "set key top right\nset autoscale xfix\nset style fill solid 0.4\n",
-              fmt::format("plot 'path_length.csv' using (column(\"fraction\") > 0 ? "
-                          "column(\"rays\") : 1/0):\"fraction\" with points pt 7 ps 1.2 lc 1 "
-                          "title 'measured', '' using (column(\"probability\") > 0 ? "
-                          "column(\"rays\") : 1/0):\"probability\" with lines lw 2 lc 'black' "
-                          "title 'q^{{r-d-1}} (1-q), q = {:g}'",
-                          s.fixed_q)});
+  write_plot(out, {"path_length",
+                   fmt::format("Path lengths at q = {:g}, d = {}: geometric after d + 1 rays",
+                               s.fixed_q, s.min_depth),
+                   "rays traced by the path", "fraction of paths", false, true,
+                   "set key top right\nset autoscale xfix\nset style fill solid 0.4\n",
+                   fmt::format("plot 'path_length.csv' using (column(\"fraction\") > 0 ? "
+                               "column(\"rays\") : 1/0):\"fraction\" with points pt 7 ps 1.2 lc 1 "
+                               "title 'measured', '' using (column(\"probability\") > 0 ? "
+                               "column(\"rays\") : 1/0):\"probability\" with lines lw 2 lc 'black' "
+                               "title 'q^{{r-d-1}} (1-q), q = {:g}'",
+                               s.fixed_q)});
 }
 
 // What the plots draw beside the CSV files, from the Options.

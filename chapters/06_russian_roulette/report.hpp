@@ -47,19 +47,24 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   const double variance = furnace_roulette_variance(a, le, d, o.roulette.q);
   const auto finite = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
   summary["furnace"] = {
-      {"albedo", a}, {"emission", le}, {"paths", o.paths},
+      {"albedo", a},
+      {"emission", le},
+      {"paths", o.paths},
       {"radiance_theory", furnace_radiance_untruncated(a, le)},
       {"variance_threshold_q", furnace_roulette_variance_threshold(a)},
-      {"fixed_q", {{"q", o.roulette.q}, {"mean", r.fixed_paths.radiance.mean()},
-                   {"standard_error", r.fixed_paths.radiance.standard_error()},
-                   {"variance", r.fixed_paths.radiance.variance()},
-                   {"variance_theory", finite(variance)},
-                   {"mean_path_length", r.fixed_paths.rays.mean()},
-                   {"mean_path_length_theory", furnace_roulette_mean_rays(d, o.roulette.q)}}},
-      {"throughput", {{"floor", o.roulette.floor}, {"mean", r.efficiency.at(last, "mean").number()},
-                      {"standard_error",
-                       std::sqrt(r.efficiency.at(last, "variance").number() / o.paths)},
-                      {"mean_path_length", r.efficiency.at(last, "rays_per_path").number()}}}};
+      {"fixed_q",
+       {{"q", o.roulette.q},
+        {"mean", r.fixed_paths.radiance.mean()},
+        {"standard_error", r.fixed_paths.radiance.standard_error()},
+        {"variance", r.fixed_paths.radiance.variance()},
+        {"variance_theory", finite(variance)},
+        {"mean_path_length", r.fixed_paths.rays.mean()},
+        {"mean_path_length_theory", furnace_roulette_mean_rays(d, o.roulette.q)}}},
+      {"throughput",
+       {{"floor", o.roulette.floor},
+        {"mean", r.efficiency.at(last, "mean").number()},
+        {"standard_error", std::sqrt(r.efficiency.at(last, "variance").number() / o.paths)},
+        {"mean_path_length", r.efficiency.at(last, "rays_per_path").number()}}}};
   summary["mean_path_length"] = r.fixed_paths.rays.mean();
   summary["mean_path_length_theory"] = furnace_roulette_mean_rays(d, o.roulette.q);
   summary["bias_rows_with_zero_in_roulette_ci"] = rows_with_zero_in_ci(r.bias);
@@ -83,25 +88,29 @@ inline void print_tables(const Chapter& chapter, const auto& o, const auto& r) {
              chapter.name, a, o.scene.params.furnace_emission,
              furnace_radiance_untruncated(a, o.scene.params.furnace_emission), o.paths);
   fmt::print("bias: the depth cut at k against roulette after k bounces (ci: 99.9%)\n{}",
-             r.bias.console({"k", "cut_bias", "cut_bias_theory", "cut_ci", "roulette_bias",
-                             "roulette_ci"}));
-  fmt::print("efficiency = 1 / (variance x seconds per path); fixed q <= 4a^2/3 = {:.4g} has "
-             "infinite variance\n{}", furnace_roulette_variance_threshold(a),
-             r.efficiency.console({"policy", "q", "mean", "variance", "variance_theory",
-                                   "rays_per_path", "efficiency", "best_efficiency"}));
+             r.bias.console(
+                 {"k", "cut_bias", "cut_bias_theory", "cut_ci", "roulette_bias", "roulette_ci"}));
+  fmt::print(
+      "efficiency = 1 / (variance x seconds per path); fixed q <= 4a^2/3 = {:.4g} has "
+      "infinite variance\n{}",
+      furnace_roulette_variance_threshold(a),
+      r.efficiency.console({"policy", "q", "mean", "variance", "variance_theory", "rays_per_path",
+                            "efficiency", "best_efficiency"}));
   fmt::print("path length at q = {}: mean {:.4f} rays, theory d + 1/(1 - q) = {:.4f}\n",
              o.roulette.q, r.fixed_paths.rays.mean(),
              furnace_roulette_mean_rays(o.roulette.min_depth, o.roulette.q));
-  fmt::print("splitting: the first hit as n paths of 1/n its weight, fixed-q roulette after d "
-             "= {}; efficiency = 1 / (variance x rays per path)\n{}",
-             o.roulette.min_depth,
-             r.splitting.console({"q", "n", "paths", "variance", "variance_theory",
-                                  "rays_per_path", "efficiency", "efficiency_theory"}));
+  fmt::print(
+      "splitting: the first hit as n paths of 1/n its weight, fixed-q roulette after d "
+      "= {}; efficiency = 1 / (variance x rays per path)\n{}",
+      o.roulette.min_depth,
+      r.splitting.console({"q", "n", "paths", "variance", "variance_theory", "rays_per_path",
+                           "efficiency", "efficiency_theory"}));
   fmt::print("scene {}  {}x{}  {} spp\n{}", o.scene.scene, o.image.width, o.image.height, o.spp,
              r.renders.console());
-  fmt::print("wrote {}/{{bias,efficiency,path_length,splitting,renders}}.csv and plots, "
-             "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n",
-             o.common.out.string());
+  fmt::print(
+      "wrote {}/{{bias,efficiency,path_length,splitting,renders}}.csv and plots, "
+      "{{depth_cut,roulette}}.png/.pfm, summary.json, timings.json\n",
+      o.common.out.string());
 }
 
 }  // namespace mcrt

@@ -51,8 +51,7 @@ inline RenderResult reference_image(const auto& render_with, const Scene& scene,
                         Color(furnace_radiance(f.furnace_albedo, f.furnace_emission, o.depth)));
     return exact;
   }
-  return render_with(scene, camera, cosine_power_pdf(1), o.reference_spp,
-                     k_reference_first_sample);
+  return render_with(scene, camera, cosine_power_pdf(1), o.reference_spp, k_reference_first_sample);
 }
 
 // The comparison's table and the two images it renders.
@@ -79,9 +78,8 @@ inline EqualTime compare_at_equal_time(const auto& render_with, const Study& stu
   row("cosine", "cosine", o.spp, cosine);
   row("cosine_equal_time", "cosine", spp_equal, result.cosine_equal_time);
   const bool exact = o.scene.scene == "furnace";
-  result.table.add_row({"reference", exact ? "closed form" : "cosine",
-                        exact ? 0 : o.reference_spp, result.reference.rays,
-                        result.reference.seconds, Cell{}});
+  result.table.add_row({"reference", exact ? "closed form" : "cosine", exact ? 0 : o.reference_spp,
+                        result.reference.rays, result.reference.seconds, Cell{}});
   return result;
 }
 

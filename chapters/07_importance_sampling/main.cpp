@@ -53,10 +53,10 @@ struct Options {
   CommonOptions common;
   SceneOptions scene;
   ImageOptions image{192, 144};
-  int spp = 16;                          // samples per pixel of every image of the study
-  int depth = 10;                        // bounces after the camera ray's hit
+  int spp = 16;                            // samples per pixel of every image of the study
+  int depth = 10;                          // bounces after the camera ray's hit
   std::vector<int> powers{0, 1, 2, 4, 8};  // the m of p ~ cos^m; 0 and 1 are always in
-  int reference_spp = 128;               // the many-sample cosine image the errors are against
+  int reference_spp = 128;                 // the many-sample cosine image the errors are against
 };
 
 // The pdfs of the study: cos^m for every --powers m (0 and 1 added), then the grazing pdf.
@@ -104,11 +104,10 @@ void run(const CLI::App& app, const Options& o) {
                   "lower one of them");
   // Per pdf its renders, beside the equal-time and reference images (measured: 245 bytes per
   // pixel with 2 pdfs, 397 with 5; counted 8 + 3 per pdf: 336 and 552).
-  check_memory_limit(
-      images_in_memory(static_cast<double>(o.image.width) * o.image.height,
-                       8.0 + 3.0 * static_cast<double>(study_pdfs(o.powers).size()),
-                       o.common.threads, "8 + 3 x pdfs images"),
-      "--width, --height, --powers", "lower them");
+  check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height,
+                                      8.0 + 3.0 * static_cast<double>(study_pdfs(o.powers).size()),
+                                      o.common.threads, "8 + 3 x pdfs images"),
+                     "--width, --height, --powers", "lower them");
   const Scene scene = make_scene(o.scene.scene, o.scene.params);
   const Camera camera(scene.camera, o.image.width, o.image.height);
   const std::vector<HemispherePdf> pdfs = study_pdfs(o.powers);
@@ -142,7 +141,8 @@ int main(int argc, char** argv) {
                     0, 1000);
   add_list_option(app, "--powers", o.powers,
                   "The powers m of p ~ cos^m(theta) to compare (a list: 0,1,2,4,8; 0 uniform "
-                  "and 1 cosine are always in)", 0, 64);
+                  "and 1 cosine are always in)",
+                  0, 64);
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of the cosine reference image (not used in the furnace)", 1,
                     1 << 16);

@@ -24,15 +24,15 @@ inline constexpr int k_furnace_side = 32;  // the furnace study's image: 32 x 32
 // variance_vs_m.csv: one row per pdf. Variances are of ONE sample, per pixel and channel.
 inline Table variance_table() {
   return Table({{"pdf", Column::text},
-                {"m", Column::integer},                       // empty for the grazing pdf
-                {"furnace_variance", Column::real, 9},        // measured, spp (A - B)^2 / 2
+                {"m", Column::integer},                        // empty for the grazing pdf
+                {"furnace_variance", Column::real, 9},         // measured, spp (A - B)^2 / 2
                 {"furnace_variance_theory", Column::real, 9},  // empty where infinite
                 {"furnace_mean", Column::real, 9},
                 {"furnace_mean_theory", Column::real, 9},
                 {"scene_variance", Column::real, 9},
                 {"scene_variance_vs_uniform", Column::real, 6},
                 {"scene_mean", Column::real, 9},
-                {"scene_seconds", Column::real, 6},           // both renders of the scene
+                {"scene_seconds", Column::real, 6},  // both renders of the scene
                 {"scene_rays", Column::integer}});
 }
 

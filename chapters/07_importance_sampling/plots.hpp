@@ -46,9 +46,8 @@ inline Table variance_curve(double albedo, double emission, int depth) {
 // cosine pdf's furnace variance is 0 (exact), which a log axis cannot show: its point is left
 // out and an arrow down marks it. The grazing pdf is no cos^m: its closed form is a level
 // line. An inset draws each p_m(theta) against cos(theta)/pi, the shape of the integrand.
-inline void write_variance_plot(const std::filesystem::path& out, const std::string& scene,
-                                int spp, const Table& variances, double albedo,
-                                double emission, int depth) {
+inline void write_variance_plot(const std::filesystem::path& out, const std::string& scene, int spp,
+                                const Table& variances, double albedo, double emission, int depth) {
   write_csv(out / "variance_curve.csv", variance_curve(albedo, emission, depth));
   std::vector<int> powers;  // of the cos^m rows
   double highest = 0.0, lowest = HUGE_VAL, grazing = std::nan("");
@@ -93,17 +92,21 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
       main += fmt::format(
           "set arrow {0} from first 1, graph 0.16 to first 1, graph 0 head filled lw 2 "
           "lc rgb '#1f77b4'\nset label {0} 'furnace: 0 (exact)' at first 1.08, graph 0.12 left "
-          "noenhanced tc rgb '#1f77b4'\n", tag++);
+          "noenhanced tc rgb '#1f77b4'\n",
+          tag++);
     if (m >= 3 && lit)
       main += fmt::format(
           "set arrow {0} from first {1}, graph 0.72 to first {1}, graph 0.97 head filled lw 2 "
           "lc 'black'\nset label {0} 'cos^{1}: infinite variance' at first {1}, graph 0.68 center "
-          "noenhanced\n", tag++, m);
+          "noenhanced\n",
+          tag++, m);
   }
   // Measured points only where the variance is finite (m < 3), and not 0 on the log axis.
   const auto measured = [](const char* column) {
-    return fmt::format("'variance_vs_m.csv' using (column(\"m\") < 3 ? column(\"m\") : NaN):"
-                       "(column(\"{0}\") > 0 ? column(\"{0}\") : NaN)", column);
+    return fmt::format(
+        "'variance_vs_m.csv' using (column(\"m\") < 3 ? column(\"m\") : NaN):"
+        "(column(\"{0}\") > 0 ? column(\"{0}\") : NaN)",
+        column);
   };
   main += fmt::format(
       "plot 'variance_curve.csv' using \"m\":\"furnace_variance_theory\" with lines lw 2 "
@@ -113,7 +116,8 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
       measured("furnace_variance"), measured("scene_variance"), scene,
       std::isfinite(grazing) && grazing > 0.0
           ? fmt::format(", {:.9g} with lines dt 3 lw 2 lc rgb '#2ca02c' title 'grazing pdf (not "
-                        "a cos^m): furnace closed form'", grazing)
+                        "a cos^m): furnace closed form'",
+                        grazing)
           : std::string());
   // The inset: over theta in [0, pi/2], p_m for every m measured, and cos / pi dashed.
   const std::string inset = fmt::format(
@@ -128,8 +132,14 @@ inline void write_variance_plot(const std::filesystem::path& out, const std::str
       "title 'p_{{'.m.'}}', cos(x * pi / 180) / pi with lines dt 2 lw 3 lc 'black' "
       "title 'cos / pi'",
       fmt::join(powers, " "));
-  Plot plot{"variance_vs_m", "Variance of one sample against m", "m", "variance of one sample",
-            false, true, "", main + inset};
+  Plot plot{"variance_vs_m",
+            "Variance of one sample against m",
+            "m",
+            "variance of one sample",
+            false,
+            true,
+            "",
+            main + inset};
   plot.width = 1000;
   plot.height = 650;
   plot.multiplot = true;

@@ -45,8 +45,8 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
 // reference, the totals and what was written.
 inline void print_report(const Chapter& chapter, const auto& o, const Table& variances,
                          const Table& equal_time, const RenderTotals& total) {
-  fmt::print("{}  scene {}  {}x{}  {} spp  depth {}  {} threads\n", chapter.name,
-             o.scene.scene, o.image.width, o.image.height, o.spp, o.depth, o.common.threads);
+  fmt::print("{}  scene {}  {}x{}  {} spp  depth {}  {} threads\n", chapter.name, o.scene.scene,
+             o.image.width, o.image.height, o.spp, o.depth, o.common.threads);
   fmt::print("  variance of one sample, per pixel (furnace: albedo {}, emission {}):\n",
              o.scene.params.furnace_albedo, o.scene.params.furnace_emission);
   fmt::print("{}", variances.console({"pdf", "furnace_variance", "furnace_variance_theory",
@@ -57,9 +57,10 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& var
              equal_time.console({"image", "spp", "rays", "seconds", "relative_mse"}));
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
-  fmt::print("  wrote {}/{{uniform,cosine,cosine_equal_time,reference}}.{{png,pfm}}, "
-             "noise_strip.png, variance_vs_m.csv,.png, equal_time.csv, summary.json, timings.json\n",
-             o.common.out.string());
+  fmt::print(
+      "  wrote {}/{{uniform,cosine,cosine_equal_time,reference}}.{{png,pfm}}, "
+      "noise_strip.png, variance_vs_m.csv,.png, equal_time.csv, summary.json, timings.json\n",
+      o.common.out.string());
 }
 
 }  // namespace mcrt

@@ -56,12 +56,12 @@ struct Options {
   CommonOptions common;
   SceneOptions scene;
   ImageOptions image{160, 120};
-  int spp = 16;                            // samples per pixel of nee.pfm and mis.pfm
-  int depth = -1;                          // bounces after the first hit; -1: roulette only
-  int reference_spp = 1024;                // samples per pixel of every reference
-  std::filesystem::path reference_dir;     // default: the user's cache folder
+  int spp = 16;                                 // samples per pixel of nee.pfm and mis.pfm
+  int depth = -1;                               // bounces after the first hit; -1: roulette only
+  int reference_spp = 1024;                     // samples per pixel of every reference
+  std::filesystem::path reference_dir;          // default: the user's cache folder
   std::vector<int> budgets{64, 128, 256, 512};  // rays per pixel, per estimator and scene
-  int plates_spp = 16;                     // samples per pixel of Veach's plates (plates.hpp)
+  int plates_spp = 16;                          // samples per pixel of Veach's plates (plates.hpp)
 };
 
 // nee.pfm/.png and mis.pfm/.png of the chosen scene at --spp, and their error (images.csv).
@@ -72,11 +72,10 @@ Table render_chosen_scene(const Options& o, const Reference& reference, RenderTo
                {"spp", Column::integer},
                {"rays", Column::integer},
                {"rel_mse", Column::real, 6}});
-  for (const auto& [stem, kind] : {std::pair{"nee", EstimatorKind::nee},
-                                   std::pair{"mis", EstimatorKind::mis_power}}) {
-    const RenderResult r =
-        render(camera, {o.spp, 0, o.common.seed, o.common.threads, nullptr},
-               make_estimator(kind, scene, o.depth));
+  for (const auto& [stem, kind] :
+       {std::pair{"nee", EstimatorKind::nee}, std::pair{"mis", EstimatorKind::mis_power}}) {
+    const RenderResult r = render(camera, {o.spp, 0, o.common.seed, o.common.threads, nullptr},
+                                  make_estimator(kind, scene, o.depth));
     total.add(r);
     write_png(o.common.dir / (std::string(stem) + ".png"), r.image);
     write_pfm(o.common.dir / (std::string(stem) + ".pfm"), r.image);
@@ -101,16 +100,18 @@ void run(const CLI::App& app, const Options& o) {
   const std::filesystem::path reference_dir = reference_folder(o.reference_dir);
   check_reference_folder(reference_dir, o.common.out);
 
-  const Reference reference = load_or_render_reference(
-      reference_dir, reference_spec(o, o.scene.scene, o.scene.params.light_scale));
+  const Reference reference =
+      load_or_render_reference(reference_dir,
+                               reference_spec(o, o.scene.scene, o.scene.params.light_scale));
   RenderTotals total;
   const Table images = render_chosen_scene(o, reference, total);
 
   Shootout shootout;
   const std::vector<ShootoutScene> scenes = shootout_scenes();
   for (const ShootoutScene& s : scenes)
-    shoot_out_scene(s, load_or_render_reference(reference_dir,
-                                                reference_spec(o, s.scene, s.light_scale)),
+    shoot_out_scene(s,
+                    load_or_render_reference(reference_dir,
+                                             reference_spec(o, s.scene, s.light_scale)),
                     o, shootout);
   total.seconds += shootout.total.seconds;
   total.rays += shootout.total.rays;
@@ -143,7 +144,8 @@ int main(int argc, char** argv) {
   add_render_options(app, o.scene, o.image, scene_names());  // veach-plates too: glossy lobes
   add_number_option(app, "--light-scale", o.scene.params.light_scale,
                     "cornell: the lamp's sides times this, its radiance over its square (the "
-                    "same power): 0.1 tiny and bright, 3 large and dim", 0.01, k_max_light_scale);
+                    "same power): 0.1 tiny and bright, 3 large and dim",
+                    0.01, k_max_light_scale);
   add_number_option(app, "--spp", o.spp, "Samples per pixel of nee.pfm and mis.pfm", 1, 1 << 16);
   show_default_as(
       add_number_option(
@@ -152,15 +154,18 @@ int main(int argc, char** argv) {
           1000),
       "none");
   add_number_option(app, "--reference-spp", o.reference_spp,
-                    "Samples per pixel of each reference image (cached under --reference-dir)",
-                    2, 1 << 20);
-  add_path_option(app, "--reference-dir", o.reference_dir,
-                  "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
+                    "Samples per pixel of each reference image (cached under --reference-dir)", 2,
+                    1 << 20);
+  add_path_option(
+      app, "--reference-dir", o.reference_dir,
+      "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
-                  "each scene (a list: 64,128,256,512)", 1, 1000000);
+                  "each scene (a list: 64,128,256,512)",
+                  1, 1000000);
   add_number_option(app, "--plates-spp", o.plates_spp,
                     "Samples per pixel of each strategy on Veach's plates (plates.png, "
-                    "plates.csv; 3 rays a sample, the reference 16 times as many)", 1, 1 << 12);
+                    "plates.csv; 3 rays a sample, the reference 16 times as many)",
+                    1, 1 << 12);
   return app.run(argc, argv, [&] { run(app, o); });
 }

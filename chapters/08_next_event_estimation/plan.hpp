@@ -13,7 +13,8 @@
 
 namespace mcrt {
 
-inline constexpr double k_rays_per_sample = 32.0;  // a generous mean for NEE and MIS paths (2 per vertex)
+inline constexpr double k_rays_per_sample =
+    32.0;  // a generous mean for NEE and MIS paths (2 per vertex)
 
 inline ReferenceSpec reference_spec(const auto& o, const std::string& scene, double light_scale) {
   ReferenceSpec spec;
@@ -33,8 +34,8 @@ inline ReferenceSpec reference_spec(const auto& o, const std::string& scene, dou
 // Rays per sample in the furnace, whose paths end by roulette only: 2 per vertex of the length
 // its albedo implies (min_depth + 1 / (1 - a)), where that is more than the generous mean.
 inline double furnace_rays_per_sample(const auto& o) {
-  return std::max(k_rays_per_sample, 2.0 * furnace_path_vertices(o.scene.params.furnace_albedo,
-                                                                 Roulette{}.min_depth));
+  return std::max(k_rays_per_sample,
+                  2.0 * furnace_path_vertices(o.scene.params.furnace_albedo, Roulette{}.min_depth));
 }
 
 // The references (at most 6, one per scene of the shoot-out and the chosen one, if not cached),
@@ -49,8 +50,9 @@ inline RayWork predicted_work(const auto& o) {
       reference_predicted_rays(reference_spec(o, "furnace", 1.0), furnace);
   const double chosen = o.scene.scene == "furnace" ? furnace : k_rays_per_sample;
   const double images = 2.0 * o.spp * pixels * chosen;
-  const double shootout = (30.0 * (o.budgets.back() + 65.0) +
-                           6.0 * (o.budgets.back() + std::max(65.0, furnace))) * pixels;
+  const double shootout =
+      (30.0 * (o.budgets.back() + 65.0) + 6.0 * (o.budgets.back() + std::max(65.0, furnace))) *
+      pixels;
   const double plates = plates_predicted_rays(o.image.width, o.image.height, o.plates_spp);
   return {references + images + shootout + plates,
           "(6 references x reference spp + 2 x spp) x pixels x 32 rays (furnace: 2 (3 + 1 / "

@@ -22,9 +22,9 @@ namespace mcrt {
 // ends where the runs do, often within a decade: tics at 1, 2, 5 times the powers of 10.
 inline void write_relmse_plot(const std::filesystem::path& dir, const ShootoutScene& s) {
   std::string plot = "plot ";
-  const std::string this_scene = fmt::format(
-      "strcol(\"scene\") eq \"{}\" && abs(column(\"light_scale\") - {}) < 1e-9", s.scene,
-      s.light_scale);
+  const std::string this_scene =
+      fmt::format("strcol(\"scene\") eq \"{}\" && abs(column(\"light_scale\") - {}) < 1e-9",
+                  s.scene, s.light_scale);
   for (const EstimatorInfo& e : k_estimators)
     plot += fmt::format(
         "'efficiency.csv' using ({} && strcol(\"estimator\") eq \"{}\" ? "
@@ -38,8 +38,8 @@ inline void write_relmse_plot(const std::filesystem::path& dir, const ShootoutSc
       "column(\"rel_mse\") * column(\"rays_per_pixel\") : 1/0) nooutput\nc = STATS_min\n",
       this_scene);
   write_plot(dir, {fmt::format("relmse_vs_rays_{}", s.slug()),
-                   fmt::format("Relative MSE against rays traced: {}", s.label()),
-                   "rays per pixel", "relative MSE", true, true, settings, plot, 1000, 600});
+                   fmt::format("Relative MSE against rays traced: {}", s.label()), "rays per pixel",
+                   "relative MSE", true, true, settings, plot, 1000, 600});
 }
 
 // contact_sheet.png: one row per scene, one column per estimator plus the reference, the images

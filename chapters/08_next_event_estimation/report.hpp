@@ -38,7 +38,8 @@ inline void write_summary(const Chapter& chapter, const CLI::App& app, const aut
   Json seconds = Json::array();
   for (std::size_t i = 0; i < shootout.seconds.size(); ++i) {
     Json row = Json::object();
-    for (const Column& c : shootout.seconds.columns()) row[c.name] = shootout.seconds.at(i, c.name).json();
+    for (const Column& c : shootout.seconds.columns())
+      row[c.name] = shootout.seconds.at(i, c.name).json();
     seconds.push_back(std::move(row));
   }
   timings["shootout"] = std::move(seconds);
@@ -57,10 +58,11 @@ inline void print_report(const Chapter& chapter, const auto& o, const Table& ima
                                  "spp", "rel_mse", "efficiency_vs_uniform"}));
   fmt::print("  rays traced {} in {:.2f} s: {:.4g} rays/s;  non-finite samples {}\n", total.rays,
              total.seconds, total.rays_per_second(), total.non_finite_samples);
-  fmt::print("  wrote {}/{{nee,mis}}.{{png,pfm}}, images.csv, efficiency.csv, "
-             "relmse_vs_rays_SCENE.png, contact_sheet.png, plates.png, plates.csv, "
-             "light_choice.png, light_choice.csv, summary.json, timings.json\n",
-             o.common.out.string());
+  fmt::print(
+      "  wrote {}/{{nee,mis}}.{{png,pfm}}, images.csv, efficiency.csv, "
+      "relmse_vs_rays_SCENE.png, contact_sheet.png, plates.png, plates.csv, "
+      "light_choice.png, light_choice.csv, summary.json, timings.json\n",
+      o.common.out.string());
 }
 
 }  // namespace mcrt

@@ -45,8 +45,8 @@ struct ShootoutScene {
 inline std::vector<ShootoutScene> shootout_scenes() {
   // smallpt: its mirror and glass, where light sampling cannot help (the page's "deltas and
   // caustics").
-  return {{"furnace", 1.0}, {"cornell", 0.1}, {"cornell", 1.0}, {"cornell", 3.0},
-          {"cornell-spheres", 1.0}, {"smallpt", 1.0}};
+  return {{"furnace", 1.0}, {"cornell", 0.1},         {"cornell", 1.0},
+          {"cornell", 3.0}, {"cornell-spheres", 1.0}, {"smallpt", 1.0}};
 }
 
 // One photograph of a progressive render.
@@ -77,7 +77,9 @@ std::vector<Snapshot> render_to_budgets(const Camera& camera, std::uint64_t seed
     ++now.spp;
     now.seconds += pass.seconds;
     now.rays += pass.rays;
-    for (; b < budgets.size() && static_cast<double>(now.rays) >= static_cast<double>(budgets[b]) * pixels; ++b) {
+    for (; b < budgets.size() &&
+           static_cast<double>(now.rays) >= static_cast<double>(budgets[b]) * pixels;
+         ++b) {
       now.budget = budgets[b];
       now.image = sum;
       for (Color& c : now.image.pixels) c /= static_cast<double>(now.spp);
@@ -140,8 +142,8 @@ struct Shootout {
 };
 
 // Every estimator on one scene; rows appended to `result`.
-inline void shoot_out_scene(const ShootoutScene& s, const Reference& reference,
-                            const auto& o, Shootout& result) {
+inline void shoot_out_scene(const ShootoutScene& s, const Reference& reference, const auto& o,
+                            Shootout& result) {
   SceneParams params = o.scene.params;
   params.light_scale = s.light_scale;
   const Scene scene = make_scene(s.scene, params);
@@ -161,9 +163,9 @@ inline void shoot_out_scene(const ShootoutScene& s, const Reference& reference,
       if (e.kind == EstimatorKind::uniform) uniform_efficiency.push_back(efficiency);
       const MeanWithInterval m = mean_with_interval(shot.image, reference.image);
       result.table.add_row({s.scene, s.light_scale, std::string(e.name), shot.budget, shot.spp,
-                            rays_per_pixel, rel_mse, efficiency,
-                            efficiency / uniform_efficiency[b], m.mean, m.mean - m.half_width,
-                            m.mean + m.half_width, mean_radiance(reference.image)});
+                            rays_per_pixel, rel_mse, efficiency, efficiency / uniform_efficiency[b],
+                            m.mean, m.mean - m.half_width, m.mean + m.half_width,
+                            mean_radiance(reference.image)});
       result.seconds.add_row({s.scene, s.light_scale, std::string(e.name), shot.budget,
                               shot.seconds, static_cast<double>(shot.rays) / shot.seconds,
                               1.0 / (rel_mse * shot.seconds)});

@@ -67,7 +67,7 @@ struct Options {
   std::uint32_t max_n = 1u << 16;   // the largest N of the disk and smooth studies
   std::uint32_t budget = 1u << 16;  // N of the dimension study at every k: 2^16 = 2^k at k = 16
   std::vector<int> dims = {1, 2, 3, 4, 5, 6, 8, 10, 12, 14, 16};  // k of the dimension study
-  int picture_points = 64;  // points of each set in point_sets.png
+  int picture_points = 64;    // points of each set in point_sets.png
   RenderStudyOptions render;  // the path tracer's samplers: off unless --render-max-spp
 };
 
@@ -110,8 +110,8 @@ void run(const CLI::App& app, const Options& o) {
   const Stopwatch clock;
   const std::vector<double> estimates = run_tasks(plan, o);
   const Tables t = tabulate(plan, estimates, o.trials, o.budget);
-  const RenderStudy render = run_render_study(o.render, o.common.seed, o.common.threads,
-                                              o.common.quiet);
+  const RenderStudy render =
+      run_render_study(o.render, o.common.seed, o.common.threads, o.common.quiet);
   const double seconds = clock.seconds();
 
   write_csv(o.common.dir / "disk.csv", t.disk);
@@ -130,12 +130,9 @@ void run(const CLI::App& app, const Options& o) {
     write_csv(o.common.dir / "render_slopes.csv", render.slopes);
     write_plot(o.common.dir, render_error_plot(o.render, render.slopes));
     write_four_spp_sheet(o.common.dir, o.render, render);
-    summary["render"] = {{"scene", o.render.scene.scene},
-                         {"width", o.render.width},
-                         {"height", o.render.height},
-                         {"depths", study_depths(o.render)},
-                         {"rays", render.rays},
-                         {"slopes", render.slopes.json()},
+    summary["render"] = {{"scene", o.render.scene.scene}, {"width", o.render.width},
+                         {"height", o.render.height},     {"depths", study_depths(o.render)},
+                         {"rays", render.rays},           {"slopes", render.slopes.json()},
                          {"errors", render.errors.json()}};
   }
   write_json(o.common.dir / "summary.json", summary);
@@ -188,10 +185,10 @@ int main(int argc, char** argv) {
   add_choice_option(
       app, "--render-scene", {"cornell", "cornell-spheres"}, o.render.scene.scene,
       [&](const std::string& name) { o.render.scene.scene = name; }, "Scene of the render study");
-  add_number_option(app, "--render-width", o.render.width, "Width of the render study's images",
+  add_number_option(app, "--render-width", o.render.width, "Width of the render study's images", 1,
+                    4096);
+  add_number_option(app, "--render-height", o.render.height, "Height of the render study's images",
                     1, 4096);
-  add_number_option(app, "--render-height", o.render.height,
-                    "Height of the render study's images", 1, 4096);
   add_number_option(app, "--render-depth", o.render.full_depth,
                     "The render study's full depth (its other depth is 1: direct light)", 2, 1000);
   add_number_option(app, "--render-reference-spp", o.render.reference_spp,

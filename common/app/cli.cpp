@@ -44,8 +44,7 @@ void add_render_options(CLI::App& app, SceneOptions& scene, ImageOptions& image,
   add_number_option(app, "--emission", scene.params.furnace_emission,
                     "Furnace scene: emitted radiance everywhere", 0.0, 1e6);
   add_number_option(app, "--width", image.width, "Image width in pixels", 1, k_max_image_side);
-  add_number_option(app, "--height", image.height, "Image height in pixels", 1,
-                    k_max_image_side);
+  add_number_option(app, "--height", image.height, "Image height in pixels", 1, k_max_image_side);
 }
 
 namespace {
@@ -63,10 +62,10 @@ T parse_number(std::string_view text, const std::string& flag, T lowest, T highe
   if constexpr (std::is_floating_point_v<T>)
     return parse_real_number(text, flag, lowest, highest,
                              in_list ? "a comma-separated list of numbers" : "a number");
-  return static_cast<T>(parse_whole_number(
-      text, flag, static_cast<std::uint64_t>(std::max(lowest, T{})),
-      static_cast<std::uint64_t>(std::max(highest, T{})),
-      in_list ? "a comma-separated list of whole numbers" : "a whole number"));
+  return static_cast<T>(
+      parse_whole_number(text, flag, static_cast<std::uint64_t>(std::max(lowest, T{})),
+                         static_cast<std::uint64_t>(std::max(highest, T{})),
+                         in_list ? "a comma-separated list of whole numbers" : "a whole number"));
 }
 
 }  // namespace
@@ -145,9 +144,10 @@ void show_default_as(CLI::Option* option, const std::string& text) { option->def
 void check_image_size(const ImageOptions& options) {
   const long long pixels = static_cast<long long>(options.width) * options.height;
   if (pixels > k_max_pixels)
-    throw UsageError(fmt::format("--width x --height: {} x {} = {} pixels is above the limit of {} "
-                                 "(8192 x 4096)",
-                                 options.width, options.height, pixels, k_max_pixels));
+    throw UsageError(
+        fmt::format("--width x --height: {} x {} = {} pixels is above the limit of {} "
+                    "(8192 x 4096)",
+                    options.width, options.height, pixels, k_max_pixels));
 }
 
 namespace {
@@ -166,8 +166,9 @@ nlohmann::ordered_json option_values(const CLI::App& app, bool run_flags) {
     if (names.empty() || names.front() == "help" || names.front() == "print-flags" ||
         is_run_flag(names.front()) != run_flags)
       continue;
-    flags[names.front()] = option->count() == 0 ? option->get_default_str()
-                                                : fmt::format("{}", fmt::join(option->results(), ","));
+    flags[names.front()] = option->count() == 0
+                               ? option->get_default_str()
+                               : fmt::format("{}", fmt::join(option->results(), ","));
   }
   return flags;
 }
@@ -187,7 +188,8 @@ std::string message_of(const std::exception& e) {
     return (file->path1().empty() ? std::string("a file operation failed")
                                   : "cannot access '" + file->path1().string() + "'") +
            ": " + file->code().message();
-  if (const auto* system = dynamic_cast<const std::system_error*>(&e); system && std::ferror(stdout))
+  if (const auto* system = dynamic_cast<const std::system_error*>(&e);
+      system && std::ferror(stdout))
     return "cannot write to stdout: " + system->code().message();
   return e.what();
 }
@@ -228,7 +230,8 @@ std::optional<std::string> refused_value(const CLI::App& app, int argc, char** a
     try {
       (void)nlohmann::json(std::string(value)).dump();
     } catch (const nlohmann::json::type_error&) {  // 316: invalid UTF-8
-      return flag + ": the value is not valid UTF-8; give it in UTF-8 (the run's JSON files record it)";
+      return flag +
+             ": the value is not valid UTF-8; give it in UTF-8 (the run's JSON files record it)";
     }
   }
   return std::nullopt;
@@ -279,8 +282,9 @@ int ChapterApp::run(int argc, char** argv, const std::function<void()>& body) {
     }
     try {  // read strictly, before any work: a typo is refused, never ignored
       if (const char* seconds = std::getenv("MCRT_GNUPLOT_TIMEOUT"))
-        set_gnuplot_time_limit(static_cast<int>(parse_whole_number(
-            seconds, "MCRT_GNUPLOT_TIMEOUT", 1, 3600, "a whole number of seconds")));
+        set_gnuplot_time_limit(
+            static_cast<int>(parse_whole_number(seconds, "MCRT_GNUPLOT_TIMEOUT", 1, 3600,
+                                                "a whole number of seconds")));
     } catch (const CLI::ValidationError& e) {
       throw UsageError(e.what());
     }

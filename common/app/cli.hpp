@@ -34,11 +34,11 @@ struct Chapter {
 
 /// --out, --seed, --threads, --quiet.
 struct CommonOptions {
-  std::filesystem::path out;   ///< output folder, default out/<chapter>; messages name it
-  std::filesystem::path dir;   ///< where the run writes: its staging folder (app/run_folder.hpp)
-  std::uint64_t seed = 1;      ///< the same seed gives byte-identical outputs
-  int threads = 1;             ///< default: all cores
-  bool quiet = false;          ///< no progress bar, no table
+  std::filesystem::path out;  ///< output folder, default out/<chapter>; messages name it
+  std::filesystem::path dir;  ///< where the run writes: its staging folder (app/run_folder.hpp)
+  std::uint64_t seed = 1;     ///< the same seed gives byte-identical outputs
+  int threads = 1;            ///< default: all cores
+  bool quiet = false;         ///< no progress bar, no table
 };
 
 /// --width, --height.

@@ -75,9 +75,10 @@ void check_memory_limit(const MemoryUse& use, std::string_view flags, std::strin
   std::set_new_handler([] { throw OutOfMemory(); });
   const double available = available_memory_bytes();
   if (use.bytes <= available) return;
-  throw UsageError(fmt::format("{}: about {:.3g} bytes of memory ({}), over the {:.3g} bytes "
-                               "available; {}",
-                               flags, use.bytes, use.counted, available, remedy));
+  throw UsageError(
+      fmt::format("{}: about {:.3g} bytes of memory ({}), over the {:.3g} bytes "
+                  "available; {}",
+                  flags, use.bytes, use.counted, available, remedy));
 }
 
 }  // namespace mcrt

@@ -21,8 +21,7 @@ struct MemoryUse {
 /// from its code), a base of 64 MB (program, libraries, encoders) and 8 MiB of stack per thread.
 inline MemoryUse images_in_memory(double pixels, double images, int threads,
                                   std::string_view counted) {
-  return {64e6 + threads * 8.0 * 1024 * 1024 + images * pixels * k_image_bytes_per_pixel,
-          counted};
+  return {64e6 + threads * 8.0 * 1024 * 1024 + images * pixels * k_image_bytes_per_pixel, counted};
 }
 
 /// What a container's memory limit under `root` leaves: cgroup v2 (memory.max less

@@ -78,8 +78,10 @@ double parse_real_number(std::string_view text, std::string_view flag, double lo
     const std::string_view digits = text.starts_with('+') ? text.substr(1) : text;
     double v = 0.0;  // from_chars takes no plus sign
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-    if (error == std::errc() && std::isfinite(v)) value = v + 0.0;  // -0 becomes 0
-    else why = shown(text) + " is out of range";  // written right, beyond what a double holds
+    if (error == std::errc() && std::isfinite(v))
+      value = v + 0.0;  // -0 becomes 0
+    else
+      why = shown(text) + " is out of range";  // written right, beyond what a double holds
   }
   return checked(value, text, real_number_range(flag, lowest, highest, what), lowest, highest,
                  plain_number(lowest), plain_number(highest), value ? "" : why);

@@ -25,8 +25,9 @@ std::string readable_duration(double seconds) {
 
 void check_furnace_albedo(double albedo) {
   if (albedo >= 1.0)
-    throw UsageError("--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
-                     "is infinite");
+    throw UsageError(
+        "--albedo: give an albedo below 1; at 1 the furnace radiance Le / (1 - a) "
+        "is infinite");
 }
 
 // One line under 200 characters: what `counted` names is in the chapter's docs, not here.
@@ -34,9 +35,9 @@ void check_ray_limit(const RayWork& work, double limit, std::string_view flags, 
                      std::string_view remedy) {
   if (work.predicted_rays <= limit) return;
   const double seconds = work.predicted_rays / (k_estimated_rays_per_second_per_thread * threads);
-  throw UsageError(fmt::format("{}: about {:.2g} rays (~{} on {} threads), over the limit of {:.2g}; {}",
-                               flags, work.predicted_rays, readable_duration(seconds), threads,
-                               limit, remedy));
+  throw UsageError(
+      fmt::format("{}: about {:.2g} rays (~{} on {} threads), over the limit of {:.2g}; {}", flags,
+                  work.predicted_rays, readable_duration(seconds), threads, limit, remedy));
 }
 
 }  // namespace mcrt

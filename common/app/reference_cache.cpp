@@ -63,9 +63,9 @@ nlohmann::ordered_json reference_settings(const ReferenceSpec& spec) {
 
 Reference furnace_reference(const ReferenceSpec& spec) {
   const SceneParams& p = spec.scene.params;
-  const double value =
-      spec.max_depth < 0 ? furnace_radiance_untruncated(p.furnace_albedo, p.furnace_emission)
-                         : furnace_radiance(p.furnace_albedo, p.furnace_emission, spec.max_depth);
+  const double value = spec.max_depth < 0
+                           ? furnace_radiance_untruncated(p.furnace_albedo, p.furnace_emission)
+                           : furnace_radiance(p.furnace_albedo, p.furnace_emission, spec.max_depth);
   Reference r;
   r.image = Image(spec.width, spec.height, Color(value));
   r.info = reference_settings(spec);
@@ -179,8 +179,9 @@ std::optional<CacheFolder> open_cache_folder(const fs::path& dir) {
   if (!fs::is_empty(fs::path("/proc/self/fd") / std::to_string(fd), ec) || ec)
     refuse_folder(dir, fmt::format("it holds files and no {} (not a cache)", k_tag_name),
                   "give a new or empty folder");
-  const std::string tag = fmt::format(
-      "{}\n# The cache of mcrt-companion's reference images: safe to delete.\n", k_tag_signature);
+  const std::string tag =
+      fmt::format("{}\n# The cache of mcrt-companion's reference images: safe to delete.\n",
+                  k_tag_signature);
   write_files(folder, {{std::string(k_tag_name), tag}});
   return folder;
 }
@@ -192,8 +193,9 @@ fs::path default_cache_folder() {
   const char* home = std::getenv("HOME");
   if (home != nullptr && fs::path(home).is_absolute())
     return fs::path(home) / ".cache" / "mcrt-companion";
-  throw UsageError("--reference-dir: no folder for the reference cache: neither XDG_CACHE_HOME "
-                   "nor HOME is set to an absolute path; give --reference-dir a folder of your own");
+  throw UsageError(
+      "--reference-dir: no folder for the reference cache: neither XDG_CACHE_HOME "
+      "nor HOME is set to an absolute path; give --reference-dir a folder of your own");
 }
 
 // The cache folder, created if missing (the XDG base folder 0700, as its specification asks),
@@ -206,9 +208,10 @@ CacheFolder create_cache_folder(const fs::path& dir) {
     ::mkdir(dir.parent_path().c_str(), 0700);
   }
   if (::mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
-    throw IoError(fmt::format("cannot create the reference cache '{}': {}; give --reference-dir a "
-                              "folder you can write",
-                              dir.string(), std::strerror(errno)));
+    throw IoError(
+        fmt::format("cannot create the reference cache '{}': {}; give --reference-dir a "
+                    "folder you can write",
+                    dir.string(), std::strerror(errno)));
   if (auto folder = open_cache_folder(dir)) return std::move(*folder);
   throw IoError(fmt::format("cannot create the reference cache '{}': it vanished", dir.string()));
 }
@@ -261,8 +264,8 @@ void write_files(const CacheFolder& folder, const std::vector<NamedBytes>& files
     ::close(file.fd);  // after the rename: the lock marks a live writer until then
   }
   if (failure)
-    throw IoError(fmt::format("cannot write '{}': {}", (folder.path / failed).string(),
-                              failure.message()));
+    throw IoError(
+        fmt::format("cannot write '{}': {}", (folder.path / failed).string(), failure.message()));
 }
 
 bool missing(int dir_fd, const std::string& name) {
@@ -387,7 +390,8 @@ Reference render_reference(const ReferenceSpec& spec) {
             {"spp", 2 * half},
             {"seconds", r.seconds},
             {"rays", a.rays + b.rays},
-            {"standard_error_rms", std::sqrt(two_render_mean_squared_error(a.image, b.image) / 2.0)},
+            {"standard_error_rms",
+             std::sqrt(two_render_mean_squared_error(a.image, b.image) / 2.0)},
             {"relative_mse_of_reference", relative_variance},
             {"mean_radiance", mean_radiance(r.image)}};
   return r;
@@ -396,9 +400,10 @@ Reference render_reference(const ReferenceSpec& spec) {
 }  // namespace
 
 std::string reference_stem(const ReferenceSpec& spec) {
-  std::string stem = fmt::format("{}_ls{}_{}x{}", spec.scene.scene,
-                                 spec.scene.scene == "cornell" ? spec.scene.params.light_scale : 1.0,
-                                 spec.width, spec.height);
+  std::string stem =
+      fmt::format("{}_ls{}_{}x{}", spec.scene.scene,
+                  spec.scene.scene == "cornell" ? spec.scene.params.light_scale : 1.0, spec.width,
+                  spec.height);
   if (is_furnace(spec))
     stem += fmt::format("_a{}_e{}", spec.scene.params.furnace_albedo,
                         spec.scene.params.furnace_emission);
@@ -415,10 +420,11 @@ void check_reference_folder(const fs::path& dir, const fs::path& out) {
   // would fill it with files it does not own.
   const fs::path cache = resolved(dir), run = resolved(out);
   if (!out.empty() && (is_within(cache, run) || is_within(run, cache)))
-    throw UsageError(fmt::format("--reference-dir: the reference cache '{}' and --out '{}' may "
-                                 "not lie inside one another (each run replaces --out); give a "
-                                 "cache folder outside --out",
-                                 dir.string(), out.string()));
+    throw UsageError(
+        fmt::format("--reference-dir: the reference cache '{}' and --out '{}' may "
+                    "not lie inside one another (each run replaces --out); give a "
+                    "cache folder outside --out",
+                    dir.string(), out.string()));
   create_cache_folder(dir);
 }
 

@@ -102,8 +102,8 @@ int open_manifest(const fs::path& dir, int lock = 0) {
   const int fd =
       ::open((dir / k_manifest_name).c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   struct stat info {};
-  if (fd >= 0 && (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) ||
-                  info.st_uid != ::geteuid() || (lock && ::flock(fd, lock) != 0))) {
+  if (fd >= 0 && (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || info.st_uid != ::geteuid() ||
+                  (lock && ::flock(fd, lock) != 0))) {
     ::close(fd);
     return -1;
   }
@@ -141,9 +141,10 @@ void refuse_unless_ours(const fs::path& path, const fs::path& out, bool parent) 
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) return;  // a missing folder is made by this run
   if (const std::string why = not_our_folder(info, parent, parent); !why.empty())
-    throw UsageError(fmt::format("--out '{}': {} {}; a run only writes in folders of your own, "
-                                 "so choose one",
-                                 out.string(), parent ? "the folder it is in" : "it", why));
+    throw UsageError(
+        fmt::format("--out '{}': {} {}; a run only writes in folders of your own, "
+                    "so choose one",
+                    out.string(), parent ? "the folder it is in" : "it", why));
 }
 
 // The process's umask, read without changing it (umask() would, for every thread).
@@ -164,8 +165,8 @@ std::vector<fs::path> create_parents(const fs::path& dir, const fs::path& out) {
     if (::mkdir(created[i].c_str(), 0775) != 0 && errno != EEXIST) {  // never writable by others
       const int reason = errno;
       for (std::size_t j = i; j-- > 0;) ::rmdir(created[j].c_str());
-      throw IoError(fmt::format("cannot create output folder '{}': {}", out.string(),
-                                std::strerror(reason)));
+      throw IoError(
+          fmt::format("cannot create output folder '{}': {}", out.string(), std::strerror(reason)));
     }
   std::reverse(created.begin(), created.end());
   return created;
@@ -190,7 +191,8 @@ std::pair<fs::path, int> make_staging(const fs::path& parent, const std::string&
     reason = dir_fd < 0 ? errno : manifest.error.value();
     if (manifest.fd >= 0) {
       const std::string text = std::string(k_manifest_name) + "\n";
-      if (const std::error_code error = write_all(manifest.fd, text)) reason = error.value();
+      if (const std::error_code error = write_all(manifest.fd, text))
+        reason = error.value();
       else if (::renameat(dir_fd, manifest.name.c_str(), dir_fd, k_manifest_name) != 0)
         reason = errno;
     }
@@ -259,7 +261,8 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
   while (!fs::exists(fs::symlink_status(nearest, ec)) && nearest != nearest.parent_path())
     nearest = nearest.parent_path();
   refuse_unless_ours(nearest, out_, true);
-  struct stat target_info {}, parent_info {};
+  struct stat target_info {
+  }, parent_info{};
   const bool exists = ::stat(target_.c_str(), &target_info) == 0;
   // A mount point cannot be swapped: an empty one is written into (staged inside it).
   in_place_ = exists && ::stat(parent.c_str(), &parent_info) == 0 &&
@@ -278,9 +281,10 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
     }
   }
   if (in_place_ && !fs::is_empty(target_, ec))
-    throw UsageError(fmt::format("--out '{}' is a mount point holding a run, which cannot be "
-                                 "swapped whole; empty it or give a folder inside it",
-                                 out_.string()));
+    throw UsageError(
+        fmt::format("--out '{}' is a mount point holding a run, which cannot be "
+                    "swapped whole; empty it or give a folder inside it",
+                    out_.string()));
   remove_stale_staging(parent);
   if (!exists) created_parents_ = create_parents(target_, out_);
   try {
@@ -294,14 +298,15 @@ RunFolder::RunFolder(fs::path out) : out_(std::move(out)), target_(checked_targe
   ::stat(staging_.c_str(), &info);
   // A new --out is never writable by others (the next run would refuse it), and keeps a setgid
   // parent's bit; a replaced one keeps its mode and group.
-  mode_ = exists ? target_info.st_mode & 07777
-                 : (0775 & ~current_umask()) | (info.st_mode & S_ISGID);
+  mode_ =
+      exists ? target_info.st_mode & 07777 : (0775 & ~current_umask()) | (info.st_mode & S_ISGID);
   if (exists && info.st_gid != target_info.st_gid &&
       ::chown(staging_.c_str(), static_cast<uid_t>(-1), target_info.st_gid) != 0) {
     discard();
-    throw UsageError(fmt::format("--out '{}' belongs to a group you cannot give a new folder; a "
-                                 "run replaces its --out whole, so choose a folder of your own",
-                                 out_.string()));
+    throw UsageError(
+        fmt::format("--out '{}' belongs to a group you cannot give a new folder; a "
+                    "run replaces its --out whole, so choose a folder of your own",
+                    out_.string()));
   }
 }
 
@@ -312,9 +317,10 @@ RunFolder::~RunFolder() { discard(); }
 void RunFolder::commit_into_mount_point() {
   std::vector<std::string> names = names_in(staging_), moved;
   if (names_in(target_) != std::vector<std::string>{staging_.filename().string()})
-    throw IoError(fmt::format("cannot write output folder '{}': something appeared in it during "
-                              "the run; nothing written",
-                              out_.string()));
+    throw IoError(
+        fmt::format("cannot write output folder '{}': something appeared in it during "
+                    "the run; nothing written",
+                    out_.string()));
   std::stable_partition(names.begin(), names.end(), [](auto& n) { return n != k_manifest_name; });
   for (const std::string& name : names) {
     if (::rename((staging_ / name).c_str(), (target_ / name).c_str()) == 0) {
@@ -358,12 +364,13 @@ void RunFolder::commit() {
     if (::ftruncate(lock_fd_, 0) != 0 || ::lseek(lock_fd_, 0, SEEK_SET) != 0)
       error = {errno, std::generic_category()};
     if (error || (error = write_all(lock_fd_, manifest)))
-      throw IoError(fmt::format("cannot write '{}': {}", (out_ / k_manifest_name).string(),
-                                error.message()));
+      throw IoError(
+          fmt::format("cannot write '{}': {}", (out_ / k_manifest_name).string(), error.message()));
     const auto fail = [&](int reason, const char* hint = "") {
-      throw IoError(fmt::format("cannot write output folder '{}': {}{}; it still holds the "
-                                "previous run",
-                                out_.string(), std::strerror(reason), hint));
+      throw IoError(
+          fmt::format("cannot write output folder '{}': {}{}; it still holds the "
+                      "previous run",
+                      out_.string(), std::strerror(reason), hint));
     };
     ::chmod(staging_.c_str(), mode_);
     struct stat info {};
@@ -374,10 +381,12 @@ void RunFolder::commit() {
     } else {
       // Something added to --out during the run would be lost with the previous run.
       if (const std::optional<std::string> foreign = first_foreign_entry(target_))
-        throw IoError(fmt::format("cannot replace output folder '{}': '{}' appeared in it during "
-                                  "the run and no run wrote it; nothing replaced",
-                                  out_.string(), *foreign));
-      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) != 0) {
+        throw IoError(
+            fmt::format("cannot replace output folder '{}': '{}' appeared in it during "
+                        "the run and no run wrote it; nothing replaced",
+                        out_.string(), *foreign));
+      if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) !=
+          0) {
         if (errno == EXDEV)  // overlayfs: a folder of a lower layer cannot be moved
           fail(EXDEV, " (a folder of the image's lower layer: remove it or choose a new one)");
         if (errno != EINVAL && errno != ENOSYS) fail(errno);
@@ -388,10 +397,11 @@ void RunFolder::commit() {
         if (::rename(staging_.c_str(), target_.c_str()) != 0) {
           const int reason = errno;
           if (::rename(aside.c_str(), target_.c_str()) == 0) fail(reason);
-          throw IoError(fmt::format("cannot write output folder '{}': {}; the previous run is in "
-                                    "'{}', the new one in '{}'",
-                                    out_.string(), std::strerror(reason), aside.string(),
-                                    std::exchange(staging_, fs::path()).string()));  // both kept
+          throw IoError(
+              fmt::format("cannot write output folder '{}': {}; the previous run is in "
+                          "'{}', the new one in '{}'",
+                          out_.string(), std::strerror(reason), aside.string(),
+                          std::exchange(staging_, fs::path()).string()));  // both kept
         }
         ::rename(aside.c_str(), staging_.c_str());  // removed below, with the staging name
       }
@@ -405,7 +415,8 @@ void RunFolder::commit() {
 
 std::string RunFolder::with_out_name(std::string text) const {
   const std::string from = staging_.string(), to = out_.string();
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+  for (std::size_t at = text.find(from); at != std::string::npos;
+       at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
   return text;
 }

@@ -56,14 +56,14 @@ class RunFolder {
  private:
   void commit_into_mount_point();
 
-  std::filesystem::path out_;      // as given
-  std::filesystem::path target_;   // --out, links followed
+  std::filesystem::path out_;     // as given
+  std::filesystem::path target_;  // --out, links followed
   std::filesystem::path staging_;
-  int lock_fd_ = -1;               // the staging manifest, locked while this run lives
+  int lock_fd_ = -1;  // the staging manifest, locked while this run lives
   std::vector<std::filesystem::path> created_parents_;  // innermost first
-  mode_t mode_ = 0755;             // the mode --out gets
+  mode_t mode_ = 0755;                                  // the mode --out gets
   bool committed_ = false;
-  bool in_place_ = false;          // --out is an empty mount point: staged inside it
+  bool in_place_ = false;  // --out is an empty mount point: staged inside it
 };
 
 /// The first entry under `dir` (relative, folders ending in '/', sorted) that is not a

@@ -9,8 +9,9 @@ namespace mcrt {
 void check_work_limit(const Work& work, double limit, std::string_view flags,
                       std::string_view remedy) {
   if (work.amount <= limit) return;
-  throw UsageError(fmt::format("{}: this run would draw {:.3g} {} ({}), above the limit of {:.3g}; {}",
-                               flags, work.amount, work.unit, work.counted, limit, remedy));
+  throw UsageError(
+      fmt::format("{}: this run would draw {:.3g} {} ({}), above the limit of {:.3g}; {}", flags,
+                  work.amount, work.unit, work.counted, limit, remedy));
 }
 
 }  // namespace mcrt

@@ -22,18 +22,28 @@ namespace mcrt {
 /// (cos 2 pi u, sin 2 pi u) for u in [0, 1]. Branch-free: the quarter turn picks signs and
 /// order from small tables, since u is random and a branch on it would mispredict.
 inline Vec2 cos_sin_two_pi(double u) {
-  const double quarters = 4.0 * u;                           // exact: a power of 2
-  const int q = static_cast<int>(quarters + 0.5);            // nearest whole number, u >= 0
-  const double x = (quarters - q) * (0.5 * k_pi);            // quarters - q is exact
+  const double quarters = 4.0 * u;                 // exact: a power of 2
+  const int q = static_cast<int>(quarters + 0.5);  // nearest whole number, u >= 0
+  const double x = (quarters - q) * (0.5 * k_pi);  // quarters - q is exact
   const double x2 = x * x;
   // Taylor series in x^2, by Horner's rule; the coefficients are 1/n! rounded once.
   const double sin_x =
-      x + x * x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-          x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000.0)))))));
+      x + x * x2 *
+              (-1.0 / 6 +
+               x2 * (1.0 / 120 +
+                     x2 * (-1.0 / 5040 +
+                           x2 * (1.0 / 362880 +
+                                 x2 * (-1.0 / 39916800 +
+                                       x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000.0)))))));
   const double cos_x =
-      1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 +
-          x2 * (-1.0 / 3628800 + x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200.0 +
-          x2 * (1.0 / 20922789888000.0))))))));
+      1.0 +
+      x2 * (-1.0 / 2 +
+            x2 * (1.0 / 24 +
+                  x2 * (-1.0 / 720 +
+                        x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+                                                  x2 * (1.0 / 479001600 +
+                                                        x2 * (-1.0 / 87178291200.0 +
+                                                              x2 * (1.0 / 20922789888000.0))))))));
   // cos(q pi/2 + x), sin(q pi/2 + x) for q mod 4 = 0, 1, 2, 3:
   // (cos x, sin x), (-sin x, cos x), (-cos x, -sin x), (sin x, -cos x).
   static constexpr double k_cos_sign[4] = {1.0, -1.0, -1.0, 1.0};

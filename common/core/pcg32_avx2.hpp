@@ -29,8 +29,11 @@ struct Pcg32Multiplier {
 /// that two steps from the same s can share it.
 [[gnu::target("avx2")]] inline __m256i pcg32_lcg(__m256i s, __m256i s_high, Pcg32Multiplier a,
                                                  __m256i c) {
-  const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(s_high, a.low), _mm256_mul_epu32(s, a.high));
-  return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epu32(s, a.low), _mm256_slli_epi64(cross, 32)), c);
+  const __m256i cross =
+      _mm256_add_epi64(_mm256_mul_epu32(s_high, a.low), _mm256_mul_epu32(s, a.high));
+  return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epu32(s, a.low),
+                                           _mm256_slli_epi64(cross, 32)),
+                          c);
 }
 
 /// PCG32's output in the low 32 bits of each 64-bit lane (the high 32 bits are not zero): the
@@ -47,8 +50,8 @@ struct Pcg32Multiplier {
 [[gnu::target("avx2")]] inline __m256d pcg32_uniform(__m256i output) {
   const __m256i two_52 = _mm256_set1_epi64x(0x4330000000000000);
   const __m256i bits = _mm256_and_si256(output, _mm256_set1_epi64x(0xffffffff));
-  const __m256d value = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(bits, two_52)),
-                                      _mm256_set1_pd(0x1p52));
+  const __m256d value =
+      _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(bits, two_52)), _mm256_set1_pd(0x1p52));
   return _mm256_mul_pd(value, _mm256_set1_pd(0x1p-32));
 }
 

@@ -84,7 +84,8 @@ constexpr std::uint64_t stream_key(std::initializer_list<KeyPart> parts) {
   for (const KeyPart& part : parts) {
     if (part.value >= part.count) throw std::out_of_range("stream_key: a part is out of its range");
     if (!first) {
-      if (key > room / part.count) throw std::out_of_range("stream_key: the key needs more than 64 bits");
+      if (key > room / part.count)
+        throw std::out_of_range("stream_key: the key needs more than 64 bits");
       key *= part.count;
     }
     if (part.value > ~std::uint64_t{0} - key)

@@ -63,8 +63,10 @@ void bounce_one_lane(BounceLanes& lanes, RayLanes& rays, int l) {
 
 void bounce_lanes(BounceLanes& lanes, RayLanes& rays) {
   static const bool avx2 = cpu_has_avx2();
-  if (avx2) bounce_lanes_avx2(lanes, rays);
-  else bounce_lanes_portable(lanes, rays);
+  if (avx2)
+    bounce_lanes_avx2(lanes, rays);
+  else
+    bounce_lanes_portable(lanes, rays);
 }
 
 // The lines of estimate_path_radiance after the emission, lane by lane.
@@ -87,7 +89,9 @@ using D4 = __m256d;
 [[gnu::target("avx2")]] inline D4 mul(D4 a, D4 b) { return _mm256_mul_pd(a, b); }
 [[gnu::target("avx2")]] inline D4 div(D4 a, D4 b) { return _mm256_div_pd(a, b); }
 // where ? a : b, lane by lane (where: all bits set or clear).
-[[gnu::target("avx2")]] inline D4 select(D4 where, D4 a, D4 b) { return _mm256_blendv_pd(b, a, where); }
+[[gnu::target("avx2")]] inline D4 select(D4 where, D4 a, D4 b) {
+  return _mm256_blendv_pd(b, a, where);
+}
 // glm::dot's order: (x1 y1 + x2 y2) + x3 y3.
 [[gnu::target("avx2")]] inline D4 dot(D4 x1, D4 x2, D4 x3, D4 y1, D4 y2, D4 y3) {
   return add(add(mul(x1, y1), mul(x2, y2)), mul(x3, y3));
@@ -104,7 +108,9 @@ using D4 = __m256d;
 [[gnu::target("avx2")]] inline D4 negate(D4 a) { return _mm256_xor_pd(broadcast(-0.0), a); }
 
 // One step of Horner's rule: k + x2 c.
-[[gnu::target("avx2")]] inline D4 term(D4 x2, D4 c, double k) { return add(broadcast(k), mul(x2, c)); }
+[[gnu::target("avx2")]] inline D4 term(D4 x2, D4 c, double k) {
+  return add(broadcast(k), mul(x2, c));
+}
 
 // cos_sin_two_pi on four lanes (core/cos_sin.hpp): the quarter turn q picks the signs and the
 // order of (cos x, sin x) by selects instead of tables.
@@ -115,27 +121,40 @@ using D4 = __m256d;
   const D4 x2 = mul(x, x);
   const D4 sin_x = add(
       x, mul(mul(x, x2),
-             term(x2, term(x2, term(x2, term(x2, term(x2, term(x2, broadcast(-1.0 / 1307674368000.0), 1.0 / 6227020800),
+             term(x2,
+                  term(x2,
+                       term(x2,
+                            term(x2,
+                                 term(x2,
+                                      term(x2, broadcast(-1.0 / 1307674368000.0), 1.0 / 6227020800),
                                       -1.0 / 39916800),
                                  1.0 / 362880),
                             -1.0 / 5040),
                        1.0 / 120),
                   -1.0 / 6)));
-  const D4 cos_x = term(x2, 
-      term(x2, term(x2, term(x2, term(x2, term(x2, term(x2, term(x2, broadcast(1.0 / 20922789888000.0), -1.0 / 87178291200.0),
-                                    1.0 / 479001600),
-                               -1.0 / 3628800),
-                          1.0 / 40320),
-                     -1.0 / 720),
-                1.0 / 24),
-           -1.0 / 2),
-      1.0);
+  const D4 cos_x = term(x2,
+                        term(x2,
+                             term(x2,
+                                  term(x2,
+                                       term(x2,
+                                            term(x2,
+                                                 term(x2,
+                                                      term(x2, broadcast(1.0 / 20922789888000.0),
+                                                           -1.0 / 87178291200.0),
+                                                      1.0 / 479001600),
+                                                 -1.0 / 3628800),
+                                            1.0 / 40320),
+                                       -1.0 / 720),
+                                  1.0 / 24),
+                             -1.0 / 2),
+                        1.0);
   // q mod 4 = 0, 1, 2, 3: cos takes cos x, -sin x, -cos x, sin x; sin takes sin x, cos x,
   // -sin x, -cos x. The signs are +-1.0 factors, as in the one-lane tables.
   const __m128i one = _mm_set1_epi32(1), two = _mm_set1_epi32(2);
-  const D4 swapped = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(
-      _mm_cmpeq_epi32(_mm_and_si128(q, one), one)));
-  const D4 cos_sign = _mm256_cvtepi32_pd(_mm_sub_epi32(one, _mm_and_si128(_mm_add_epi32(q, one), two)));
+  const D4 swapped =
+      _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpeq_epi32(_mm_and_si128(q, one), one)));
+  const D4 cos_sign =
+      _mm256_cvtepi32_pd(_mm_sub_epi32(one, _mm_and_si128(_mm_add_epi32(q, one), two)));
   const D4 sin_sign = _mm256_cvtepi32_pd(_mm_sub_epi32(one, _mm_and_si128(q, two)));
   cos_out = mul(cos_sign, select(swapped, sin_x, cos_x));
   sin_out = mul(sin_sign, select(swapped, cos_x, sin_x));
@@ -153,7 +172,8 @@ using D4 = __m256d;
   const D4 lx = mul(sin_theta, cos_phi), ly = mul(sin_theta, sin_phi), lz = cos_theta;
 
   // Frame(n): sign = copysign(1, n.z), a = -1 / (sign + n.z), b = n.x n.y a.
-  const D4 nx = load(lanes.hit.normal[0]), ny = load(lanes.hit.normal[1]), nz = load(lanes.hit.normal[2]);
+  const D4 nx = load(lanes.hit.normal[0]), ny = load(lanes.hit.normal[1]),
+           nz = load(lanes.hit.normal[2]);
   const D4 sign = _mm256_or_pd(_mm256_and_pd(broadcast(-0.0), nz), one);
   const D4 a = div(broadcast(-1.0), add(sign, nz));
   const D4 b = mul(mul(nx, ny), a);
@@ -166,15 +186,17 @@ using D4 = __m256d;
   const D4 wz = add(add(mul(lx, tz), mul(ly, bz)), mul(lz, nz));
 
   // The lanes that bounce: all bits set (blendv reads the sign bit).
-  const D4 mask = _mm256_castsi256_pd(_mm256_load_si256(reinterpret_cast<const __m256i*>(lanes.bouncing)));
+  const D4 mask =
+      _mm256_castsi256_pd(_mm256_load_si256(reinterpret_cast<const __m256i*>(lanes.bouncing)));
 
   // Lanes with a glossy lobe are left alone here: bounce_lobed_lanes does them at the end.
   D4 diffuse = mask;
   if (lanes.lobed != 0) {
-    const __m256i bits = _mm256_and_si256(_mm256_set1_epi64x(lanes.lobed),
-                                          _mm256_setr_epi64x(1, 2, 4, 8));
-    diffuse = _mm256_andnot_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(bits, _mm256_setzero_si256())),
-                               mask);
+    const __m256i bits =
+        _mm256_and_si256(_mm256_set1_epi64x(lanes.lobed), _mm256_setr_epi64x(1, 2, 4, 8));
+    diffuse =
+        _mm256_andnot_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(bits, _mm256_setzero_si256())),
+                         mask);
   }
 
   // beta *= (rho / pi) cos(theta_i) / (1 / 2 pi), in Material::brdf()'s and the loop's order.
@@ -185,11 +207,12 @@ using D4 = __m256d;
   }
 
   // spawn_ray: the origin pushed 1e-7 (1 + max |p_i|) along the normal, to the side of wi.
-  const D4 px = load(lanes.hit.point[0]), py = load(lanes.hit.point[1]), pz = load(lanes.hit.point[2]);
+  const D4 px = load(lanes.hit.point[0]), py = load(lanes.hit.point[1]),
+           pz = load(lanes.hit.point[2]);
   const D4 scale = add(one, std_max(std_max(abs(px), abs(py)), abs(pz)));
   const D4 offset = mul(broadcast(1e-7), scale);
-  const D4 side = select(_mm256_cmp_pd(dot(wx, wy, wz, nx, ny, nz), zero, _CMP_GE_OQ), one,
-                         broadcast(-1.0));
+  const D4 side =
+      select(_mm256_cmp_pd(dot(wx, wy, wz, nx, ny, nz), zero, _CMP_GE_OQ), one, broadcast(-1.0));
   const D4 push = mul(side, offset);
   const D4 ox = add(px, mul(push, nx)), oy = add(py, mul(push, ny)), oz = add(pz, mul(push, nz));
   store_where(diffuse, rays.origin_x, ox);

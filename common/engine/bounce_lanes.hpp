@@ -26,7 +26,10 @@ struct BounceLanes {
   HitLanes hit;                                    ///< where the paths are (Scene::hits_in_lanes)
   alignas(32) double albedo[3][k_bounce_lanes]{};  ///< rho of the hit's material
   alignas(32) double u0[k_bounce_lanes]{}, u1[k_bounce_lanes]{};  ///< cos(theta) and phi / 2 pi
-  alignas(32) double beta[3][k_bounce_lanes]{{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};  ///< the path weight (beta_0 = 1), updated in place
+  alignas(32) double beta[3][k_bounce_lanes]{
+      {1, 1, 1, 1},
+      {1, 1, 1, 1},
+      {1, 1, 1, 1}};  ///< the path weight (beta_0 = 1), updated in place
   alignas(32) std::int64_t bouncing[k_bounce_lanes]{};  ///< all bits set where the path goes on
   unsigned lobed = 0;  ///< bit l: lane l bounces off a material with a glossy lobe
   /// False only where no material has a lobe (the engine knows it from the scene): then

@@ -16,8 +16,10 @@ namespace mcrt {
 void shade_lanes(std::span<const Material> materials, int max_depth, PathLanes& paths,
                  BounceLanes& bounce) {
   static const bool avx2 = cpu_has_avx2();
-  if (avx2) shade_lanes_avx2(materials, max_depth, paths, bounce);
-  else shade_lanes_portable(materials, max_depth, paths, bounce);
+  if (avx2)
+    shade_lanes_avx2(materials, max_depth, paths, bounce);
+  else
+    shade_lanes_portable(materials, max_depth, paths, bounce);
 }
 
 unsigned end_lanes(PathLanes& paths, BounceLanes& bounce) {
@@ -101,8 +103,8 @@ namespace {
 
   // Live lanes whose ray hit (material >= 0), and those of them that bounce.
   const __m256i material = load_int(bounce.hit.material);
-  const __m256i shaded = _mm256_and_si256(load_int(paths.live),
-                                          _mm256_cmpgt_epi64(material, _mm256_set1_epi64x(-1)));
+  const __m256i shaded =
+      _mm256_and_si256(load_int(paths.live), _mm256_cmpgt_epi64(material, _mm256_set1_epi64x(-1)));
   const __m256i at_cut = _mm256_cmpeq_epi64(load_int(paths.depth), _mm256_set1_epi64x(max_depth));
   const __m256i bouncing = _mm256_andnot_si256(at_cut, shaded);
   store_int(bounce.bouncing, bouncing);
@@ -112,13 +114,15 @@ namespace {
   static const Material none;
   const Material* of[PathLanes::k_lanes];
   for (int l = 0; l < PathLanes::k_lanes; ++l)
-    of[l] = bounce.hit.found(l) ? &materials[static_cast<std::size_t>(bounce.hit.material[l])] : &none;
+    of[l] =
+        bounce.hit.found(l) ? &materials[static_cast<std::size_t>(bounce.hit.material[l])] : &none;
   const __m256d shaded_mask = as_double(shaded);
   for (int axis = 0; axis < 3; ++axis) {
     const __m256d emission = _mm256_setr_pd(of[0]->emission[axis], of[1]->emission[axis],
                                             of[2]->emission[axis], of[3]->emission[axis]);
     const __m256d radiance = _mm256_load_pd(paths.radiance[axis]);
-    const __m256d added = _mm256_add_pd(radiance, _mm256_mul_pd(_mm256_load_pd(bounce.beta[axis]), emission));
+    const __m256d added =
+        _mm256_add_pd(radiance, _mm256_mul_pd(_mm256_load_pd(bounce.beta[axis]), emission));
     _mm256_store_pd(paths.radiance[axis], _mm256_blendv_pd(radiance, added, shaded_mask));
     _mm256_store_pd(bounce.albedo[axis], _mm256_setr_pd(of[0]->albedo[axis], of[1]->albedo[axis],
                                                         of[2]->albedo[axis], of[3]->albedo[axis]));
@@ -146,9 +150,11 @@ namespace {
   for (int axis = 0; axis < 3; ++axis)
     not_black = _mm256_or_pd(not_black, _mm256_cmp_pd(_mm256_load_pd(bounce.beta[axis]),
                                                       _mm256_setzero_pd(), _CMP_NEQ_UQ));
-  const __m256i going_on = _mm256_and_si256(load_int(bounce.bouncing), _mm256_castpd_si256(not_black));
+  const __m256i going_on =
+      _mm256_and_si256(load_int(bounce.bouncing), _mm256_castpd_si256(not_black));
   // depth + 1 where the path goes on (- (-1)), 0 elsewhere; the others made ready likewise.
-  store_int(paths.depth, _mm256_and_si256(going_on, _mm256_sub_epi64(load_int(paths.depth), going_on)));
+  store_int(paths.depth,
+            _mm256_and_si256(going_on, _mm256_sub_epi64(load_int(paths.depth), going_on)));
   const __m256d kept = as_double(going_on);
   for (int axis = 0; axis < 3; ++axis) {
     const __m256d radiance = _mm256_load_pd(paths.radiance[axis]);

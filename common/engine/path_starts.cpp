@@ -12,11 +12,13 @@
 
 namespace mcrt {
 
-void make_path_starts(const Camera& camera, const RenderSettings& settings, int y,
-                      RowSample& next, int count, PathStarts& starts) {
+void make_path_starts(const Camera& camera, const RenderSettings& settings, int y, RowSample& next,
+                      int count, PathStarts& starts) {
   static const bool avx2 = cpu_has_avx2();
-  if (avx2) make_path_starts_avx2(camera, settings, y, next, count, starts);
-  else make_path_starts_portable(camera, settings, y, next, count, starts);
+  if (avx2)
+    make_path_starts_avx2(camera, settings, y, next, count, starts);
+  else
+    make_path_starts_portable(camera, settings, y, next, count, starts);
 }
 
 // render()'s two lines, one sample at a time: Pcg32Lanes<1> is Rng's engine with its state in
@@ -70,8 +72,7 @@ namespace {
 // samples after them; they are never read.
 [[gnu::target("avx2")]] void make_path_starts_avx2(const Camera& camera,
                                                    const RenderSettings& settings, int y,
-                                                   RowSample& next, int count,
-                                                   PathStarts& starts) {
+                                                   RowSample& next, int count, PathStarts& starts) {
   const avx2::Pcg32Multiplier a = avx2::pcg32_multiplier(k_pcg32_multiplier);
   const Camera::Frame frame = camera.frame();
   const std::uint64_t row = static_cast<std::uint64_t>(y) * camera.width();
@@ -89,7 +90,8 @@ namespace {
     const __m256i streams = _mm256_load_si256(reinterpret_cast<const __m256i*>(stream));
     const __m256i golden = _mm256_set1_epi64x(static_cast<long long>(k_stream_offset));
     const __m256i seed = _mm256_set1_epi64x(static_cast<long long>(settings.seed));
-    const __m256i starting = mix64(_mm256_xor_si256(seed, mix64(_mm256_add_epi64(streams, golden))));
+    const __m256i starting =
+        mix64(_mm256_xor_si256(seed, mix64(_mm256_add_epi64(streams, golden))));
     const __m256i c = _mm256_or_si256(_mm256_slli_epi64(streams, 1), _mm256_set1_epi64x(1));
     const __m256i s0 = step(_mm256_add_epi64(starting, c), a, c);
     const __m256i s1 = step(s0, a, c);
@@ -116,7 +118,8 @@ namespace {
     for (int axis = 0; axis < 3; ++axis) {
       const __m256d direction = _mm256_mul_pd(d[axis], inverse_length);
       _mm256_store_pd(starts.origin[axis] + i,
-                      _mm256_add_pd(set(frame.eye[axis]), _mm256_mul_pd(set(frame.near), direction)));
+                      _mm256_add_pd(set(frame.eye[axis]),
+                                    _mm256_mul_pd(set(frame.near), direction)));
       _mm256_store_pd(starts.direction[axis] + i, direction);
     }
   }

@@ -34,8 +34,8 @@ struct RowSample {
 
 /// Up to k_capacity starts, entry i in array position i.
 struct PathStarts {
-  static constexpr int k_capacity = 64;  // 4 KiB: the block stays in the first-level cache
-  alignas(32) std::uint64_t state[k_capacity];      ///< PCG32's state after the two draws
+  static constexpr int k_capacity = 64;         // 4 KiB: the block stays in the first-level cache
+  alignas(32) std::uint64_t state[k_capacity];  ///< PCG32's state after the two draws
   alignas(32) std::uint64_t increment[k_capacity];  ///< PCG32's increment: 2 stream + 1
   alignas(32) double origin[3][k_capacity];
   alignas(32) double direction[3][k_capacity];
@@ -48,8 +48,8 @@ struct PathStarts {
 
 /// The starts of the `count` samples of row y from `next` on, in order (count <=
 /// k_capacity); `next` is moved past them. AVX2 where the processor has it.
-void make_path_starts(const Camera& camera, const RenderSettings& settings, int y,
-                      RowSample& next, int count, PathStarts& starts);
+void make_path_starts(const Camera& camera, const RenderSettings& settings, int y, RowSample& next,
+                      int count, PathStarts& starts);
 void make_path_starts_portable(const Camera& camera, const RenderSettings& settings, int y,
                                RowSample& next, int count, PathStarts& starts);
 void make_path_starts_avx2(const Camera& camera, const RenderSettings& settings, int y,

@@ -30,7 +30,11 @@ class RowOfPaths {
 
   RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
              int max_depth, int y)
-      : scene_(scene), camera_(camera), settings_(settings), max_depth_(max_depth), y_(y),
+      : scene_(scene),
+        camera_(camera),
+        settings_(settings),
+        max_depth_(max_depth),
+        y_(y),
         tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {
     // A diffuse scene spares shade_lanes the look at each lane's lobe.
     const bool lobes = std::ranges::any_of(scene.materials, &Material::has_lobe);
@@ -76,7 +80,8 @@ class RowOfPaths {
       return;
     }
     if (next_start_ == PathStarts::k_capacity) {
-      const auto left = static_cast<int>(std::min<std::uint64_t>(tasks_ - next_task_, PathStarts::k_capacity));
+      const auto left =
+          static_cast<int>(std::min<std::uint64_t>(tasks_ - next_task_, PathStarts::k_capacity));
       make_path_starts(camera_, settings_, y_, next_sample_, left, starts_);
       next_start_ = 0;
     }
@@ -137,12 +142,13 @@ RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
     return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
       return estimate_path_radiance(scene, ray, max_depth, rng, count);
     });
-  return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
-                                           std::uint64_t& non_finite) {
-    std::vector<Color> sums(camera.width(), Color(0.0));
-    RowOfPaths(scene, camera, settings, max_depth, y).trace(sums, rays, non_finite);
-    for (int x = 0; x < camera.width(); ++x) row[x] = sums[x] / static_cast<double>(settings.spp);
-  });
+  return render_rows(
+      camera, settings, [&](int y, Color* row, RayCount& rays, std::uint64_t& non_finite) {
+        std::vector<Color> sums(camera.width(), Color(0.0));
+        RowOfPaths(scene, camera, settings, max_depth, y).trace(sums, rays, non_finite);
+        for (int x = 0; x < camera.width(); ++x)
+          row[x] = sums[x] / static_cast<double>(settings.spp);
+      });
 }
 
 // ASSIGNMENT a4.1 END

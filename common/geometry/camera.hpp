@@ -12,8 +12,8 @@ struct CameraSpec {
   Vec3 eye{0.0};
   Vec3 direction{0.0, 0.0, -1.0};  ///< view direction (need not be unit)
   Vec3 up{0.0, 1.0, 0.0};
-  double vertical_fov = 0.7;       ///< radians, full angle
-  double near = 0.0;               ///< rays start this far from the eye along their direction
+  double vertical_fov = 0.7;  ///< radians, full angle
+  double near = 0.0;          ///< rays start this far from the eye along their direction
 };
 
 class Camera {

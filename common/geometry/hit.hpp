@@ -12,7 +12,7 @@ namespace mcrt {
 struct Hit {
   double t = 0.0;
   Vec3 point;
-  Vec3 normal;             ///< unit, facing the incoming ray (the side the ray arrived from)
+  Vec3 normal;  ///< unit, facing the incoming ray (the side the ray arrived from)
   std::uint32_t material = 0;
   /// The ray arrived on the side the surface's own normal points to: a sphere's outside, a
   /// quad's front. A dielectric reads it to know whether the ray enters the glass or leaves it.
@@ -36,8 +36,8 @@ inline void set_face_normal(Hit& hit, const Vec3& n, const Vec3& d) {
 /// relative to the coordinates' size: round-off in the hit point grows with them (the walls of
 /// the sphere Cornell box sit 1e5 away from their centres).
 inline Ray spawn_ray(const Hit& hit, const Vec3& direction) {
-  const double scale = 1.0 + std::max({std::abs(hit.point.x), std::abs(hit.point.y),
-                                       std::abs(hit.point.z)});
+  const double scale =
+      1.0 + std::max({std::abs(hit.point.x), std::abs(hit.point.y), std::abs(hit.point.z)});
   const double offset = 1e-7 * scale;
   const double side = glm::dot(direction, hit.normal) >= 0.0 ? 1.0 : -1.0;
   return {hit.point + side * offset * hit.normal, direction};

@@ -167,7 +167,7 @@ struct QuadLanes {
 };
 
 [[gnu::target("avx2")]] inline PlaneHits plane_hits(const QuadLanes& q, const __m256d origin[3],
-                                                   const __m256d direction[3]) {
+                                                    const __m256d direction[3]) {
   PlaneHits h;
   h.denom = dot(q.normal, direction);
   h.t = _mm256_div_pd(_mm256_sub_pd(q.plane_offset, dot(q.normal, origin)), h.denom);
@@ -184,8 +184,8 @@ struct QuadLanes {
 // differ in its sign.
 template <int Terms>
 [[gnu::target("avx2")]] inline __m256d dot_of_terms(const double v[3],
-                                                   const std::int32_t coordinate[3],
-                                                   const __m256d x[3]) {
+                                                    const std::int32_t coordinate[3],
+                                                    const __m256d x[3]) {
   __m256d sum = _mm256_mul_pd(_mm256_set1_pd(v[coordinate[0]]), x[coordinate[0]]);
   for (int k = 1; k < Terms; ++k)
     sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(v[coordinate[k]]), x[coordinate[k]]));
@@ -196,18 +196,18 @@ template <int Terms>
 // coordinates (QuadSet::Record::terms).
 template <int Terms, class Record>
 [[gnu::target("avx2")]] inline PlaneHits plane_hits_of_terms(const Record& r, const __m256d o[3],
-                                                            const __m256d d[3]) {
+                                                             const __m256d d[3]) {
   PlaneHits h;
   h.denom = dot_of_terms<Terms>(r.normal, r.coordinate[0], d);
   h.t = _mm256_div_pd(_mm256_sub_pd(_mm256_set1_pd(r.plane_offset),
                                     dot_of_terms<Terms>(r.normal, r.coordinate[0], o)),
                       h.denom);
-  h.a = _mm256_add_pd(
-      _mm256_sub_pd(dot_of_terms<Terms>(r.axis_a, r.coordinate[1], o), _mm256_set1_pd(r.offset_a)),
-      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_a, r.coordinate[1], d)));
-  h.b = _mm256_add_pd(
-      _mm256_sub_pd(dot_of_terms<Terms>(r.axis_b, r.coordinate[2], o), _mm256_set1_pd(r.offset_b)),
-      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_b, r.coordinate[2], d)));
+  h.a = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_a, r.coordinate[1], o),
+                                    _mm256_set1_pd(r.offset_a)),
+                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_a, r.coordinate[1], d)));
+  h.b = _mm256_add_pd(_mm256_sub_pd(dot_of_terms<Terms>(r.axis_b, r.coordinate[2], o),
+                                    _mm256_set1_pd(r.offset_b)),
+                      _mm256_mul_pd(h.t, dot_of_terms<Terms>(r.axis_b, r.coordinate[2], d)));
   return h;
 }
 
@@ -216,16 +216,17 @@ template <int Terms, class Record>
 // (t_min, best_t) and (a, b) lies in [0,1]^2. Each comparison is NaN-safe in the same way as
 // the plain one: !(|denom| < threshold), !(a < 0 || a > 1 || b < 0 || b > 1).
 [[gnu::target("avx2")]] inline void keep_nearer(const PlaneHits& h, __m256d parallel_threshold,
-                                               __m256d index, __m256d t_min, __m256d& best_t,
-                                               __m256d& best_index) {
+                                                __m256d index, __m256d t_min, __m256d& best_t,
+                                                __m256d& best_index) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   const __m256d facing = _mm256_cmp_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), h.denom),
                                        parallel_threshold, _CMP_NLT_UQ);
-  const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(h.t, t_min, _CMP_GT_OQ),
-                                         _mm256_cmp_pd(h.t, best_t, _CMP_LT_OQ));
-  const __m256d inside = _mm256_and_pd(
-      _mm256_and_pd(_mm256_cmp_pd(h.a, zero, _CMP_NLT_UQ), _mm256_cmp_pd(h.a, one, _CMP_NGT_UQ)),
-      _mm256_and_pd(_mm256_cmp_pd(h.b, zero, _CMP_NLT_UQ), _mm256_cmp_pd(h.b, one, _CMP_NGT_UQ)));
+  const __m256d in_range =
+      _mm256_and_pd(_mm256_cmp_pd(h.t, t_min, _CMP_GT_OQ), _mm256_cmp_pd(h.t, best_t, _CMP_LT_OQ));
+  const __m256d inside = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(h.a, zero, _CMP_NLT_UQ),
+                                                     _mm256_cmp_pd(h.a, one, _CMP_NGT_UQ)),
+                                       _mm256_and_pd(_mm256_cmp_pd(h.b, zero, _CMP_NLT_UQ),
+                                                     _mm256_cmp_pd(h.b, one, _CMP_NGT_UQ)));
   const __m256d closer = _mm256_and_pd(_mm256_and_pd(facing, in_range), inside);
   best_t = _mm256_blendv_pd(best_t, h.t, closer);
   best_index = _mm256_blendv_pd(best_index, index, closer);
@@ -239,10 +240,10 @@ template <int Terms, class Record>
 // either drop that axis's limit or make the lane miss. Both are safe: such a ray stays the pad
 // away from every quad of the group.
 [[gnu::target("avx2")]] inline unsigned lanes_meeting_boxes(const __m256d low[3],
-                                                           const __m256d high[3],
-                                                           const __m256d origin[3],
-                                                           const __m256d inverse_d[3],
-                                                           __m256d t_min, __m256d t_max) {
+                                                            const __m256d high[3],
+                                                            const __m256d origin[3],
+                                                            const __m256d inverse_d[3],
+                                                            __m256d t_min, __m256d t_max) {
   __m256d enter = t_min, leave = t_max;
   for (int axis = 0; axis < 3; ++axis) {
     const __m256d t_low = _mm256_mul_pd(_mm256_sub_pd(low[axis], origin[axis]), inverse_d[axis]);
@@ -256,10 +257,10 @@ template <int Terms, class Record>
 // Whether any of four rays meets box `b` of the boxes held coordinate by coordinate in `low`
 // and `high` (the four-ray search's test of a group).
 [[gnu::target("avx2")]] inline bool any_lane_meets_box(const std::vector<double> low[3],
-                                                      const std::vector<double> high[3],
-                                                      std::size_t b, const __m256d origin[3],
-                                                      const __m256d inverse_d[3], __m256d t_min,
-                                                      __m256d t_max) {
+                                                       const std::vector<double> high[3],
+                                                       std::size_t b, const __m256d origin[3],
+                                                       const __m256d inverse_d[3], __m256d t_min,
+                                                       __m256d t_max) {
   const __m256d low_lanes[3] = {_mm256_set1_pd(low[0][b]), _mm256_set1_pd(low[1][b]),
                                 _mm256_set1_pd(low[2][b])};
   const __m256d high_lanes[3] = {_mm256_set1_pd(high[0][b]), _mm256_set1_pd(high[1][b]),
@@ -280,12 +281,10 @@ template <int Terms, class Record>
                                                                Interval range) const {
   const __m256d origin[3] = {_mm256_set1_pd(ray.origin.x), _mm256_set1_pd(ray.origin.y),
                              _mm256_set1_pd(ray.origin.z)};
-  const __m256d direction[3] = {_mm256_set1_pd(ray.direction.x),
-                                _mm256_set1_pd(ray.direction.y),
+  const __m256d direction[3] = {_mm256_set1_pd(ray.direction.x), _mm256_set1_pd(ray.direction.y),
                                 _mm256_set1_pd(ray.direction.z)};
   const __m256d t_min = _mm256_set1_pd(range.min), one = _mm256_set1_pd(1.0);
-  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]),
-                                _mm256_div_pd(one, direction[1]),
+  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]), _mm256_div_pd(one, direction[1]),
                                 _mm256_div_pd(one, direction[2])};
   __m256d best_t = _mm256_set1_pd(range.max);
   __m256d best_index = _mm256_set1_pd(-1.0);  // indices as doubles: exact below 2^53
@@ -342,14 +341,12 @@ template <int Terms, class Record>
                                                          NearestLanes& nearest) const {
   const __m256d origin[3] = {_mm256_load_pd(rays.origin_x), _mm256_load_pd(rays.origin_y),
                              _mm256_load_pd(rays.origin_z)};
-  const __m256d direction[3] = {_mm256_load_pd(rays.direction_x),
-                                _mm256_load_pd(rays.direction_y),
+  const __m256d direction[3] = {_mm256_load_pd(rays.direction_x), _mm256_load_pd(rays.direction_y),
                                 _mm256_load_pd(rays.direction_z)};
   const __m256d t_low = _mm256_set1_pd(t_min), one = _mm256_set1_pd(1.0);
   __m256d best_t = _mm256_load_pd(nearest.t);
   __m256d best_index = _mm256_load_pd(nearest.index);
-  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]),
-                                _mm256_div_pd(one, direction[1]),
+  const __m256d inverse_d[3] = {_mm256_div_pd(one, direction[0]), _mm256_div_pd(one, direction[1]),
                                 _mm256_div_pd(one, direction[2])};
   for (const Run& run : runs_) {
     if (run.bounded &&
@@ -363,8 +360,8 @@ template <int Terms, class Record>
         case 2: h = plane_hits_of_terms<2>(r, origin, direction); break;
         default: h = plane_hits_of_terms<3>(r, origin, direction);
       }
-      keep_nearer(h, _mm256_set1_pd(r.parallel_threshold), _mm256_set1_pd(r.index), t_low,
-                  best_t, best_index);
+      keep_nearer(h, _mm256_set1_pd(r.parallel_threshold), _mm256_set1_pd(r.index), t_low, best_t,
+                  best_index);
     }
   }
   _mm256_store_pd(nearest.t, best_t);
@@ -377,8 +374,7 @@ QuadSet::Nearest QuadSet::nearest_avx2(const Ray& ray, Interval range) const {
   return nearest_portable(ray, range);
 }
 
-void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min,
-                                 NearestLanes& nearest) const {
+void QuadSet::nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const {
   nearest_lanes_portable(rays, t_min, nearest);
 }
 

@@ -56,7 +56,6 @@ class QuadSet : public NearestDispatch<QuadSet> {
   void nearest_lanes_avx2(const RayLanes& rays, double t_min, NearestLanes& nearest) const;
 
  private:
-
   /// Slots [begin, end) (whole blocks) holding quads first, first + 1, ..., first + count - 1,
   /// then padding: quads added one by one, or a group behind its box.
   struct Run {

@@ -68,7 +68,6 @@ void SphereSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
   }
 }
 
-
 #if MCRT_X86
 
 // The loop of nearest_portable on four spheres per instruction, each lane keeping its own
@@ -102,9 +101,9 @@ void SphereSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
     const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(det, zero));
     const __m256d near = _mm256_sub_pd(b, root), far = _mm256_add_pd(b, root);
     const __m256d t = _mm256_blendv_pd(far, near, _mm256_cmp_pd(near, t_min, _CMP_GT_OQ));
-    const __m256d closer = _mm256_and_pd(
-        _mm256_and_pd(_mm256_cmp_pd(det, zero, _CMP_GE_OQ), _mm256_cmp_pd(t, t_min, _CMP_GT_OQ)),
-        _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
+    const __m256d closer = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(det, zero, _CMP_GE_OQ),
+                                                       _mm256_cmp_pd(t, t_min, _CMP_GT_OQ)),
+                                         _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
     best_t = _mm256_blendv_pd(best_t, t, closer);
     best_index = _mm256_blendv_pd(best_index, index, closer);
     index = _mm256_add_pd(index, step);
@@ -113,7 +112,6 @@ void SphereSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
   if (nearest.index < 0.0) return {size_, range.max};
   return {static_cast<std::size_t>(nearest.index), nearest.t};
 }
-
 
 // nearest_portable's loop body with one sphere broadcast to the four lanes and a ray in each:
 // every lane does what the one-ray loop does, in the same order, so no lanes are merged at
@@ -136,21 +134,20 @@ void SphereSet::nearest_lanes_portable(const RayLanes& rays, double t_min,
     const __m256d oc2 =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ocx, ocx), _mm256_mul_pd(ocy, ocy)),
                       _mm256_mul_pd(ocz, ocz));
-    const __m256d det = _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(b, b), oc2),
-                                      _mm256_set1_pd(radius_squared_[i]));
+    const __m256d det =
+        _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(b, b), oc2), _mm256_set1_pd(radius_squared_[i]));
     const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(det, zero));
     const __m256d near = _mm256_sub_pd(b, root), far = _mm256_add_pd(b, root);
     const __m256d t = _mm256_blendv_pd(far, near, _mm256_cmp_pd(near, t_low, _CMP_GT_OQ));
-    const __m256d closer = _mm256_and_pd(
-        _mm256_and_pd(_mm256_cmp_pd(det, zero, _CMP_GE_OQ), _mm256_cmp_pd(t, t_low, _CMP_GT_OQ)),
-        _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
+    const __m256d closer = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(det, zero, _CMP_GE_OQ),
+                                                       _mm256_cmp_pd(t, t_low, _CMP_GT_OQ)),
+                                         _mm256_cmp_pd(t, best_t, _CMP_LT_OQ));
     best_t = _mm256_blendv_pd(best_t, t, closer);
     best_index = _mm256_blendv_pd(best_index, _mm256_set1_pd(static_cast<double>(i)), closer);
   }
   _mm256_store_pd(nearest.t, best_t);
   _mm256_store_pd(nearest.index, best_index);
 }
-
 
 #else
 

@@ -64,8 +64,7 @@ MonteCarloEstimate monte_carlo(F&& f, const Box& box, std::uint64_t n, Rng& rng)
   batch.dims = box.dims;
   double sum = 0.0, sum_of_squares = 0.0;
   for (std::uint64_t first = 0; first < n; first += k_point_batch) {
-    const auto count =
-        static_cast<std::size_t>(std::min<std::uint64_t>(k_point_batch, n - first));
+    const auto count = static_cast<std::size_t>(std::min<std::uint64_t>(k_point_batch, n - first));
     for (std::size_t j = 0; j < count; ++j) {
       double* x = batch.point(j);
       for (int axis = 0; axis < box.dims; ++axis)

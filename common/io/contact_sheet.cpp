@@ -29,8 +29,7 @@ void paste(Image& target, const Image& source, int x, int y) {
 }  // namespace
 
 Image make_contact_sheet(std::span<const LabelledImage> cells, const SheetLayout& layout) {
-  if (layout.columns < 1)
-    throw std::invalid_argument("contact sheet: columns must be at least 1");
+  if (layout.columns < 1) throw std::invalid_argument("contact sheet: columns must be at least 1");
   if (layout.gap < 0) throw std::invalid_argument("contact sheet: gap must not be negative");
   if (layout.label_scale < 1)
     throw std::invalid_argument("contact sheet: label_scale must be at least 1");

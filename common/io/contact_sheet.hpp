@@ -18,12 +18,12 @@ struct LabelledImage {
 };
 
 struct SheetLayout {
-  int columns = 1;          ///< cells per row; cells fill rows left to right, top to bottom
-  int gap = 4;              ///< pixels between cells and around the sheet
-  int label_scale = 2;      ///< font scale of the labels
-  Color background{0.0};    ///< linear RGB of the gaps and label bands
-  Color label_color{1.0};   ///< linear RGB of the label text
-  std::string title;        ///< optional line of text across the top of the sheet
+  int columns = 1;         ///< cells per row; cells fill rows left to right, top to bottom
+  int gap = 4;             ///< pixels between cells and around the sheet
+  int label_scale = 2;     ///< font scale of the labels
+  Color background{0.0};   ///< linear RGB of the gaps and label bands
+  Color label_color{1.0};  ///< linear RGB of the label text
+  std::string title;       ///< optional line of text across the top of the sheet
 };
 
 /// The images in a grid, each under a band holding its label. Cells are sized to the largest

@@ -37,7 +37,8 @@ std::string encode_png(const Image& image) {
   std::vector<unsigned char> rgb(image.pixels.size() * 3);
   for (std::size_t i = 0; i < image.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      rgb[3 * i + c] = static_cast<unsigned char>(std::lround(255.0 * srgb_encode(image.pixels[i][c])));
+      rgb[3 * i + c] =
+          static_cast<unsigned char>(std::lround(255.0 * srgb_encode(image.pixels[i][c])));
   std::string bytes;
   auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), size);
@@ -50,8 +51,8 @@ std::string encode_png(const Image& image) {
 
 std::string encode_pfm(const Image& image) {
   static_assert(std::endian::native == std::endian::little, "PFM writer assumes little-endian");
-  std::string bytes = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) +
-                      "\n-1.0\n";
+  std::string bytes =
+      "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
   const std::size_t header = bytes.size();
   bytes.resize(header + image.pixels.size() * 3 * sizeof(float));
   char* out = bytes.data() + header;

@@ -8,8 +8,8 @@
 
 namespace mcrt {
 
-Image labelled_grid(std::span<const Image> images, std::span<const std::string> labels,
-                    int factor, const SheetLayout& layout) {
+Image labelled_grid(std::span<const Image> images, std::span<const std::string> labels, int factor,
+                    const SheetLayout& layout) {
   if (images.size() != labels.size())
     throw std::invalid_argument("labelled_grid: one label per image");
   std::vector<Image> blown_up;
@@ -55,7 +55,8 @@ Image centre_detail_strip(std::span<const Image> images, std::span<const std::st
     }
   SheetLayout layout;
   layout.columns = static_cast<int>(images.size());
-  layout.title = fmt::format("the image centre ({}x{} pixels, x{}) {}", side, side, factor, title_end);
+  layout.title =
+      fmt::format("the image centre ({}x{} pixels, x{}) {}", side, side, factor, title_end);
   return labelled_grid(details, cell_labels, factor, layout);
 }
 

@@ -14,8 +14,8 @@ namespace mcrt {
 
 /// The images, each blown up `factor` times (nearest neighbour), in a contact sheet laid out
 /// by `layout`, image i under labels[i]. Throws std::invalid_argument if the counts differ.
-Image labelled_grid(std::span<const Image> images, std::span<const std::string> labels,
-                    int factor, const SheetLayout& layout);
+Image labelled_grid(std::span<const Image> images, std::span<const std::string> labels, int factor,
+                    const SheetLayout& layout);
 
 /// The same detail of every image side by side: the centred square a third of the shorter
 /// side wide, blown up to about 128 pixels, under labels[i]. The title names the detail, its

@@ -18,16 +18,15 @@ void prepare_output_dir(const fs::path& dir) {
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
     std::error_code ignored;
-    const bool dangling = fs::is_symlink(fs::symlink_status(dir, ignored)) &&
-                          !fs::exists(fs::status(dir, ignored));
+    const bool dangling =
+        fs::is_symlink(fs::symlink_status(dir, ignored)) && !fs::exists(fs::status(dir, ignored));
     throw IoError("cannot create output folder '" + dir.string() + "': " +
                   (dangling ? std::string("it is a symbolic link to nothing (a dangling link)")
                    : ec     ? ec.message()
                             : std::string("a file of that name is in the way")));
   }
   if (::access(dir.c_str(), W_OK) != 0)
-    throw IoError("cannot write to output folder '" + dir.string() + "': " +
-                  std::strerror(errno));
+    throw IoError("cannot write to output folder '" + dir.string() + "': " + std::strerror(errno));
 }
 
 void write_file_atomic(const fs::path& path, std::string_view bytes) {

@@ -129,11 +129,10 @@ std::string script_text(const Plot& p) {
   s << "set terminal pngcairo size " << p.width << "," << p.height
     << " enhanced font 'DejaVu Sans,11'\n"
     << "set output " << quote(p.name + ".png") << "\n"
-    << (p.multiplot ? draw : p.plot + "\n")
-    << "set terminal svg size " << p.width << "," << p.height << " enhanced dynamic\n"
+    << (p.multiplot ? draw : p.plot + "\n") << "set terminal svg size " << p.width << ","
+    << p.height << " enhanced dynamic\n"
     << "set output " << quote(p.name + ".svg") << "\n"
-    << draw
-    << "set output\n";
+    << draw << "set output\n";
   return s.str();
 }
 
@@ -174,7 +173,8 @@ struct GnuplotRun {
 GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& arguments) {
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
-    throw IoError("cannot run gnuplot: " + std::error_code(errno, std::generic_category()).message());
+    throw IoError("cannot run gnuplot: " +
+                  std::error_code(errno, std::generic_category()).message());
   posix_spawn_file_actions_t actions;
   ::posix_spawn_file_actions_init(&actions);
   ::posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
@@ -191,8 +191,8 @@ GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& argu
   sigemptyset(&defaults);
   sigaddset(&defaults, SIGXFSZ);  // ignored by the run (app/interrupt.cpp), not by gnuplot
   ::posix_spawnattr_setsigdefault(&attributes, &defaults);
-  ::posix_spawnattr_setflags(&attributes,
-                             POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
+  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP |
+                                              POSIX_SPAWN_SETSIGDEF);
   std::vector<std::string> words = {"gnuplot", "-d"};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
@@ -234,7 +234,8 @@ GnuplotRun run_gnuplot(const fs::path& dir, const std::vector<std::string>& argu
   }
   ::close(pipe_fds[0]);
   if (spawned != 0)
-    throw IoError("cannot run gnuplot: " + std::error_code(spawned, std::generic_category()).message());
+    throw IoError("cannot run gnuplot: " +
+                  std::error_code(spawned, std::generic_category()).message());
   while (::waitpid(child, &result.status, 0) < 0 && errno == EINTR) {
   }
   ::kill(-child, SIGKILL);  // whatever it left running in its group
@@ -277,7 +278,7 @@ bool gnuplot_can_draw(const fs::path& dir) {
     GnuplotRun probe;
     try {
       probe = run_gnuplot(dir, {"-e", "set terminal pngcairo; set terminal svg"});
-    } catch (const IoError& e) {  // it cannot be started (no process left under ulimit -u)
+    } catch (const IoError& e) {         // it cannot be started (no process left under ulimit -u)
       const std::string why = e.what();  // "cannot run gnuplot: <the system's reason>"
       return "it cannot be started (" + why.substr(why.find(": ") + 2) + ")";
     }
@@ -292,7 +293,8 @@ bool gnuplot_can_draw(const fs::path& dir) {
   if (problem) {
     static bool told = false;
     if (!told)
-      std::cerr << "note: gnuplot is installed but " << *problem << ", so no PNG/SVG plots were "
+      std::cerr << "note: gnuplot is installed but " << *problem
+                << ", so no PNG/SVG plots were "
                    "drawn; the .gp scripts and CSV files are written\n";
     told = true;
   }
@@ -320,8 +322,10 @@ PlotResult write_plot(const fs::path& dir, const Plot& plot) {
   const auto [message, only_warnings] = first_message(messages);
   std::string problem;
   if (drawn.timed_out)
-    problem = fmt::format("gnuplot did not finish {} within {} s (MCRT_GNUPLOT_TIMEOUT sets "
-                          "the limit)", script, gnuplot_time_limit_ms() / 1000);
+    problem = fmt::format(
+        "gnuplot did not finish {} within {} s (MCRT_GNUPLOT_TIMEOUT sets "
+        "the limit)",
+        script, gnuplot_time_limit_ms() / 1000);
   else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     problem = "gnuplot failed on " + script + ": " + message;
   else if (!messages.empty() && !only_warnings)

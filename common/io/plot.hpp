@@ -11,7 +11,7 @@
 namespace mcrt {
 
 struct Plot {
-  std::string name;      ///< file stem: NAME.gp, NAME.png, NAME.svg
+  std::string name;  ///< file stem: NAME.gp, NAME.png, NAME.svg
   std::string title;
   std::string x_label;
   std::string y_label;

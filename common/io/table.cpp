@@ -54,15 +54,16 @@ Table::Table(std::vector<Column> columns) : columns_(std::move(columns)) {
 
 void Table::add_row(std::vector<Cell> row) {
   if (row.size() != columns_.size())
-    throw std::logic_error(fmt::format("Table: a row of {} cells for {} columns", row.size(),
-                                       columns_.size()));
+    throw std::logic_error(
+        fmt::format("Table: a row of {} cells for {} columns", row.size(), columns_.size()));
   for (std::size_t i = 0; i < row.size(); ++i) {
     const Column& column = columns_[i];
     const bool fits = row[i].is_empty()                ? true
                       : column.kind == Column::integer ? row[i].is_integer()
-                      : column.kind == Column::real  ? !row[i].is_text()
-                                                     : row[i].is_text();
-    if (!fits) throw std::logic_error("Table: a cell of the wrong kind in column '" + column.name + "'");
+                      : column.kind == Column::real    ? !row[i].is_text()
+                                                       : row[i].is_text();
+    if (!fits)
+      throw std::logic_error("Table: a cell of the wrong kind in column '" + column.name + "'");
     if (column.kind == Column::real && row[i].is_integer()) row[i] = Cell(row[i].number());
   }
   rows_.push_back(std::move(row));

@@ -41,15 +41,15 @@ class Cell {
  public:
   Cell() = default;
   template <class T>
-    requires std::is_integral_v<T>
-  Cell(T value) {  // NOLINT: implicit, so rows read as {n, rmse, "name"}
+  requires std::is_integral_v<T> Cell(
+      T value) {  // NOLINT: implicit, so rows read as {n, rmse, "name"}
     if constexpr (std::is_signed_v<T>)
       value_ = static_cast<std::int64_t>(value);
     else
       value_ = static_cast<std::uint64_t>(value);
   }
-  Cell(double value) : value_(value) {}  // NOLINT
-  Cell(std::string value) : value_(std::move(value)) {}  // NOLINT
+  Cell(double value) : value_(value) {}                    // NOLINT
+  Cell(std::string value) : value_(std::move(value)) {}    // NOLINT
   Cell(const char* value) : value_(std::string(value)) {}  // NOLINT
 
   bool is_integer() const { return value_.index() == 1 || value_.index() == 2; }

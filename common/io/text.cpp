@@ -89,7 +89,8 @@ void draw_text(Image& image, int x, int y, std::string_view text, Color color, i
   const std::int64_t s = scale;
   for (std::size_t q = 0; q + 3 < vertices.size(); q += 4) {
     // Vertices 0 and 2 are opposite corners of an axis-aligned stroke, in whole font units.
-    const auto x0 = static_cast<std::int64_t>(vertices[q].x), y0 = static_cast<std::int64_t>(vertices[q].y);
+    const auto x0 = static_cast<std::int64_t>(vertices[q].x),
+               y0 = static_cast<std::int64_t>(vertices[q].y);
     const auto x1 = static_cast<std::int64_t>(vertices[q + 2].x);
     const auto y1 = static_cast<std::int64_t>(vertices[q + 2].y);
     const std::int64_t x_begin = std::max<std::int64_t>(x + std::min(x0, x1) * s, 0);

@@ -41,7 +41,8 @@ inline double plates_light_pdf(const VeachPlates& scene, const Vec3& x, const Ve
   for (std::size_t i = 0; i < scene.light_count(); ++i) {
     const Sphere& s = scene.lights[i];
     // w is in the cone of sphere i iff the line x + t w (t > 0) meets it (x outside it).
-    if (i == drawn_from || intersect_distance(s, Ray(x, w), {0.0, std::numeric_limits<double>::infinity()})) {
+    if (i == drawn_from ||
+        intersect_distance(s, Ray(x, w), {0.0, std::numeric_limits<double>::infinity()})) {
       pdf += pick * sphere_cone_pdf_solid_angle(s.center, s.radius, x);
     }
   }
@@ -79,7 +80,8 @@ inline GlossySample draw_light_sample(const VeachPlates& scene, const Hit& hit, 
   // Traced even when f = 0 (w below the plate): every sample costs the same rays, so equal
   // samples are equal rays for every strategy.
   const double le = traced_emission(scene, spawn_ray(hit, w), count);
-  s.f_le_cos = phong_brdf(material, w, wo, hit.normal) * le * std::max(0.0, glm::dot(w, hit.normal));
+  s.f_le_cos =
+      phong_brdf(material, w, wo, hit.normal) * le * std::max(0.0, glm::dot(w, hit.normal));
   return s;
   // ASSIGNMENT a6.3 END
 }
@@ -95,7 +97,8 @@ inline GlossySample draw_bsdf_sample(const VeachPlates& scene, const Hit& hit, c
   s.pdf_light = plates_light_pdf(scene, hit.point, w);
   // Traced even below the plate (f = 0 there): the same rays per sample as light sampling.
   const double le = traced_emission(scene, spawn_ray(hit, w), count);
-  s.f_le_cos = phong_brdf(material, w, wo, hit.normal) * le * std::max(0.0, glm::dot(w, hit.normal));
+  s.f_le_cos =
+      phong_brdf(material, w, wo, hit.normal) * le * std::max(0.0, glm::dot(w, hit.normal));
   return s;
 }
 

@@ -55,7 +55,7 @@ inline Color estimate_importance_path_radiance(const Scene& scene, Ray ray, int 
     if (bounce == max_depth) break;
 
     const Vec3 wo = -ray.direction;  // towards where the path came from
-    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+    if (material.is_delta()) {       // a mirror or glass: follow the one direction it sends light
       const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
       beta *= specular.weight;  // f_r cos / p of a delta: the tint
       if (beta == Color(0.0)) break;
@@ -95,8 +95,8 @@ inline double furnace_bounce_second_moment(const HemispherePdf& pdf, double albe
 
 /// Var[L] in the furnace with directions drawn from `pdf` (top of this file); 0 for the cosine
 /// pdf (to round-off, which the max clamps), +infinity when b is.
-inline double furnace_radiance_variance(const HemispherePdf& pdf, double albedo,
-                                        double emission, int max_depth) {
+inline double furnace_radiance_variance(const HemispherePdf& pdf, double albedo, double emission,
+                                        int max_depth) {
   if (max_depth == 0 || emission == 0.0) return 0.0;
   const double b = furnace_bounce_second_moment(pdf, albedo);
   if (std::isinf(b)) return b;

@@ -53,7 +53,8 @@ inline SphereLightPart sphere_light_part(const Sphere& s, const Emitter& e, cons
     if (glm::dot(to_x, to_x) < e.enclosure.radius * e.enclosure.radius) return SphereLightPart::cap;
   }
   const Vec3 to_x = x - s.center;
-  return glm::dot(to_x, to_x) > s.radius * s.radius ? SphereLightPart::cone : SphereLightPart::whole;
+  return glm::dot(to_x, to_x) > s.radius * s.radius ? SphereLightPart::cone
+                                                    : SphereLightPart::whole;
 }
 
 /// A point y on emitter `e` for the shading point x (see sphere_light_part), drawn by u.
@@ -64,7 +65,8 @@ inline LightPoint sample_emitter(const Scene& scene, const Emitter& e, const Vec
   }
   const Sphere& s = scene.spheres()[e.index];
   switch (sphere_light_part(s, e, x)) {
-    case SphereLightPart::cap: return sample_sphere_cap(s.center, s.radius, e.cap_axis, e.cap_height, u);
+    case SphereLightPart::cap:
+      return sample_sphere_cap(s.center, s.radius, e.cap_axis, e.cap_height, u);
     case SphereLightPart::cone: return sample_sphere_cone(s.center, s.radius, x, u);
     case SphereLightPart::whole: break;
   }

@@ -30,13 +30,13 @@ enum class Delta : std::uint8_t { none, mirror, dielectric };
 enum class FresnelModel : std::uint8_t { exact, schlick };
 
 struct Material {
-  Color albedo{0.0};    ///< diffuse reflectance rho in [0,1]^3
-  Color emission{0.0};  ///< emitted radiance Le
+  Color albedo{0.0};      ///< diffuse reflectance rho in [0,1]^3
+  Color emission{0.0};    ///< emitted radiance Le
   double specular = 0.0;  ///< rho_s of the Phong lobe (grey); 0: no lobe. albedo + rho_s <= 1
   double exponent = 1.0;  ///< the lobe's Phong exponent m in [1, 1e4]: 1 rough, 1e4 nearly a mirror
   Delta delta = Delta::none;  ///< mirror or dielectric: then albedo and the lobe are 0
-  Color tint{1.0};            ///< a delta's factor on what it reflects or transmits (smallpt: 0.999)
-  double ior = 1.5;           ///< dielectric: refractive index inside over outside (> 0)
+  Color tint{1.0};   ///< a delta's factor on what it reflects or transmits (smallpt: 0.999)
+  double ior = 1.5;  ///< dielectric: refractive index inside over outside (> 0)
   FresnelModel fresnel = FresnelModel::exact;  ///< dielectric: exact, or Schlick's for smallpt
 
   /// Lambertian BRDF f_r = rho / pi, independent of the directions: the diffuse part alone.

@@ -80,10 +80,9 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
     const Material& material = scene.material(*hit);
     if (material.is_emitter()) {  // Le reached by BSDF sampling: weight w_b (1 for the eye)
       // After a delta (pdf_bsdf < 0) light sampling could not have drawn this direction: 1.
-      const double w_b =
-          bounce == 0 || pdf_bsdf < 0.0
-              ? 1.0
-              : mis_weight(heuristic, pdf_bsdf, light_pdf_towards(scene, ray, *hit));
+      const double w_b = bounce == 0 || pdf_bsdf < 0.0
+                             ? 1.0
+                             : mis_weight(heuristic, pdf_bsdf, light_pdf_towards(scene, ray, *hit));
       radiance += beta * w_b * material.emission;
     }
     if (end.cut_at(bounce)) break;
@@ -106,8 +105,7 @@ inline Color estimate_mis_radiance(const Scene& scene, Ray ray, const PathEnd& e
     // Light sampling: f_r Le cos / p_l, weight w_l(p_l, p_b).
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes()) {
-      const double w_l =
-          mis_weight(heuristic, light.pdf_light, cosine_hemisphere_pdf(light.cos_x));
+      const double w_l = mis_weight(heuristic, light.pdf_light, cosine_hemisphere_pdf(light.cos_x));
       radiance += beta * w_l * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x /
                   light.pdf_light;
     }

@@ -62,7 +62,7 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
                                    RayCount& count) {
   // ASSIGNMENT a5.3 BEGIN needs=a4.1,a2.2 stub: (void)scene; (void)ray; (void)end; (void)rng; (void)count; NOT_IMPLEMENTED(estimate_nee_radiance);
   Color radiance(0.0);
-  Color beta(1.0);  // path weight: product of f_r cos / (p q_j) = rho / q_j so far
+  Color beta(1.0);           // path weight: product of f_r cos / (p q_j) = rho / q_j so far
   bool after_delta = false;  // the ray left a mirror or glass: no light sample could aim along it
   for (int bounce = 0;; ++bounce) {
     ++count.rays;
@@ -92,8 +92,8 @@ inline Color estimate_nee_radiance(const Scene& scene, Ray ray, const PathEnd& e
     // Direct light: f_r Le cos(theta_x) / p_w(wi), if the shadow ray reaches the light.
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes())
-      radiance += beta * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x /
-                  light.pdf_light;
+      radiance +=
+          beta * material.f_r(light.wi, wo, hit->normal) * light.le * light.cos_x / light.pdf_light;
 
     // Indirect light: one cosine-weighted direction, f_r cos / p (= rho on a diffuse surface).
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());

@@ -49,7 +49,7 @@ inline Color estimate_path_radiance(const Scene& scene, Ray ray, int max_depth, 
     if (bounce == max_depth) break;
 
     const Vec3 wo = -ray.direction;  // towards where the path came from
-    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+    if (material.is_delta()) {       // a mirror or glass: follow the one direction it sends light
       const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
       beta *= specular.weight;  // f_r cos / p of a delta: the tint
       if (beta == Color(0.0)) break;

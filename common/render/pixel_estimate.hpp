@@ -31,7 +31,8 @@ struct PixelEstimate {
 /// radiance(ray, rng) (a Color; it may draw from rng after u). Returns the per-channel mean
 /// and sqrt(s^2 / spp), s^2 the unbiased sample variance of average(radiance).
 template <class Radiance>
-PixelEstimate estimate_pixel(const Camera& camera, int x, int y, int spp, Radiance&& radiance, Rng& rng) {
+PixelEstimate estimate_pixel(const Camera& camera, int x, int y, int spp, Radiance&& radiance,
+                             Rng& rng) {
   // ASSIGNMENT a4.2 BEGIN stub: (void)camera; (void)x; (void)y; (void)spp; (void)radiance; (void)rng; NOT_IMPLEMENTED(estimate_pixel);
   // Welford's running mean and sum of squared deviations of the channel mean: no
   // cancellation when the mean is large against the spread.

@@ -47,10 +47,10 @@ inline Color incident_radiance(const Scene& scene, const Ray& ray, int depth,
   // ASSIGNMENT a3.1 BEGIN needs=a2.1 stub: (void)scene; (void)ray; (void)depth; (void)settings; (void)rng; (void)count; NOT_IMPLEMENTED(incident_radiance);
   ++count.rays;
   const std::optional<Hit> p = scene.closest_hit(ray);  // p = intersectScene(x, w)
-  if (!p) return Color(0.0);                             // the ray left the scene
+  if (!p) return Color(0.0);                            // the ray left the scene
   const Material& material = scene.material(*p);
-  Color L = material.emission;                           // L = p.emittedLight(-w)
-  if (depth == settings.max_depth) return L;             // the lecture's missing stopping rule
+  Color L = material.emission;                // L = p.emittedLight(-w)
+  if (depth == settings.max_depth) return L;  // the lecture's missing stopping rule
   const Frame frame(p->normal);
   const int N = settings.branching;
   for (int i = 0; i < N; ++i) {

@@ -20,8 +20,8 @@
 namespace mcrt {
 
 struct RenderSettings {
-  int spp = 1;                      ///< samples per pixel
-  std::uint64_t first_sample = 0;   ///< sample indices [first_sample, first_sample + spp)
+  int spp = 1;                     ///< samples per pixel
+  std::uint64_t first_sample = 0;  ///< sample indices [first_sample, first_sample + spp)
   std::uint64_t seed = 1;
   int threads = 1;
   ProgressBar* progress = nullptr;  ///< advanced by one per finished row, if given
@@ -32,7 +32,9 @@ struct RenderResult {
   std::uint64_t rays = 0;
   std::uint64_t non_finite_samples = 0;  ///< NaN or infinite estimates (kept, and counted)
   double seconds = 0.0;
-  double rays_per_second() const { return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0; }
+  double rays_per_second() const {
+    return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0;
+  }
 };
 
 /// The frame every image loop shares: the rows in parallel, row y traced by
@@ -40,7 +42,8 @@ struct RenderResult {
 /// counts its rays and non-finite estimates (in locals of its own thread, stored once per row);
 /// the totals summed, the time taken, the progress bar advanced by a row at a time.
 template <class TraceRow>
-RenderResult render_rows(const Camera& camera, const RenderSettings& settings, TraceRow&& trace_row) {
+RenderResult render_rows(const Camera& camera, const RenderSettings& settings,
+                         TraceRow&& trace_row) {
   const auto start = std::chrono::steady_clock::now();
   const int height = camera.height();
   RenderResult result;
@@ -68,21 +71,22 @@ RenderResult render_rows(const Camera& camera, const RenderSettings& settings, T
 
 template <class Estimator>
 RenderResult render(const Camera& camera, const RenderSettings& settings, Estimator&& estimate) {
-  return render_rows(camera, settings, [&](int y, Color* row, RayCount& rays,
-                                           std::uint64_t& non_finite) {
-    for (int x = 0; x < camera.width(); ++x) {
-      const std::uint64_t pixel = static_cast<std::uint64_t>(y) * camera.width() + x;
-      Color sum(0.0);
-      for (int s = 0; s < settings.spp; ++s) {
-        Rng rng(settings.seed, stream_index(pixel, settings.first_sample + s));
-        const Ray ray = camera.generate_ray(x, y, rng.uniform2());
-        const Color radiance = estimate(ray, rng, rays);
-        if (!is_finite(radiance)) ++non_finite;
-        sum += radiance;
-      }
-      row[x] = sum / static_cast<double>(settings.spp);
-    }
-  });
+  return render_rows(camera, settings,
+                     [&](int y, Color* row, RayCount& rays, std::uint64_t& non_finite) {
+                       for (int x = 0; x < camera.width(); ++x) {
+                         const std::uint64_t pixel =
+                             static_cast<std::uint64_t>(y) * camera.width() + x;
+                         Color sum(0.0);
+                         for (int s = 0; s < settings.spp; ++s) {
+                           Rng rng(settings.seed, stream_index(pixel, settings.first_sample + s));
+                           const Ray ray = camera.generate_ray(x, y, rng.uniform2());
+                           const Color radiance = estimate(ray, rng, rays);
+                           if (!is_finite(radiance)) ++non_finite;
+                           sum += radiance;
+                         }
+                         row[x] = sum / static_cast<double>(settings.spp);
+                       }
+                     });
 }
 
 }  // namespace mcrt

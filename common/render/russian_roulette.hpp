@@ -68,10 +68,10 @@ namespace mcrt {
 enum class RoulettePolicy { fixed, throughput };
 
 struct Roulette {
-  int min_depth = 3;                              ///< d: vertices 0..d-1 always go on
+  int min_depth = 3;  ///< d: vertices 0..d-1 always go on
   RoulettePolicy policy = RoulettePolicy::throughput;
-  double q = 0.8;                                 ///< fixed: the probability of going on
-  double floor = 0.05;                            ///< throughput: the least q
+  double q = 0.8;       ///< fixed: the probability of going on
+  double floor = 0.05;  ///< throughput: the least q
 };
 
 /// q_j for a path of weight beta: q (fixed) or clamp(max component of beta, floor, 1).
@@ -104,7 +104,7 @@ inline Color estimate_path_radiance_roulette(const Scene& scene, Ray ray, const 
     }
 
     const Vec3 wo = -ray.direction;  // towards where the path came from
-    if (material.is_delta()) {  // a mirror or glass: follow the one direction it sends light
+    if (material.is_delta()) {       // a mirror or glass: follow the one direction it sends light
       const BsdfSample specular = sample_delta(material, *hit, wo, rng.uniform());
       beta *= specular.weight;  // f_r cos / p of a delta: the tint
       if (beta == Color(0.0)) break;

@@ -21,7 +21,8 @@ std::uint32_t Scene::add_material(const Material& m) {
 
 void Scene::add_sphere(const Sphere& s) {
   if (materials[s.material].is_emitter())
-    emitters_.push_back({Emitter::sphere, spheres_.size(), Vec3(0, -1, 0), 2.0 * s.radius, false, false, {}});
+    emitters_.push_back(
+        {Emitter::sphere, spheres_.size(), Vec3(0, -1, 0), 2.0 * s.radius, false, false, {}});
   add_to_sphere_list(s);
 }
 
@@ -90,8 +91,10 @@ bool Scene::any_hit(const Ray& ray, Interval range) const {
 
 void Scene::hits_in_lanes(const ClosestLanes& nearest, const RayLanes& rays, HitLanes& hits) const {
   static const bool avx2 = cpu_has_avx2();
-  if (avx2) hits_in_lanes_avx2(nearest, rays, hits);
-  else hits_in_lanes_portable(nearest, rays, hits);
+  if (avx2)
+    hits_in_lanes_avx2(nearest, rays, hits);
+  else
+    hits_in_lanes_portable(nearest, rays, hits);
 }
 
 void Scene::hits_in_lanes_portable(const ClosestLanes& nearest, const RayLanes& rays,
@@ -145,10 +148,10 @@ namespace {
             of[2]->center_and_inverse_radius, of[3]->center_and_inverse_radius, c);
   transpose(of[0]->normal, of[1]->normal, of[2]->normal, of[3]->normal, q);
 
-  const __m256d is_quad = _mm256_cmp_pd(_mm256_load_pd(nearest.quad.index), _mm256_setzero_pd(),
-                                        _CMP_GE_OQ);
-  const __m256d lane_t = _mm256_blendv_pd(_mm256_load_pd(nearest.sphere.t),
-                                          _mm256_load_pd(nearest.quad.t), is_quad);
+  const __m256d is_quad =
+      _mm256_cmp_pd(_mm256_load_pd(nearest.quad.index), _mm256_setzero_pd(), _CMP_GE_OQ);
+  const __m256d lane_t =
+      _mm256_blendv_pd(_mm256_load_pd(nearest.sphere.t), _mm256_load_pd(nearest.quad.t), is_quad);
   const __m256d d[3] = {_mm256_load_pd(rays.direction_x), _mm256_load_pd(rays.direction_y),
                         _mm256_load_pd(rays.direction_z)};
   const __m256d o[3] = {_mm256_load_pd(rays.origin_x), _mm256_load_pd(rays.origin_y),
@@ -156,13 +159,14 @@ namespace {
   __m256d p[3], n[3];
   for (int axis = 0; axis < 3; ++axis) {
     p[axis] = _mm256_add_pd(o[axis], _mm256_mul_pd(lane_t, d[axis]));  // ray.at(t)
-    n[axis] = _mm256_blendv_pd(_mm256_mul_pd(_mm256_sub_pd(p[axis], c[axis]), c[3]), q[axis], is_quad);
+    n[axis] =
+        _mm256_blendv_pd(_mm256_mul_pd(_mm256_sub_pd(p[axis], c[axis]), c[3]), q[axis], is_quad);
   }
   // face_forward: n where n.d <= 0, else -n (the sign bit flipped). For a quad, n.d is the dot
   // of quad_face_material, whose back it meets where n.d > 0 (a sphere's back is its front).
-  const __m256d n_dot_d = _mm256_add_pd(
-      _mm256_add_pd(_mm256_mul_pd(n[0], d[0]), _mm256_mul_pd(n[1], d[1])),
-      _mm256_mul_pd(n[2], d[2]));
+  const __m256d n_dot_d =
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(n[0], d[0]), _mm256_mul_pd(n[1], d[1])),
+                    _mm256_mul_pd(n[2], d[2]));
   const __m256d facing = _mm256_cmp_pd(n_dot_d, _mm256_setzero_pd(), _CMP_LE_OQ);
   for (int axis = 0; axis < 3; ++axis) {
     const __m256d flipped = _mm256_xor_pd(n[axis], _mm256_set1_pd(-0.0));
@@ -176,7 +180,8 @@ namespace {
   const __m256d from_behind = _mm256_cmp_pd(n_dot_d, _mm256_setzero_pd(), _CMP_GT_OQ);
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(hits.material),
                       _mm256_castpd_si256(_mm256_blendv_pd(_mm256_castsi256_pd(front),
-                                                           _mm256_castsi256_pd(back), from_behind)));
+                                                           _mm256_castsi256_pd(back),
+                                                           from_behind)));
 }
 
 #else
@@ -220,12 +225,12 @@ void add_box(Scene& scene, Vec3 size, double angle, Vec3 offset, std::uint32_t m
   const Vec3 o = place({0, 0, 0});
   const Vec3 far = place(size);
   const Quad faces[] = {
-      {o, dx, dy, material},       // front
-      {o, dz, dy, material},       // left
-      {o, dx, dz, material},       // bottom
-      {far, -dx, -dy, material},   // back
-      {far, -dz, -dy, material},   // right
-      {far, -dx, -dz, material},   // top
+      {o, dx, dy, material},      // front
+      {o, dz, dy, material},      // left
+      {o, dx, dz, material},      // bottom
+      {far, -dx, -dy, material},  // back
+      {far, -dz, -dy, material},  // right
+      {far, -dx, -dz, material},  // top
   };
   scene.add_quad_group(faces);
 }
@@ -254,11 +259,11 @@ Scene make_cornell_box(double light_scale, int lamp_parts) {
 
   const double l = 555.0;
   // The camera looks along +z with y up, so x = 555 is on the left of the image.
-  scene.add_quad({{l, 0, 0}, {0, l, 0}, {0, 0, l}, red});     // left wall, x = 555
-  scene.add_quad({{0, 0, 0}, {0, l, 0}, {0, 0, l}, green});   // right wall, x = 0
-  scene.add_quad({{0, 0, 0}, {l, 0, 0}, {0, 0, l}, white});   // floor
-  scene.add_quad({{0, l, 0}, {l, 0, 0}, {0, 0, l}, white});   // ceiling
-  scene.add_quad({{0, 0, l}, {l, 0, 0}, {0, l, 0}, white});   // back wall
+  scene.add_quad({{l, 0, 0}, {0, l, 0}, {0, 0, l}, red});    // left wall, x = 555
+  scene.add_quad({{0, 0, 0}, {0, l, 0}, {0, 0, l}, green});  // right wall, x = 0
+  scene.add_quad({{0, 0, 0}, {l, 0, 0}, {0, 0, l}, white});  // floor
+  scene.add_quad({{0, l, 0}, {l, 0, 0}, {0, 0, l}, white});  // ceiling
+  scene.add_quad({{0, 0, l}, {l, 0, 0}, {0, l, 0}, white});  // back wall
   // The light, 130 x 105 (times s), centred at (278, 554, 279.5) just below the ceiling; edge
   // order makes its normal point down.
   const Vec3 lamp_centre(278, l - 1, 279.5), u(130 * light_scale, 0, 0), v(0, 0, 105 * light_scale);
@@ -297,14 +302,14 @@ Scene make_sphere_box(std::string name, const Material& left_ball, const Materia
   const Color le(12.0);
   const auto light = scene.add_material({Color(0.0), le});
   const Sphere spheres[] = {
-      {{1e5 + 1, 40.8, 81.6}, 1e5, left},                // left wall
-      {{-1e5 + 99, 40.8, 81.6}, 1e5, right},             // right wall
-      {{50, 40.8, 1e5}, 1e5, grey},                      // back wall
-      {{50, 40.8, -1e5 + 170}, 1e5, black},              // front wall
-      {{50, 1e5, 81.6}, 1e5, grey},                      // floor
-      {{50, -1e5 + 81.6, 81.6}, 1e5, grey},              // ceiling
-      {{27, 16.5, 47}, 16.5, left_ball_material},        // left ball (smallpt's mirror)
-      {{73, 16.5, 78}, 16.5, right_ball_material},       // right ball (smallpt's glass)
+      {{1e5 + 1, 40.8, 81.6}, 1e5, left},           // left wall
+      {{-1e5 + 99, 40.8, 81.6}, 1e5, right},        // right wall
+      {{50, 40.8, 1e5}, 1e5, grey},                 // back wall
+      {{50, 40.8, -1e5 + 170}, 1e5, black},         // front wall
+      {{50, 1e5, 81.6}, 1e5, grey},                 // floor
+      {{50, -1e5 + 81.6, 81.6}, 1e5, grey},         // ceiling
+      {{27, 16.5, 47}, 16.5, left_ball_material},   // left ball (smallpt's mirror)
+      {{73, 16.5, 78}, 16.5, right_ball_material},  // right ball (smallpt's glass)
   };
   for (const Sphere& s : spheres) scene.add_sphere(s);
   // The light: a 600-radius sphere whose bottom pokes 0.27 below the ceiling plane; the
@@ -312,8 +317,8 @@ Scene make_sphere_box(std::string name, const Material& left_ball, const Materia
   const double cap_height = 0.27;
   scene.add_sphere_light({{50, 681.6 - cap_height, 81.6}, 600, light}, 5);
   // smallpt's camera; its rays start 140 units from the eye along their direction.
-  scene.camera = {{50, 52, 295.6}, {0, -0.042612, -1}, {0, 1, 0}, 2.0 * std::atan(0.5135 / 2.0),
-                  140.0};
+  scene.camera = {
+      {50, 52, 295.6}, {0, -0.042612, -1}, {0, 1, 0}, 2.0 * std::atan(0.5135 / 2.0), 140.0};
   // The light is the cap of the 600-radius sphere below the ceiling (y = 81.6): height
   // h = 0.27, area 2 pi R h, nearly flat (15 times wider than deep). Its point light sits just
   // under the cap's lowest point with the far field of a flat light of that area facing down,

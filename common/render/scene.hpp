@@ -89,8 +89,7 @@ struct Scene {
   const Material& material(const Hit& hit) const { return materials[hit.material]; }
   /// The material of quad i's side that a ray of direction d meets.
   std::uint32_t quad_face_material(std::size_t i, const Vec3& d) const {
-    return glm::dot(quads_[i].normal(), d) > 0.0 ? quad_back_materials_[i]
-                                                 : quads_[i].material();
+    return glm::dot(quads_[i].normal(), d) > 0.0 ? quad_back_materials_[i] : quads_[i].material();
   }
   /// Le of emitter e's surface seen from direction `towards` (unit, from the surface to the
   /// viewer) at a point of outward normal n: 0 behind a one-sided emitter.
@@ -118,7 +117,8 @@ struct Scene {
       return hit;
     }
     if (sphere.index != sphere_set_.size())
-      return hit_at(spheres_[sphere.index], ray, sphere.t, sphere_set_.inverse_radius(sphere.index));
+      return hit_at(spheres_[sphere.index], ray, sphere.t,
+                    sphere_set_.inverse_radius(sphere.index));
     return std::nullopt;
   }
 

@@ -177,8 +177,7 @@ inline std::vector<PlateRegion> plate_regions(const VeachPlates& scene, int widt
   std::vector<PlateRegion> regions;
   for (std::size_t k = 0; k < scene.plate_count(); ++k) {
     const Quad& q = scene.plates[k];
-    const std::array<Vec3, 4> corners{q.corner(), q.corner() + q.edge_u(),
-                                      q.corner() + q.edge_v(),
+    const std::array<Vec3, 4> corners{q.corner(), q.corner() + q.edge_u(), q.corner() + q.edge_v(),
                                       q.corner() + q.edge_u() + q.edge_v()};
     double top = height, bottom = 0.0, left = 0.0, right = width;
     for (const Vec3& c : corners) {
@@ -186,15 +185,18 @@ inline std::vector<PlateRegion> plate_regions(const VeachPlates& scene, int widt
       top = std::min(top, p.y);
       bottom = std::max(bottom, p.y);
       // The plate's ends are slanted in the image: keep the columns inside both of them.
-      if (glm::dot(c - q.center(), q.edge_u()) < 0.0) left = std::max(left, p.x);
-      else right = std::min(right, p.x);
+      if (glm::dot(c - q.center(), q.edge_u()) < 0.0)
+        left = std::max(left, p.x);
+      else
+        right = std::min(right, p.x);
     }
     const double trim = 0.25 * (bottom - top);
     const int y0 = static_cast<int>(std::ceil(top + trim));
     const int y1 = std::max(y0 + 1, static_cast<int>(std::floor(bottom - trim)));
     std::vector<double> centres;
     for (std::size_t j = 0; j < scene.light_count(); ++j)
-      centres.push_back(project_to_pixel(scene.camera, width, height, mirror_highlight(scene, k, j)).x);
+      centres.push_back(
+          project_to_pixel(scene.camera, width, height, mirror_highlight(scene, k, j)).x);
     for (std::size_t j = 0; j < centres.size(); ++j) {
       const double from = j == 0 ? left : 0.5 * (centres[j - 1] + centres[j]);
       const double to = j + 1 == centres.size() ? right : 0.5 * (centres[j] + centres[j + 1]);

@@ -26,7 +26,7 @@ constexpr std::uint64_t permute_word(std::uint64_t x, std::uint64_t mask, std::u
                                      std::uint64_t k1, unsigned half) {
   x = ((x ^ k0) * 0xe817fb2d2d4ab1b3ULL) & mask;  // odd multiplier
   x ^= x >> half;
-  x = ((x + k1) * ((k0 >> 1) | 1)) & mask;         // an odd multiplier of the key's
+  x = ((x + k1) * ((k0 >> 1) | 1)) & mask;  // an odd multiplier of the key's
   x ^= x >> half;
   x = (x * 0x9e3779b97f4a7c15ULL) & mask;
   x ^= x >> half;

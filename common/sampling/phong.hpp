@@ -81,8 +81,8 @@ inline double phong_cos_power(double cos_alpha, double m) {
 /// surface (n . w > 0), else 0.
 inline double phong_brdf(const Phong& material, const Vec3& wi, const Vec3& wo, const Vec3& n) {
   if (!(glm::dot(n, wi) > 0.0 && glm::dot(n, wo) > 0.0)) return 0.0;
-  const double lobe = (material.m + 2.0) * k_inv_two_pi *
-                      phong_cos_power(phong_cos_alpha(wi, wo, n), material.m);
+  const double lobe =
+      (material.m + 2.0) * k_inv_two_pi * phong_cos_power(phong_cos_alpha(wi, wo, n), material.m);
   return material.rho_d * k_inv_pi + material.rho_s * lobe;
 }
 

@@ -80,7 +80,7 @@ struct LatinHypercubePoints {
 
 /// How a Sobol' set is randomised.
 enum class SobolScramble {
-  none,  ///< the plain net: deterministic, so an estimate from it is biased in general
+  none,       ///< the plain net: deterministic, so an estimate from it is biased in general
   xor_shift,  ///< a random digital shift (xor) per dimension: uniform points, the net kept
   owen,       ///< Owen's nested scramble: uniform points, the net kept, and Var = o(1/n)
 };
@@ -117,9 +117,10 @@ struct HaltonPoints {
 
   static constexpr unsigned k_max_dimensions = 32;
   static constexpr std::uint32_t prime(unsigned j) {
-    constexpr std::uint32_t primes[k_max_dimensions] = {
-        2,  3,  5,  7,  11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47,  53,
-        59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
+    constexpr std::uint32_t primes[k_max_dimensions] = {2,  3,   5,   7,   11,  13,  17,  19,
+                                                        23, 29,  31,  37,  41,  43,  47,  53,
+                                                        59, 61,  67,  71,  73,  79,  83,  89,
+                                                        97, 101, 103, 107, 109, 113, 127, 131};
     return primes[j];
   }
 
@@ -134,7 +135,7 @@ struct HaltonPoints {
       width /= base;
       value += permutation_element(digits % base, base, dimension_key + k) * width;
     }
-    value += hash_uniform(key, i, j) * width;  // uniform within the chosen interval
+    value += hash_uniform(key, i, j) * width;           // uniform within the chosen interval
     return value < 1.0 ? value : 0x1.fffffffffffffp-1;  // the rounding of the sum
   }
 };

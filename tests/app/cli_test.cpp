@@ -94,8 +94,8 @@ TEST(ParseRealListTest, SortsAndDropsDuplicates) {
 }
 
 TEST(ParseRealListTest, RejectsWhatIsNotAFiniteDecimalInRange) {
-  for (const char* text : {"", "0.5,,0.7", "nan", "inf", "0x1p-1", " 0.5", "0.5 ", "1", "0",
-                           "-0.5", "0.5.5", "abc", "1e999"})
+  for (const char* text : {"", "0.5,,0.7", "nan", "inf", "0x1p-1", " 0.5", "0.5 ", "1", "0", "-0.5",
+                           "0.5.5", "abc", "1e999"})
     EXPECT_NE(real_rejection(text).find("--q"), std::string::npos) << "'" << text << "'";
 }
 

@@ -56,8 +56,8 @@ enum class Until { Writing, Committed, Forgotten };
 
 // Sends `signal` to a run that has got as far as `until`, with a previous run (seed 1) in
 // --out; the run's line must match `line`, and --out must hold the run of `seed_left`.
-void expect_interrupted(const std::string& name, Until until, int signal,
-                        const std::string& line, int seed_left) {
+void expect_interrupted(const std::string& name, Until until, int signal, const std::string& line,
+                        int seed_left) {
   const fs::path dir = fresh_dir(name);
   finished_run(dir / "out", 1);
   EXPECT_EXIT(interrupted_run(dir / "out", 2, until, signal),
@@ -72,24 +72,26 @@ TEST(InterruptTest, ASignalWhileWritingKeepsThePreviousRunAndRemovesTheStagingFo
 }
 
 TEST(InterruptTest, ASignalAfterTheSwapSaysTheRunWasWritten) {
-  expect_interrupted("committed", Until::Committed, SIGINT,
-                     "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'",
-                     2);
+  expect_interrupted(
+      "committed", Until::Committed, SIGINT,
+      "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'", 2);
 }
 
 // The folder is forgotten just before main returns; a signal may still come before the
 // process ends, and it must not claim that nothing was written.
 TEST(InterruptTest, ASignalAfterTheFolderIsForgottenStillSaysTheRunWasWritten) {
-  expect_interrupted("forgotten", Until::Forgotten, SIGINT,
-                     "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'",
-                     2);
+  expect_interrupted(
+      "forgotten", Until::Forgotten, SIGINT,
+      "interrupt_test: interrupted by SIGINT; the run was already written to '.*out'", 2);
 }
 
 // Issue 34: SIGHUP (a closed terminal), SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM killed the run
 // without a word and left its staging folder.
 TEST(InterruptTest, EveryHandledSignalEndsTheRunLikeSigterm) {
-  for (const auto& [signal, name] : {std::pair{SIGHUP, "SIGHUP"}, {SIGQUIT, "SIGQUIT"},
-                                     {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"},
+  for (const auto& [signal, name] : {std::pair{SIGHUP, "SIGHUP"},
+                                     {SIGQUIT, "SIGQUIT"},
+                                     {SIGUSR1, "SIGUSR1"},
+                                     {SIGUSR2, "SIGUSR2"},
                                      {SIGALRM, "SIGALRM"}})
     expect_interrupted(std::string("handled_") + name, Until::Writing, signal,
                        std::string("interrupt_test: interrupted by ") + name +

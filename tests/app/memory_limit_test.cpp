@@ -47,7 +47,7 @@ TEST(MemoryLimitTest, AFailedAllocationNamesItsCause) {
 #endif
   mcrt::check_memory_limit({0.0, "nothing"}, "--width", "lower it");
   try {
-    void* p = ::operator new(std::size_t{1} << 50);
+    void* p = ::operator new (std::size_t{1} << 50);
     ::operator delete(p);
     FAIL() << "a petabyte was allocated";
   } catch (const std::bad_alloc& e) {
@@ -77,8 +77,8 @@ std::filesystem::path cgroup_tree(const std::string& name,
 }
 
 TEST(CgroupLimitTest, VersionTwoLeavesMaxLessCurrent) {
-  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("v2", {{"memory.max", "1000000\n"},
-                                                    {"memory.current", "250000\n"}})),
+  EXPECT_EQ(mcrt::left_in_cgroup(
+                cgroup_tree("v2", {{"memory.max", "1000000\n"}, {"memory.current", "250000\n"}})),
             750000.0);
   EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("v2_unlimited", {{"memory.max", "max\n"},
                                                               {"memory.current", "250000\n"}})),
@@ -95,8 +95,8 @@ TEST(CgroupLimitTest, VersionOneIsReadToo) {
 TEST(CgroupLimitTest, NoLimitOrAnUnreadableOneIsInfinity) {
   EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("none", {})), HUGE_VAL);
   EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("half", {{"memory.max", "1000000\n"}})), HUGE_VAL);
-  EXPECT_EQ(mcrt::left_in_cgroup(cgroup_tree("used_up", {{"memory.max", "1000\n"},
-                                                         {"memory.current", "5000\n"}})),
+  EXPECT_EQ(mcrt::left_in_cgroup(
+                cgroup_tree("used_up", {{"memory.max", "1000\n"}, {"memory.current", "5000\n"}})),
             0.0);
 }
 

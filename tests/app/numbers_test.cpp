@@ -57,8 +57,8 @@ TEST(WholeNumberTest, SeedsRunFromZeroToTwoToTheSixtyFourMinusOneAndNoFurther) {
 }
 
 TEST(WholeNumberTest, HexSignsSpacesPointsAndTrailingTextAreRejected) {
-  for (const char* text : {"0x10", "0X10", "+1", "-0", " 1", "1 ", "1.0", "1e3", "1,2", "12abc",
-                           "", "ten", "\t7", "1_000"})
+  for (const char* text : {"0x10", "0X10", "+1", "-0", " 1", "1 ", "1.0", "1e3", "1,2", "12abc", "",
+                           "ten", "\t7", "1_000"})
     EXPECT_NE(seed_rejection(text), "") << "'" << text << "'";
 }
 
@@ -101,9 +101,9 @@ TEST(RealNumberTest, OutOfRangeIsRejectedNotClamped) {
 TEST(NumberMessageTest, EveryMessageIsOneLineUnder200CharactersNamingTheFlag) {
   const std::string long_text(5000, '7');
   std::vector<std::string> messages;
-  for (const std::string& text : {std::string("-1"), std::string("18446744073709551616"),
-                                  std::string("0x10"), long_text, std::string("a\nb"),
-                                  std::string(300, 'x')})
+  for (const std::string& text :
+       {std::string("-1"), std::string("18446744073709551616"), std::string("0x10"), long_text,
+        std::string("a\nb"), std::string(300, 'x')})
     messages.push_back(seed_rejection(text));
   for (const std::string& text : {std::string("nan"), std::string("inf"), std::string("1e400"),
                                   std::string(300, '9') + "e9", std::string("x\r\ny")})
@@ -142,8 +142,8 @@ TEST(AddNumberOptionTest, ParsesIntoTheVariableAndRefusesWithTheFlagsName) {
   EXPECT_EQ(mcrt::flags_json(app)["width"], "640");
   EXPECT_EQ(mcrt::flags_json(app)["albedo"], "0.5");
   // CLI11 takes the arguments reversed.
-  app.parse(std::vector<std::string>{"1e0", "--albedo", "010", "--width",
-                                     "18446744073709551615", "--seed"});
+  app.parse(std::vector<std::string>{"1e0", "--albedo", "010", "--width", "18446744073709551615",
+                                     "--seed"});
   EXPECT_EQ(seed, k_most);
   EXPECT_EQ(width, 10);
   EXPECT_EQ(albedo, 1.0);

@@ -253,7 +253,7 @@ TEST(ReferenceCacheTest, RunningOutOfDescriptorsNeverDeletesAValidEntry) {
   const mcrt::ReferenceSpec spec = tiny_spec();
   const mcrt::Reference first = mcrt::load_or_render_reference(dir, spec);
   const std::string pfm = read_text(dir / (mcrt::reference_stem(spec) + ".pfm"));
-  rlimit saved {};
+  rlimit saved{};
   ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &saved), 0);
   // Under the sanitizers, UBSan's vptr check tests memory through a pipe of its own: with
   // fewer than two descriptors free it reports a valid exception object as invalid. Those

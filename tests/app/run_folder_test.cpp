@@ -207,7 +207,8 @@ fs::path staging_like(const fs::path& dir, const std::string& name) {
 TEST(RunFolderTest, OnlyAnUnlockedStagingFolderOfOursIsRemoved) {
   const fs::path dir = fresh_dir("stale");
   const fs::path killed = staging_like(dir, mcrt::staging_name("out", "00000000deadbeef"));
-  const fs::path set_aside = staging_like(dir, mcrt::staging_name("o", "00000000deadbeef") + "-previous");
+  const fs::path set_aside =
+      staging_like(dir, mcrt::staging_name("o", "00000000deadbeef") + "-previous");
   // A live run's, whatever its pid says: its manifest is locked (flock conflicts between two
   // opens even in one process, as it does between namespaces).
   const fs::path living = staging_like(dir, mcrt::staging_name("out", "0000000000000001"));
@@ -260,7 +261,8 @@ TEST(RunFolderTest, AFolderOthersCanWriteIsRefusedAndKept) {
   const fs::path dir = fresh_dir("shared");
   finished_run(dir / "shared", "a.txt", "a");
   ASSERT_EQ(::chmod((dir / "shared").c_str(), 03777), 0);
-  const std::string refusal = message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "shared"); });
+  const std::string refusal =
+      message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "shared"); });
   EXPECT_NE(refusal.find("--out"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("other users"), std::string::npos) << refusal;
   EXPECT_EQ(read_text(dir / "shared" / "a.txt"), "a");
@@ -302,7 +304,8 @@ TEST(RunFolderTest, AnotherUsersFolderIsRefusedAndKept) {
   fs::create_directory(dir / "dropbox");
   ASSERT_EQ(::chown((dir / "dropbox").c_str(), k_other, k_other), 0);
   ASSERT_EQ(::chmod((dir / "dropbox").c_str(), 0755), 0);
-  const std::string refusal = message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox"); });
+  const std::string refusal =
+      message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox"); });
   EXPECT_NE(refusal.find("another user"), std::string::npos) << refusal;
   EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox" / "out"); }), "");
   EXPECT_NE(message_of<mcrt::UsageError>([&] { mcrt::RunFolder f(dir / "dropbox" / "a" / "b"); }),
@@ -324,7 +327,8 @@ TEST(RunFolderTest, ADanglingLinkAndAFileAreNamedAsSuch) {
       message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "link"); });
   EXPECT_NE(dangling.find("dangling"), std::string::npos) << dangling;
   write_text(dir / "file", "x");
-  const std::string file = message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "file"); });
+  const std::string file =
+      message_of<mcrt::UsageError>([&] { mcrt::RunFolder folder(dir / "file"); });
   EXPECT_NE(file.find("is a file"), std::string::npos) << file;
   EXPECT_EQ(entries(dir), 2);
 }

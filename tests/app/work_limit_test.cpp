@@ -27,7 +27,9 @@ std::string refusal(const Refuse& refuse) {
 TEST(RayLimitTest, AcceptsUpToTheLimitAndRefusesJustAboveIt) {
   const double limit = 2e9;
   auto check = [&](double rays) {
-    return refusal([&] { mcrt::check_ray_limit({rays, "rays"}, limit, "--spp", 2, "lower --spp"); });
+    return refusal([&] {
+      mcrt::check_ray_limit({rays, "rays"}, limit, "--spp", 2, "lower --spp");
+    });
   };
   EXPECT_EQ(check(0.0), "");
   EXPECT_EQ(check(limit), "");  // the limit itself is allowed

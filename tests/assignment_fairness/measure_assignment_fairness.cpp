@@ -55,9 +55,10 @@ using namespace mcrt::testing::assignment;
 
 namespace {
 
-const Chapter k_program{"measure_assignment_fairness",
-                        "Measures the assignment grading's fairness: each statistical check's single-seed p-values "
-                        "on the solution (false failures, uniformity) and on every known bug (detection)."};
+const Chapter k_program{
+    "measure_assignment_fairness",
+    "Measures the assignment grading's fairness: each statistical check's single-seed p-values "
+    "on the solution (false failures, uniformity) and on every known bug (detection)."};
 
 struct Options {
   CommonOptions common;
@@ -66,8 +67,8 @@ struct Options {
   int bug_seeds = 20;      // per known bug: all 20 rejecting puts its single-seed rate above 0.83
   int variant_seeds = 20;  // per point of a hidden test's variant grid (26 and 176 points)
   std::filesystem::path variants;  // key.py --hidden-grid's file; empty: no variant rows
-  std::string filter;      // only the rows whose name contains this (a longer look at one check)
-  bool quick = false;      // 20, 3, 3 and 1 seeds: seconds, for the smoke test
+  std::string filter;  // only the rows whose name contains this (a longer look at one check)
+  bool quick = false;  // 20, 3, 3 and 1 seeds: seconds, for the smoke test
 };
 
 // The first seed: far above the grading seeds (1009, 2029, 3037) and the hidden tests' own.
@@ -94,15 +95,16 @@ HiddenGrid read_hidden_grid(const std::filesystem::path& path) {
   if (!in) throw UsageError(fmt::format("--variants {}: cannot be read", path.string()));
   const Json j = Json::parse(in, nullptr, false);
   const auto list = [&](const char* a, const char* name) {
-    if (!j.is_object() || !j.contains(a) || !j[a].is_object() || !j[a].contains(name) || !j[a][name].is_array() ||
-        j[a][name].empty())
-      throw UsageError(fmt::format("--variants {}: needs a non-empty list {}.{} (the file key.py --hidden-grid writes)",
-                                   path.string(), a, name));
+    if (!j.is_object() || !j.contains(a) || !j[a].is_object() || !j[a].contains(name) ||
+        !j[a][name].is_array() || j[a][name].empty())
+      throw UsageError(fmt::format(
+          "--variants {}: needs a non-empty list {}.{} (the file key.py --hidden-grid writes)",
+          path.string(), a, name));
     std::vector<double> values;
     for (const Json& v : j[a][name]) {
       if (!v.is_number() || !(v.get<double>() > 0.0 && v.get<double>() < 1.0))
-        throw UsageError(fmt::format("--variants {}: {}.{} holds {}, not a number in (0, 1)", path.string(), a, name,
-                                     v.dump()));
+        throw UsageError(fmt::format("--variants {}: {}.{} holds {}, not a number in (0, 1)",
+                                     path.string(), a, name, v.dump()));
       values.push_back(v.get<double>());
     }
     return values;
@@ -116,16 +118,38 @@ std::vector<Row> rows_of(const Options& o, const HiddenGrid& grid) {
   for (MeasuredCheck& c : hidden_variant_checks(subject(), grid)) checks.push_back(std::move(c));
   for (MeasuredCheck& c : checks) {
     const std::size_t points = variant_points(c.name, grid);
-    const std::size_t n = points > 0 ? points * static_cast<std::size_t>(o.variant_seeds)
-                                     : static_cast<std::size_t>(c.region ? o.region_seeds : o.seeds);
+    const std::size_t n = points > 0
+                              ? points * static_cast<std::size_t>(o.variant_seeds)
+                              : static_cast<std::size_t>(c.region ? o.region_seeds : o.seeds);
     if (c.name.find(o.filter) == std::string::npos) continue;
-    rows.push_back({false, c.name, c.test, c.name, c.alpha, c.majority, true, n, c.region, std::move(c.p_value), {}, {}});
+    rows.push_back({false,
+                    c.name,
+                    c.test,
+                    c.name,
+                    c.alpha,
+                    c.majority,
+                    true,
+                    n,
+                    c.region,
+                    std::move(c.p_value),
+                    {},
+                    {}});
   }
   for (MeasuredBug& b : known_bugs()) {
     if (b.name.find(o.filter) == std::string::npos) continue;
     const std::size_t n = b.p_value ? static_cast<std::size_t>(o.bug_seeds) : 1;
-    rows.push_back({true, b.name, b.test, b.check, k_seed_alpha, true, b.expected, n, b.region, std::move(b.p_value),
-                    std::move(b.fails), {}});
+    rows.push_back({true,
+                    b.name,
+                    b.test,
+                    b.check,
+                    k_seed_alpha,
+                    true,
+                    b.expected,
+                    n,
+                    b.region,
+                    std::move(b.p_value),
+                    std::move(b.fails),
+                    {}});
   }
   return rows;
 }
@@ -148,15 +172,24 @@ std::vector<ThresholdRow> threshold_rows_of(const Options& o) {
     };
   };
   const auto n = static_cast<std::size_t>(o.region_seeds);
-  std::vector<ThresholdRow> rows{{"a6_efficiency", "a6.A6.Task3MisBeatsEachStrategyAtEqualRays", false, n,
-           [](std::uint64_t seed) {
-             std::size_t where = 0;
-             return mis_variance_ratio(subject(), A6Strategy::mis_balance, seed, where);
-           },
-           {}},
-          {"a6_light_sampling_passed_off_as_mis", diagnosis_test("A6LightSamplingPassedOffAsMis"), true,
-           static_cast<std::size_t>(o.bug_seeds), ratio_of(light_sampling_as_mis()), {}}};
-  std::erase_if(rows, [&](const ThresholdRow& t) { return t.name.find(o.filter) == std::string::npos; });
+  std::vector<ThresholdRow> rows{{"a6_efficiency",
+                                  "a6.A6.Task3MisBeatsEachStrategyAtEqualRays",
+                                  false,
+                                  n,
+                                  [](std::uint64_t seed) {
+                                    std::size_t where = 0;
+                                    return mis_variance_ratio(subject(), A6Strategy::mis_balance,
+                                                              seed, where);
+                                  },
+                                  {}},
+                                 {"a6_light_sampling_passed_off_as_mis",
+                                  diagnosis_test("A6LightSamplingPassedOffAsMis"),
+                                  true,
+                                  static_cast<std::size_t>(o.bug_seeds),
+                                  ratio_of(light_sampling_as_mis()),
+                                  {}}};
+  std::erase_if(rows,
+                [&](const ThresholdRow& t) { return t.name.find(o.filter) == std::string::npos; });
   return rows;
 }
 
@@ -193,8 +226,10 @@ void measure(std::vector<Row>& rows, std::vector<ThresholdRow>& thresholds, cons
 Json threshold_json(const ThresholdRow& t) {
   std::vector<double> sorted = t.ratios;
   std::sort(sorted.begin(), sorted.end());
-  const auto above = static_cast<std::size_t>(
-      std::count_if(sorted.begin(), sorted.end(), [](double r) { return !(r <= k_a6_variance_factor); }));
+  const auto above =
+      static_cast<std::size_t>(std::count_if(sorted.begin(), sorted.end(), [](double r) {
+        return !(r <= k_a6_variance_factor);
+      }));
   return {{"test", t.test},
           {"known_bug", t.bug},
           {"limit", k_a6_variance_factor},
@@ -216,7 +251,8 @@ Json variant_json(const Row& row, std::size_t points, std::uint64_t first_seed) 
   }
   double low = 1.0, high = 0.0;
   for (std::size_t k = 0; k < points; ++k) {
-    const double f = static_cast<double>(below5[k]) / static_cast<double>(std::max<std::size_t>(seeds[k], 1));
+    const double f =
+        static_cast<double>(below5[k]) / static_cast<double>(std::max<std::size_t>(seeds[k], 1));
     low = std::min(low, f), high = std::max(high, f);
   }
   return {{"points", points},
@@ -251,14 +287,16 @@ Table fairness_table(const std::vector<Row>& rows) {
            {"majority_detection_lower_95", Column::real, 6}});
   for (const Row& row : rows) {
     const bool exact = !row.p_value;
-    const std::string verdict = exact ? "exact"
+    const std::string verdict = exact          ? "exact"
                                 : row.majority ? fmt::format("2 of 3 seeds below {}", row.alpha)
                                                : fmt::format("1 fixed seed below {}", row.alpha);
     // Cell by cell: one initializer list of cells with empty ones trips a false
     // -Wmaybe-uninitialized in g++ 12.
     std::vector<Cell> cells;
     const auto put = [&cells](Cell c) { cells.push_back(std::move(c)); };
-    const auto blank = [&put](int n) { for (int i = 0; i < n; ++i) put(Cell{}); };
+    const auto blank = [&put](int n) {
+      for (int i = 0; i < n; ++i) put(Cell{});
+    };
     put(row.bug ? "bug" : "check");
     put(row.name);
     put(row.test);
@@ -298,9 +336,11 @@ Table fairness_table(const std::vector<Row>& rows) {
 /// What the README quotes: the checks graded by a majority of three, pooled, and the bugs.
 Json summary_of(const std::vector<Row>& rows) {
   std::uint64_t checks = 0, p_values = 0, below_alpha = 0, region_checks = 0, hidden = 0;
-  double low5 = 1.0, high5 = 0.0, low1 = 1.0, high1 = 0.0, min_p = 1.0, min_ks_p = 1.0, hidden_min_p = 1.0;
+  double low5 = 1.0, high5 = 0.0, low1 = 1.0, high1 = 0.0, min_p = 1.0, min_ks_p = 1.0,
+         hidden_min_p = 1.0;
   double min_ks_p_without_regions = 1.0;
-  std::uint64_t bugs = 0, bugs_detected = 0, exact_bugs = 0, exact_detected = 0, undetected_expected = 0;
+  std::uint64_t bugs = 0, bugs_detected = 0, exact_bugs = 0, exact_detected = 0,
+                undetected_expected = 0;
   double bug_max_p = 0.0;
   for (const Row& row : rows) {
     if (!row.bug) {
@@ -336,7 +376,8 @@ Json summary_of(const std::vector<Row>& rows) {
       undetected_expected += !all;
     }
   }
-  const double pooled_upper = binomial_confidence_interval(below_alpha, p_values, k_bound_level).high;
+  const double pooled_upper =
+      binomial_confidence_interval(below_alpha, p_values, k_bound_level).high;
   Json s;
   s["majority_checks"] = checks;
   s["majority_region_checks"] = region_checks;
@@ -375,14 +416,17 @@ std::string p_values_csv(const std::vector<Row>& rows, std::uint64_t first_seed)
 }
 
 /// fairness.json: the flags, the grading rule, the summary, and every row by name.
-Json json_of(const CLI::App& app, const Options& o, const Table& table, const std::vector<Row>& rows,
-             const std::vector<ThresholdRow>& thresholds, const HiddenGrid& grid) {
+Json json_of(const CLI::App& app, const Options& o, const Table& table,
+             const std::vector<Row>& rows, const std::vector<ThresholdRow>& thresholds,
+             const HiddenGrid& grid) {
   Json j;
   j["program"] = k_program.name;
   j["first_seed"] = o.common.seed;
   j["flags"] = flags_json(app);
   // the counts run (--quick replaces the flags' values)
-  j["seeds"] = {{"check", o.seeds}, {"region_check", o.region_seeds}, {"bug", o.bug_seeds},
+  j["seeds"] = {{"check", o.seeds},
+                {"region_check", o.region_seeds},
+                {"bug", o.bug_seeds},
                 {"variant_point", o.variant_seeds}};
   j["grading"] = {{"seeds", k_seeds}, {"alpha", k_seed_alpha}};
   j["summary"] = summary_of(rows);
@@ -409,15 +453,18 @@ void run(const CLI::App& app, Options o) {
   if (o.quick) o.seeds = 20, o.region_seeds = 3, o.bug_seeds = 3, o.variant_seeds = 1;
   const HiddenGrid grid = o.variants.empty() ? HiddenGrid{} : read_hidden_grid(o.variants);
   const std::size_t largest_grid = std::max(grid.a4_albedo.size(), grid.a5_points());
-  const auto most = std::max(static_cast<std::uint64_t>(std::max({o.seeds, o.region_seeds, o.bug_seeds})),
-                             static_cast<std::uint64_t>(largest_grid) * static_cast<std::uint64_t>(o.variant_seeds));
+  const auto most =
+      std::max(static_cast<std::uint64_t>(std::max({o.seeds, o.region_seeds, o.bug_seeds})),
+               static_cast<std::uint64_t>(largest_grid) *
+                   static_cast<std::uint64_t>(o.variant_seeds));
   if (o.common.seed > UINT64_MAX - most)
     throw UsageError(fmt::format("--seed: {} + {} seeds passes 2^64", o.common.seed, most));
   for (std::uint64_t g : k_grading_seeds)
     if (g >= o.common.seed && g < o.common.seed + most)
-      throw UsageError(fmt::format("--seed: the seeds {} to {} include the grading seed {}; the measurement needs "
-                                   "seeds the tests do not use (the default starts at {})",
-                                   o.common.seed, o.common.seed + most - 1, g, k_first_seed));
+      throw UsageError(fmt::format(
+          "--seed: the seeds {} to {} include the grading seed {}; the measurement needs "
+          "seeds the tests do not use (the default starts at {})",
+          o.common.seed, o.common.seed + most - 1, g, k_first_seed));
   set_failure_reports(false);  // the bugs fail by design: their heat maps would only be noise
   std::vector<Row> rows = rows_of(o, grid);
   std::vector<ThresholdRow> thresholds = threshold_rows_of(o);
@@ -428,8 +475,10 @@ void run(const CLI::App& app, Options o) {
   const Json json = json_of(app, o, table, rows, thresholds, grid);
   write_json(o.common.dir / "fairness.json", json);
   if (!o.common.quiet) {
-    std::fputs(table.console({"name", "seeds", "fraction_below_5_percent", "fraction_below_1_percent", "below_alpha",
-                              "min_p", "ks_p", "rejected_seeds", "max_p"})
+    std::fputs(table
+                   .console({"name", "seeds", "fraction_below_5_percent",
+                             "fraction_below_1_percent", "below_alpha", "min_p", "ks_p",
+                             "rejected_seeds", "max_p"})
                    .c_str(),
                stdout);
     std::printf("%s\n%s\n%s\n", json["summary"].dump(1).c_str(), json["variants"].dump(1).c_str(),
@@ -445,16 +494,20 @@ int main(int argc, char** argv) {
   ChapterApp app(k_program, o.common);
   add_number_option(app, "--seeds", o.seeds, "Seeds per check on the solution", 3, 100000);
   add_number_option(app, "--region-seeds", o.region_seeds,
-                    "Seeds per region check (a reference render per seed, about a second each)", 3, 100000);
+                    "Seeds per region check (a reference render per seed, about a second each)", 3,
+                    100000);
   add_number_option(app, "--bug-seeds", o.bug_seeds, "Seeds per known bug", 1, 1000);
   add_number_option(app, "--variant-seeds", o.variant_seeds,
                     "Seeds per point of a hidden test's variant grid (with --variants)", 1, 1000);
   CLI::App& flags = app;  // a text flag: no add_*_option of app/cli.hpp reads one
-  flags.add_option("--filter", o.filter, "Only the rows (checks, bugs, thresholds) whose name contains this text");
-  add_path_option(app, "--variants", o.variants,
-                  "The hidden tests' variant grid: the file `tests/assignments/answers/key.py --hidden-grid` "
-                  "writes (default: none, the default variant only)");
-  flags.add_flag("--quick", o.quick,
-               "20 seeds per check, 3 per region check and per bug, 1 per variant point (seconds)");
+  flags.add_option("--filter", o.filter,
+                   "Only the rows (checks, bugs, thresholds) whose name contains this text");
+  add_path_option(
+      app, "--variants", o.variants,
+      "The hidden tests' variant grid: the file `tests/assignments/answers/key.py --hidden-grid` "
+      "writes (default: none, the default variant only)");
+  flags.add_flag(
+      "--quick", o.quick,
+      "20 seeds per check, 3 per region check and per bug, 1 per variant point (seconds)");
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -11,11 +11,11 @@
 namespace mcrt::testing::assignment {
 
 struct MeasuredCheck {
-  std::string name;            ///< row name in fairness.csv, e.g. a2_cosine_hemisphere
-  std::string test;            ///< the CTest name of the test that applies it
-  double alpha = k_seed_alpha; ///< one seed rejects below this
-  bool majority = true;        ///< fails on 2 of 3 grading seeds (grading.hpp); else on one fixed seed
-  bool region = false;         ///< renders a reference per seed (about a second): fewer seeds
+  std::string name;             ///< row name in fairness.csv, e.g. a2_cosine_hemisphere
+  std::string test;             ///< the CTest name of the test that applies it
+  double alpha = k_seed_alpha;  ///< one seed rejects below this
+  bool majority = true;  ///< fails on 2 of 3 grading seeds (grading.hpp); else on one fixed seed
+  bool region = false;   ///< renders a reference per seed (about a second): fewer seeds
   std::function<double(std::uint64_t)> p_value;
 };
 

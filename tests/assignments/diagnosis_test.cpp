@@ -54,25 +54,31 @@ TEST_F(Diagnoses, FalseFailureRateIsBelowOneInAMillion) {
 }
 
 TEST_F(Diagnoses, A1DiskWithoutTheFactorFour) {
-  expect_diagnosis(check_disk_estimator(with_disk([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; })),
+  expect_diagnosis(check_disk_estimator(with_disk(
+                       [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) / 4.0; })),
                    "your estimate is about pi/4: you forgot the factor 4");
 }
 
 TEST_F(Diagnoses, A1DiskWithYEqualToX) {
-  expect_diagnosis(check_disk_estimator(with_disk(disk_area_same_coordinate_twice)), "your estimate is 4/sqrt(2)");
+  expect_diagnosis(check_disk_estimator(with_disk(disk_area_same_coordinate_twice)),
+                   "your estimate is 4/sqrt(2)");
 }
 
 TEST_F(Diagnoses, A1BallHalfScale) {
-  expect_diagnosis(check_ball_estimator(with_ball([](int, std::uint64_t n, Rng& rng) { return ball_volume_half_scale(n, rng); }), {3}),
+  expect_diagnosis(check_ball_estimator(with_ball([](int, std::uint64_t n, Rng& rng) {
+                                          return ball_volume_half_scale(n, rng);
+                                        }),
+                                        {3}),
                    "your volume is half of V_k");
 }
 
 TEST_F(Diagnoses, A1MonteCarloWithoutTheLength) {
-  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
-                     MonteCarloEstimate e = monte_carlo(f, s, n, rng);
-                     e.estimate = monte_carlo_without_volume(f, s, n, rng);
-                     return e;
-                   })),
+  expect_diagnosis(check_basic_estimator(
+                       with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                         MonteCarloEstimate e = monte_carlo(f, s, n, rng);
+                         e.estimate = monte_carlo_without_volume(f, s, n, rng);
+                         return e;
+                       })),
                    "your mean is 0.33x the expected value: is the length (b - a)");
 }
 
@@ -86,20 +92,24 @@ TEST_F(Diagnoses, A1TrapezoidWithFullEndWeights) {
 // Monte Carlo checked as Monte Carlo: answers that draw no random number are unbiased to
 // within far less than the mean's test can see, and fail on their spread across seeds.
 TEST_F(Diagnoses, A1DiskNearestMultipleOfFourOverN) {
-  expect_diagnosis(check_disk_estimator(with_disk(disk_area_nearest_multiple_of_four_over_n)),
-                   "zero spread: not a Monte Carlo estimate. 200 runs of N = 1000 points at different seeds all gave 3.14");
+  expect_diagnosis(
+      check_disk_estimator(with_disk(disk_area_nearest_multiple_of_four_over_n)),
+      "zero spread: not a Monte Carlo estimate. 200 runs of N = 1000 points at different seeds all gave 3.14");
 }
 
 TEST_F(Diagnoses, A1BallExpectedCount) {
   const TaskResult r = check_ball_estimator(with_ball(ball_volume_expected_count), {2, 3, 5});
   expect_diagnosis(r, "zero spread: not a Monte Carlo estimate");
-  EXPECT_EQ(r.message.find("your mean is"), std::string::npos) << "the mean is right: no factor to blame\n" << r.message;
+  EXPECT_EQ(r.message.find("your mean is"), std::string::npos)
+      << "the mean is right: no factor to blame\n"
+      << r.message;
 }
 
 TEST_F(Diagnoses, A1MonteCarloMidpointRule) {
-  expect_diagnosis(check_basic_estimator(with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
-                     return monte_carlo_midpoint_rule(f, s, n, rng);
-                   })),
+  expect_diagnosis(check_basic_estimator(
+                       with_basic([](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                         return monte_carlo_midpoint_rule(f, s, n, rng);
+                       })),
                    "zero spread: not a Monte Carlo estimate");
 }
 
@@ -123,86 +133,106 @@ double uniform_density(const Vec3&) { return uniform_hemisphere_pdf(); }
 double disk_density(const Vec2&) { return uniform_disk_pdf(); }
 
 TEST_F(Diagnoses, A2UniformHemisphereThatIsCosine) {
-  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(uniform_density), sampler_hemisphere_binning(),
-                                 SamplerKind::uniform_hemisphere, "diagnosis_cosine_as_uniform"),
+  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(uniform_density),
+                                 sampler_hemisphere_binning(), SamplerKind::uniform_hemisphere,
+                                 "diagnosis_cosine_as_uniform"),
                    "observed/expected ~ 2 cos(theta): your samples look cosine-distributed");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereThatIsUniform) {
-  expect_diagnosis(check_sampler(each(sample_uniform_hemisphere), each(cosine_density), sampler_hemisphere_binning(),
-                                 SamplerKind::cosine_hemisphere, "diagnosis_uniform_as_cosine"),
+  expect_diagnosis(check_sampler(each(sample_uniform_hemisphere), each(cosine_density),
+                                 sampler_hemisphere_binning(), SamplerKind::cosine_hemisphere,
+                                 "diagnosis_uniform_as_cosine"),
                    "observed/expected ~ 1 / (2 cos(theta))");
 }
 
 TEST_F(Diagnoses, A2CosineHemisphereWithRadiusU) {
-  expect_diagnosis(check_sampler(each(cosine_hemisphere_with_radius_u), each(cosine_density), sampler_hemisphere_binning(),
-                                 SamplerKind::cosine_hemisphere, "diagnosis_cosine_radius_u"),
-                   "half the expected samples near the horizon and too many near the pole: is the disk point "
-                   "at r = u0");
+  expect_diagnosis(
+      check_sampler(each(cosine_hemisphere_with_radius_u), each(cosine_density),
+                    sampler_hemisphere_binning(), SamplerKind::cosine_hemisphere,
+                    "diagnosis_cosine_radius_u"),
+      "half the expected samples near the horizon and too many near the pole: is the disk point "
+      "at r = u0");
 }
 
 // theta uniform in angle: named as such (before, only p-values and the worst "u, v" cells)
 TEST_F(Diagnoses, A2UniformHemisphereUniformInAngle) {
-  expect_diagnosis(check_sampler(each(hemisphere_uniform_in_angle), each(uniform_density), sampler_hemisphere_binning(),
-                                 SamplerKind::uniform_hemisphere, "diagnosis_hemisphere_in_angle"),
-                   "observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are uniform "
-                   "in the angle theta (theta = pi/2 u0), not in solid angle");
+  expect_diagnosis(
+      check_sampler(each(hemisphere_uniform_in_angle), each(uniform_density),
+                    sampler_hemisphere_binning(), SamplerKind::uniform_hemisphere,
+                    "diagnosis_hemisphere_in_angle"),
+      "observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are uniform "
+      "in the angle theta (theta = pi/2 u0), not in solid angle");
 }
 
 TEST_F(Diagnoses, A2UniformSphereUniformInAngle) {
-  expect_diagnosis(check_sampler(each(sphere_uniform_in_angle), each([](const Vec3&) { return uniform_sphere_pdf(); }),
-                                 sphere_binning(21, 21), SamplerKind::uniform_sphere, "diagnosis_sphere_in_angle"),
-                   "observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in the angle "
-                   "theta (theta = pi u0), not in solid angle");
+  expect_diagnosis(
+      check_sampler(each(sphere_uniform_in_angle),
+                    each([](const Vec3&) { return uniform_sphere_pdf(); }), sphere_binning(21, 21),
+                    SamplerKind::uniform_sphere, "diagnosis_sphere_in_angle"),
+      "observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in the angle "
+      "theta (theta = pi u0), not in solid angle");
 }
 
 TEST_F(Diagnoses, A2RightSamplerWrongPdf) {
   // the sampler is right; its chi-square fails only through the pdf, and says so
-  expect_diagnosis(check_sampler(each(sample_cosine_hemisphere), each(cosine_pdf_times_two), sampler_hemisphere_binning(),
-                                 SamplerKind::cosine_hemisphere, "diagnosis_wrong_pdf"),
-                   "your pdf integrates to 2.000, not 1, and this test compares your samples with it: fix the pdf first");
+  expect_diagnosis(
+      check_sampler(each(sample_cosine_hemisphere), each(cosine_pdf_times_two),
+                    sampler_hemisphere_binning(), SamplerKind::cosine_hemisphere,
+                    "diagnosis_wrong_pdf"),
+      "your pdf integrates to 2.000, not 1, and this test compares your samples with it: fix the pdf first");
 }
 
 TEST_F(Diagnoses, A2DiskWithRadiusU) {
-  expect_diagnosis(check_sampler(each(disk_with_radius_u), each(disk_density), sampler_disk_binning(), SamplerKind::unit_disk,
+  expect_diagnosis(check_sampler(each(disk_with_radius_u), each(disk_density),
+                                 sampler_disk_binning(), SamplerKind::unit_disk,
                                  "diagnosis_disk_radius_u"),
                    "points crowd the centre");
 }
 
 TEST_F(Diagnoses, A2PdfsOffByTwo) {
-  expect_diagnosis(check_pdf_integral(each(hemisphere_pdf_one_over_pi), sampler_hemisphere_binning(), "1/pi"),
+  expect_diagnosis(check_pdf_integral(each(hemisphere_pdf_one_over_pi),
+                                      sampler_hemisphere_binning(), "1/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large (is it off by a factor of 2");
-  expect_diagnosis(check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(), "2 cos/pi"),
+  expect_diagnosis(check_pdf_integral(each(cosine_pdf_times_two), sampler_hemisphere_binning(),
+                                      "2 cos/pi"),
                    "a pdf integrates to 1: yours is 2.000x too large");
 }
 
 double cone_density(const Vec3& w) { return uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max); }
 Vec3 cone_cos_u_times_max(Vec2 u) { return cone_with_cos_u_times_max(u, k_a2_cone_cos_theta_max); }
 Vec3 cone_in_angle(Vec2 u) { return cone_uniform_in_angle(u, k_a2_cone_cos_theta_max); }
-Vec3 cone_one_minus_u(Vec2 u) { return sample_uniform_cone({1.0 - u.x, u.y}, k_a2_cone_cos_theta_max); }
+Vec3 cone_one_minus_u(Vec2 u) {
+  return sample_uniform_cone({1.0 - u.x, u.y}, k_a2_cone_cos_theta_max);
+}
 
 TEST_F(Diagnoses, A2ConeWithCosUTimesMax) {
-  expect_diagnosis(check_sampler(each(cone_cos_u_times_max), each(cone_density), sampler_cone_binning(),
-                                 SamplerKind::uniform_cone, "diagnosis_cone_cos_u_times_max"),
+  expect_diagnosis(check_sampler(each(cone_cos_u_times_max), each(cone_density),
+                                 sampler_cone_binning(), SamplerKind::uniform_cone,
+                                 "diagnosis_cone_cos_u_times_max"),
                    "100000 directions fell outside the cone");
 }
 
 TEST_F(Diagnoses, A2ConeUniformInAngle) {
-  expect_diagnosis(check_sampler(each(cone_in_angle), each(cone_density), sampler_cone_binning(), SamplerKind::uniform_cone,
-                                 "diagnosis_cone_in_angle"),
+  expect_diagnosis(check_sampler(each(cone_in_angle), each(cone_density), sampler_cone_binning(),
+                                 SamplerKind::uniform_cone, "diagnosis_cone_in_angle"),
                    "too many directions near the axis: is theta drawn uniform in angle");
 }
 
 TEST_F(Diagnoses, A2ConePdfWithoutTwoPi) {
-  expect_diagnosis(check_pdf_integral(each([](const Vec3& w) { return cone_pdf_without_two_pi(w.z, k_a2_cone_cos_theta_max); }),
-                                      sampler_cone_binning(), "1/(1 - cos)"),
-                   "a pdf integrates to 1: yours is 6.283x too large (is the 2 pi of the full turn in phi missing?)");
+  expect_diagnosis(
+      check_pdf_integral(each([](const Vec3& w) {
+                           return cone_pdf_without_two_pi(w.z, k_a2_cone_cos_theta_max);
+                         }),
+                         sampler_cone_binning(), "1/(1 - cos)"),
+      "a pdf integrates to 1: yours is 6.283x too large (is the 2 pi of the full turn in phi missing?)");
 }
 
 // 1 - u0 is as uniform as u0: the mirrored inversion is not a mistake and keeps full marks.
 TEST_F(Diagnoses, A2ConeWithOneMinusUPasses) {
-  const TaskResult r = check_sampler(each(cone_one_minus_u), each(cone_density), sampler_cone_binning(),
-                                     SamplerKind::uniform_cone, "diagnosis_cone_one_minus_u");
+  const TaskResult r =
+      check_sampler(each(cone_one_minus_u), each(cone_density), sampler_cone_binning(),
+                    SamplerKind::uniform_cone, "diagnosis_cone_one_minus_u");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
@@ -213,7 +243,9 @@ std::vector<std::vector<double>> heat_map_ratios(const ChiSquareResult& r, const
   const DecodedPng png = decode_png(encode_png(ratio_heat_map(r, grid, k_cell)));
   EXPECT_EQ(png.width, grid.u_cells * k_cell);
   EXPECT_EQ(png.height, grid.v_cells * k_cell);
-  std::vector<std::vector<double>> ratio(static_cast<std::size_t>(grid.v_cells), std::vector<double>(static_cast<std::size_t>(grid.u_cells)));
+  std::vector<std::vector<double>> ratio(static_cast<std::size_t>(grid.v_cells),
+                                         std::vector<double>(
+                                             static_cast<std::size_t>(grid.u_cells)));
   for (int j = 0; j < grid.v_cells; ++j)
     for (int i = 0; i < grid.u_cells; ++i) {
       const auto [x, y] = heat_map_pixel(grid, k_cell, i, j);
@@ -235,22 +267,29 @@ double ratio_allowance(double expected) { return 5.0 / std::sqrt(expected) + 0.0
 // map must stay within the allowance in every cell.
 TEST_F(Diagnoses, A2WarpHeatMapShowsWhereTheSamplerIsWrong) {
   const Binning<Vec3> binning = sampler_hemisphere_binning();
-  const ChiSquareResult wrong_test =
-      run_warp(each(sample_uniform_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
-  const ChiSquareResult right_test =
-      run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, 1009, k_sampler_samples).chi_square;
-  const auto wrong = heat_map_ratios(wrong_test, binning), right = heat_map_ratios(right_test, binning);
-  const auto expected = [&](int i, int j) { return right_test.cells[static_cast<std::size_t>(j * binning.u_cells + i)].expected; };
+  const ChiSquareResult wrong_test = run_warp(each(sample_uniform_hemisphere), each(cosine_density),
+                                              binning, 1009, k_sampler_samples)
+                                         .chi_square;
+  const ChiSquareResult right_test = run_warp(each(sample_cosine_hemisphere), each(cosine_density),
+                                              binning, 1009, k_sampler_samples)
+                                         .chi_square;
+  const auto wrong = heat_map_ratios(wrong_test, binning),
+             right = heat_map_ratios(right_test, binning);
+  const auto expected = [&](int i, int j) {
+    return right_test.cells[static_cast<std::size_t>(j * binning.u_cells + i)].expected;
+  };
   const int top = binning.v_cells - 1;
   for (int i = 0; i < binning.u_cells; ++i) {
     EXPECT_GT(wrong[0][static_cast<std::size_t>(i)], 1.0 + 3.0 * ratio_allowance(expected(i, 0)))
         << "horizon cell " << i << ": the wrong sampler puts ~11x the expected points there";
-    EXPECT_LT(wrong[static_cast<std::size_t>(top)][static_cast<std::size_t>(i)], 1.0 - ratio_allowance(expected(i, top)))
+    EXPECT_LT(wrong[static_cast<std::size_t>(top)][static_cast<std::size_t>(i)],
+              1.0 - ratio_allowance(expected(i, top)))
         << "pole cell " << i << ": the wrong sampler puts ~0.52x the expected points there";
   }
   for (int j = 0; j < binning.v_cells; ++j)
     for (int i = 0; i < binning.u_cells; ++i)
-      EXPECT_NEAR(right[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)], 1.0, ratio_allowance(expected(i, j)))
+      EXPECT_NEAR(right[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)], 1.0,
+                  ratio_allowance(expected(i, j)))
           << "the right sampler's heat map, cell (" << i << ", " << j << ")";
 }
 
@@ -259,11 +298,13 @@ TEST_F(Diagnoses, A2WarpHeatMapShowsWhereTheSamplerIsWrong) {
 TEST_F(Diagnoses, A2WarpPValueIsTheGradedTestsAtItsSeed) {
   const Binning<Vec3> binning = sampler_hemisphere_binning();
   for (std::uint64_t seed : k_grading_seeds) {
-    const double warp = run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning, seed, k_sampler_samples)
+    const double warp = run_warp(each(sample_cosine_hemisphere), each(cosine_density), binning,
+                                 seed, k_sampler_samples)
                             .chi_square.p_value;
-    const double graded = sampler_chi_square(each(sample_cosine_hemisphere),
-                                             bulk_cell_probabilities(each(cosine_density), binning), binning, seed)
-                              .p_value;
+    const double graded =
+        sampler_chi_square(each(sample_cosine_hemisphere),
+                           bulk_cell_probabilities(each(cosine_density), binning), binning, seed)
+            .p_value;
     EXPECT_EQ(warp, graded) << "seed " << seed;
   }
 }
@@ -272,9 +313,11 @@ TEST_F(Diagnoses, A2WarpPValueIsTheGradedTestsAtItsSeed) {
 // 1/11), where the heat map must be red; the point cloud crowds the centre.
 TEST_F(Diagnoses, A2WarpDiskWithRadiusUIsRedAtTheCentre) {
   const Binning<Vec2> binning = sampler_disk_binning();
-  const auto w = run_warp(each(disk_with_radius_u), each(disk_density), binning, 2029, k_sampler_samples);
+  const auto w =
+      run_warp(each(disk_with_radius_u), each(disk_density), binning, 2029, k_sampler_samples);
   const auto ratio = heat_map_ratios(w.chi_square, binning);
-  for (const auto& row : ratio) EXPECT_GT(row[0], 2.0) << "the inner ring of r = u gets 1 / (2 r) > 2.5x its points";
+  for (const auto& row : ratio)
+    EXPECT_GT(row[0], 2.0) << "the inner ring of r = u gets 1 / (2 r) > 2.5x its points";
   // the cloud: the centre's pixels brighter than the rim's (the shade grows with the count)
   const DecodedPng cloud = decode_png(encode_png(point_cloud(w.points, binning, 100, 100)));
   double centre = 0.0, rim = 0.0;
@@ -286,13 +329,16 @@ TEST_F(Diagnoses, A2WarpDiskWithRadiusUIsRedAtTheCentre) {
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceLate) {
-  expect_diagnosis(check_ray_counts(a3_producer(incident_radiance_one_bounce_late)), "ray count is N^(k+1)");
-  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_bounce_late)), "your mean is that of depth k + 1");
+  expect_diagnosis(check_ray_counts(a3_producer(incident_radiance_one_bounce_late)),
+                   "ray count is N^(k+1)");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_one_bounce_late)),
+                   "your mean is that of depth k + 1");
 }
 
 TEST_F(Diagnoses, A3RecursionOneBounceEarly) {
   const TaskResult r = check_ray_counts(a3_producer(incident_radiance_one_bounce_early));
-  EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("DIAGNOSIS: ray count is N^k = 8 too few"), std::string::npos)
+      << r.message;
 }
 
 // A known-wrong ray-count prediction (a3.2) beside the solution's recursion.
@@ -304,9 +350,10 @@ struct PredictionProducer {
     for (const auto& [n, k] : calls) out.push_back(predict(static_cast<std::uint64_t>(n), k));
     return out;
   }
-  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
-                              std::uint64_t stream) const {
-    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n,
+                              int k, std::uint64_t seed, std::uint64_t stream) const {
+    return a3_producer(incident_radiance)
+        .recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
   }
 };
 template <class Predict>
@@ -321,14 +368,19 @@ std::uint64_t power_wrapping(std::uint64_t n, int k) {  // N^k as a student's lo
 }
 
 TEST_F(Diagnoses, A3PredictionOneLevelTooMany) {
-  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k + 1); });
-  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k + 1");
-  expect_diagnosis(check_prediction_counts_your_recursion(p), "your prediction and your recursion disagree");
+  const auto p = with_prediction(
+      [](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k + 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases),
+                   "your prediction is that of depth k + 1");
+  expect_diagnosis(check_prediction_counts_your_recursion(p),
+                   "your prediction and your recursion disagree");
 }
 
 TEST_F(Diagnoses, A3PredictionOneLevelTooFew) {
-  const auto p = with_prediction([](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k - 1); });
-  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases), "your prediction is that of depth k - 1");
+  const auto p = with_prediction(
+      [](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k - 1); });
+  expect_diagnosis(check_predicted_rays(p, k_a3_prediction_cases),
+                   "your prediction is that of depth k - 1");
 }
 
 TEST_F(Diagnoses, A3PredictionLastLevelOnly) {
@@ -342,7 +394,8 @@ TEST_F(Diagnoses, A3PredictionClosedFormAtNEqualOne) {
   const auto closed_form = [](std::uint64_t n, int k) -> std::uint64_t {
     return n == 1 ? 0 : (power_wrapping(n, k + 1) - 1) / (n - 1);
   };
-  expect_diagnosis(check_predicted_rays(with_prediction(closed_form), k_a3_prediction_cases), "for N = 1 a sample traces k + 1");
+  expect_diagnosis(check_predicted_rays(with_prediction(closed_form), k_a3_prediction_cases),
+                   "for N = 1 a sample traces k + 1");
 }
 
 TEST_F(Diagnoses, A3PredictionThatOverflows) {
@@ -353,22 +406,26 @@ TEST_F(Diagnoses, A3PredictionThatOverflows) {
   };
   // exact below 2^64: the closed-form test passes, the saturation test catches the wrap-round
   EXPECT_TRUE(check_predicted_rays(with_prediction(wrapping_sum), k_a3_prediction_cases).passed);
-  expect_diagnosis(check_prediction_saturates(with_prediction(wrapping_sum)), "past 2^64 - 1 rays your prediction must stay");
+  expect_diagnosis(check_prediction_saturates(with_prediction(wrapping_sum)),
+                   "past 2^64 - 1 rays your prediction must stay");
 }
 
 TEST_F(Diagnoses, A3RightPredictionWrongRecursion) {
   const auto p = [](std::uint64_t n, int k) { return max_rays_per_sample(static_cast<int>(n), k); };
   struct Late : PredictionProducer<decltype(p)> {
-    PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k, std::uint64_t seed,
-                                std::uint64_t stream) const {
-      return a3_producer(incident_radiance_one_bounce_late).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+    PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n,
+                                int k, std::uint64_t seed, std::uint64_t stream) const {
+      return a3_producer(incident_radiance_one_bounce_late)
+          .recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
     }
   };
-  expect_diagnosis(check_prediction_counts_your_recursion(Late{{p}}), "your prediction is right and your recursion is not");
+  expect_diagnosis(check_prediction_counts_your_recursion(Late{{p}}),
+                   "your prediction is right and your recursion is not");
 }
 
 TEST_F(Diagnoses, A3WithoutOneOverN) {
-  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_without_one_over_n)), "each level weighs N a instead of a");
+  expect_diagnosis(check_recursive_furnace(a3_producer(incident_radiance_without_one_over_n)),
+                   "each level weighs N a instead of a");
 }
 
 TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
@@ -377,15 +434,19 @@ TEST_F(Diagnoses, A3BranchesSharingOneDirection) {
 }
 
 TEST_F(Diagnoses, A4MissingCosine) {
-  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_without_cosine)), "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+  expect_diagnosis(
+      check_path_furnace(furnace_of(path_radiance_without_cosine)),
+      "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
 }
 
 TEST_F(Diagnoses, A4SpherePdf) {
-  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_with_sphere_pdf)), "the per-bounce weight averages 2a instead of a: is your pdf off");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_with_sphere_pdf)),
+                   "the per-bounce weight averages 2a instead of a: is your pdf off");
 }
 
 TEST_F(Diagnoses, A4CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_cosine_directions_uniform_pdf)), "the per-bounce weight averages 4a/3");
+  expect_diagnosis(check_path_furnace(furnace_of(path_radiance_cosine_directions_uniform_pdf)),
+                   "the per-bounce weight averages 4a/3");
   EXPECT_FALSE(check_reference_regions(sky_of(path_radiance_cosine_directions_uniform_pdf)).passed);
 }
 
@@ -405,8 +466,10 @@ auto wrong_pixel(PixelBug bug) {
       s.add(average(L));
     }
     const double n = spp;
-    const double variance = bug == PixelBug::biased_variance ? s.variance() * (n - 1.0) / n : s.variance();
-    return PixelEstimate{bug == PixelBug::sum ? sum : sum / n, bug == PixelBug::sigma ? std::sqrt(variance) : std::sqrt(variance / n)};
+    const double variance =
+        bug == PixelBug::biased_variance ? s.variance() * (n - 1.0) / n : s.variance();
+    return PixelEstimate{bug == PixelBug::sum ? sum : sum / n,
+                         bug == PixelBug::sigma ? std::sqrt(variance) : std::sqrt(variance / n)};
   };
 }
 
@@ -420,7 +483,8 @@ auto reference_pixel() { return wrong_pixel(PixelBug::none); }
 // below the 1e-9 the exact check allows and the 1e-3 of the smallest mistake it names.
 TEST(A4PixelTable, IsTheReferenceEstimate) {
   for (std::size_t s = 0; s < k_a4_pixel_spp.size(); ++s) {
-    const std::vector<double> values = pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
+    const std::vector<double> values =
+        pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
     ASSERT_EQ(values.size(), 4 * k_a4_pixel_expected[s].size());
     for (std::size_t i = 0; i < values.size(); ++i)
       EXPECT_NEAR(values[i], k_a4_pixel_expected[s][i / 4][i % 4], 1e-13 * std::abs(values[i]))
@@ -430,10 +494,12 @@ TEST(A4PixelTable, IsTheReferenceEstimate) {
 
 TEST(A4PixelTable, DISABLED_PrintPixelTable) {
   for (std::size_t s = 0; s < k_a4_pixel_spp.size(); ++s) {
-    const std::vector<double> values = pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
+    const std::vector<double> values =
+        pixel_exact_values(reference_pixel(), k_a4_pixel_spp[s], k_a4_pixel_seed);
     std::printf("    {{  // spp = %d\n", k_a4_pixel_spp[s]);
     for (std::size_t i = 0; i < values.size(); i += 4)
-      std::printf("        {%.17g, %.17g, %.17g, %.17g},\n", values[i], values[i + 1], values[i + 2], values[i + 3]);
+      std::printf("        {%.17g, %.17g, %.17g, %.17g},\n", values[i], values[i + 1],
+                  values[i + 2], values[i + 3]);
     std::printf("    }},\n");
   }
 }
@@ -443,30 +509,39 @@ TEST_F(Diagnoses, A4PixelSolutionPassesAllThree) {
   EXPECT_TRUE(exact.passed) << exact.message;
   const TaskResult jitter = check_pixel_jitter(pixel_rays_of(LocalSubject::student_pixel()));
   EXPECT_TRUE(jitter.passed) << jitter.message;
-  const TaskResult calibration = check_pixel_calibration(pixel_furnace_of(LocalSubject::student_pixel()));
+  const TaskResult calibration =
+      check_pixel_calibration(pixel_furnace_of(LocalSubject::student_pixel()));
   EXPECT_TRUE(calibration.passed) << calibration.message;
 }
 
 TEST_F(Diagnoses, A4PixelWithoutJitter) {
-  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::no_jitter))), "every pixel's mean is the radiance at its centre");
-  expect_diagnosis(check_pixel_jitter(pixel_rays_of(wrong_pixel(PixelBug::no_jitter))), "every ray goes through the pixel's centre");
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::no_jitter))),
+                   "every pixel's mean is the radiance at its centre");
+  expect_diagnosis(check_pixel_jitter(pixel_rays_of(wrong_pixel(PixelBug::no_jitter))),
+                   "every ray goes through the pixel's centre");
 }
 
 TEST_F(Diagnoses, A4PixelSumInsteadOfMean) {
-  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sum))), "your mean is spp times the expected one");
-  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sum))), "the z-scores are far from 0");
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sum))),
+                   "your mean is spp times the expected one");
+  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sum))),
+                   "the z-scores are far from 0");
 }
 
 TEST_F(Diagnoses, A4PixelSigmaInsteadOfStandardError) {
-  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sigma))), "your standard error is sqrt(spp) times too large");
-  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sigma))), "the z-scores vary spp times too little");
+  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::sigma))),
+                   "your standard error is sqrt(spp) times too large");
+  expect_diagnosis(check_pixel_calibration(pixel_furnace_of(wrong_pixel(PixelBug::sigma))),
+                   "the z-scores vary spp times too little");
 }
 
 // The biased variance (/spp) is seen by the exact test only: at the calibration test's 512
 // paths a pixel it raises Var[z] by 512/511, 0.2%, far inside that test's noise (about 5% at
 // 1024 pixels), so the calibration test passes it.
 TEST_F(Diagnoses, A4PixelBiasedVariance) {
-  expect_diagnosis(check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::biased_variance))), "your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide");
+  expect_diagnosis(
+      check_pixel_exact(pixel_exact_of(wrong_pixel(PixelBug::biased_variance))),
+      "your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide");
 }
 
 /// Whether every camera ray of the sky render's region (column, row) sees the sky itself: 8 x 8
@@ -477,7 +552,8 @@ bool sky_region_sees_only_sky(int column, int row) {
   for (int y = 4 * row; y < 4 * row + 4; ++y)
     for (int x = 4 * column; x < 4 * column + 4; ++x)
       for (int i = 0; i < 64; ++i) {
-        const auto hit = scene.closest_hit(camera.generate_ray(x, y, Vec2((i % 8 + 0.5) / 8.0, (i / 8 + 0.5) / 8.0)));
+        const auto hit = scene.closest_hit(
+            camera.generate_ray(x, y, Vec2((i % 8 + 0.5) / 8.0, (i / 8 + 0.5) / 8.0)));
         if (!hit || average(scene.materials[hit->material].emission) == 0.0) return false;
       }
   return true;
@@ -488,7 +564,8 @@ TEST_F(Diagnoses, A4SolutionsErrorMapFlagsNoRegion) {
   ASSERT_TRUE(r.passed) << r.message;
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column)
-      EXPECT_FALSE(r.map.flagged(column, row)) << "region " << column << ", " << row << "\n" << error_map_text(r.map);
+      EXPECT_FALSE(r.map.flagged(column, row)) << "region " << column << ", " << row << "\n"
+                                               << error_map_text(r.map);
 }
 
 TEST_F(Diagnoses, A4ErrorMapFlagsWhereTheBounceIsWrong) {
@@ -501,14 +578,16 @@ TEST_F(Diagnoses, A4ErrorMapFlagsWhereTheBounceIsWrong) {
     for (int column = 0; column < 4; ++column) {
       const bool sky = sky_region_sees_only_sky(column, row);
       sky_only += sky;
-      EXPECT_EQ(r.map.flagged(column, row), !sky) << "region " << column << ", " << row << "\n" << error_map_text(r.map);
+      EXPECT_EQ(r.map.flagged(column, row), !sky) << "region " << column << ", " << row << "\n"
+                                                  << error_map_text(r.map);
       if (!sky) {
         EXPECT_GT(r.map.at(column, row), 0.0) << "too bright, so z > 0";
       }
     }
   EXPECT_GT(sky_only, 0) << "the scene's top corners see only the sky";
   const std::string text = error_map_text(r.map);
-  EXPECT_EQ(text.rfind("region error map", 0), 0u) << "scripts/grade finds the map by its first words";
+  EXPECT_EQ(text.rfind("region error map", 0), 0u)
+      << "scripts/grade finds the map by its first words";
   EXPECT_NE(text.find("!"), std::string::npos);
 }
 
@@ -525,12 +604,15 @@ TEST_F(Diagnoses, A4ErrorMapPngShowsTooBrightInRed) {
   EXPECT_GE(layout.top, 0);
   // upscaled: each region a k_error_map_cell square framed in grey (sRGB code of linear 0.5)
   for (int c = 0; c < 4; ++c) {
-    EXPECT_EQ(png.at(layout.left + c * k_error_map_cell, layout.top + 10, 1), 188) << "left edge of column " << c;
-    EXPECT_EQ(png.at(layout.left + (c + 1) * k_error_map_cell - 1, layout.top + 10, 1), 188) << "right edge of column " << c;
+    EXPECT_EQ(png.at(layout.left + c * k_error_map_cell, layout.top + 10, 1), 188)
+        << "left edge of column " << c;
+    EXPECT_EQ(png.at(layout.left + (c + 1) * k_error_map_cell - 1, layout.top + 10, 1), 188)
+        << "right edge of column " << c;
   }
   // 6 pixels into a region: inside its grey edge, clear of the number printed at its centre
   const auto pixel = [&](int column, int row) {
-    const int x = layout.left + column * k_error_map_cell + 6, y = layout.top + row * k_error_map_cell + 6;
+    const int x = layout.left + column * k_error_map_cell + 6,
+              y = layout.top + row * k_error_map_cell + 6;
     return std::array<int, 3>{png.at(x, y, 0), png.at(x, y, 1), png.at(x, y, 2)};
   };
   EXPECT_EQ(pixel(1, 1), (std::array<int, 3>{255, 0, 0})) << "too bright: saturated red";
@@ -546,10 +628,12 @@ TEST_F(Diagnoses, A4ErrorMapPngShowsTooBrightInRed) {
 }
 
 TEST_F(Diagnoses, A4ErrorMapIsWrittenBesideTheReports) {
-  const auto folder = std::filesystem::temp_directory_path() / fmt::format("mcrt-error-map-{}", ::getpid());
+  const auto folder =
+      std::filesystem::temp_directory_path() / fmt::format("mcrt-error-map-{}", ::getpid());
   ::setenv("MCRT_TEST_REPORT_DIR", folder.c_str(), 1);
   ::testing::internal::CaptureStdout();
-  report_error_map(check_reference_regions(sky_of(path_radiance_with_sphere_pdf)).map, "a4_regions");
+  report_error_map(check_reference_regions(sky_of(path_radiance_with_sphere_pdf)).map,
+                   "a4_regions");
   const std::string out = ::testing::internal::GetCapturedStdout();
   ::unsetenv("MCRT_TEST_REPORT_DIR");
   const auto png = folder / "a4_regions" / "error_map.png";
@@ -562,30 +646,39 @@ TEST_F(Diagnoses, A4ErrorMapIsWrittenBesideTheReports) {
 }
 
 TEST_F(Diagnoses, A5RouletteWithoutDividingByQ) {
-  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_without_division)), "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
+  expect_diagnosis(
+      check_roulette_furnace(with_roulette(roulette_without_division)),
+      "your mean is 0.944x the expected value, that of roulette whose survivors keep their weight: is the survivor's weight divided by q?");
 }
 
 TEST_F(Diagnoses, A5RouletteBeforeTheEmission) {
-  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_before_emission)), "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
+  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_before_emission)),
+                   "your mean is 0.927x the expected value: a path stopped at x_j loses Le(x_j)");
 }
 
 TEST_F(Diagnoses, A5RouletteFromVertexZero) {
-  expect_diagnosis(check_roulette_furnace(with_roulette(roulette_from_depth_zero)), "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
+  expect_diagnosis(
+      check_roulette_furnace(with_roulette(roulette_from_depth_zero)),
+      "paths trace 3.34 rays on average instead of d + 1/(1 - q) = 5.33: does the roulette start at vertex min_depth");
 }
 
 TEST_F(Diagnoses, A5CosinePdfWithoutOneOverPi) {
-  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi))),
-                   "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
+  expect_diagnosis(
+      check_cosine_furnace_is_exact(
+          with_importance(ignoring_the_pdf(path_radiance_cosine_pdf_without_inv_pi))),
+      "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi");
 }
 
 TEST_F(Diagnoses, A5CosineDirectionsUniformPdf) {
-  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf))),
+  expect_diagnosis(check_cosine_furnace_is_exact(with_importance(
+                       ignoring_the_pdf(path_radiance_cosine_directions_uniform_pdf))),
                    "the per-bounce weight averages 4a/3 and varies");
 }
 
 TEST_F(Diagnoses, A5NeeEmissionTwice) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
-                   "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
+  expect_diagnosis(
+      check_nee_furnace_is_exact(with_nee(with_path_end(nee_emission_twice))),
+      "direct light is 2x: is emission counted by both the light sample and the BSDF ray?");
   EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_emission_twice))).passed);
 }
 
@@ -602,7 +695,9 @@ TEST_F(Diagnoses, A5NeeEmissionAtEveryVertexIsNotBlamedOnThePdf) {
   const auto nee = with_nee(with_path_end(nee_emission_twice));
   const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
   expect_no_misleading_nee_diagnosis(two);
-  expect_diagnosis(two, "the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here");
+  expect_diagnosis(
+      two,
+      "the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here");
   expect_no_misleading_nee_diagnosis(cap);
   expect_diagnosis(cap, "the NEE furnace's exact paths are wrong too");
 }
@@ -611,9 +706,13 @@ TEST_F(Diagnoses, A5NeeWithoutCosThetaY) {
   const auto nee = with_nee(with_path_end(nee_without_cos_y));
   const TaskResult furnace = check_nee_furnace_is_exact(nee);
   expect_diagnosis(furnace, "direct light is 1.");
-  EXPECT_NE(furnace.message.find("varies wildly from path to path, as 1 / cos(theta_y) does (its mean here is 2); every "
-                                 "light sample here should give exactly a Le: is cos(theta_y), the cosine at the light, "
-                                 "left out of p_w = p_A r^2 / cos(theta_y)?"), std::string::npos) << furnace.message;
+  EXPECT_NE(
+      furnace.message.find(
+          "varies wildly from path to path, as 1 / cos(theta_y) does (its mean here is 2); every "
+          "light sample here should give exactly a Le: is cos(theta_y), the cosine at the light, "
+          "left out of p_w = p_A r^2 / cos(theta_y)?"),
+      std::string::npos)
+      << furnace.message;
   const TaskResult two = check_nee_two_lights(nee), cap = check_nee_light_beyond_cap(nee);
   expect_no_misleading_nee_diagnosis(two);
   expect_diagnosis(two, "the box with one light fails too");
@@ -624,20 +723,23 @@ TEST_F(Diagnoses, A5NeeWithoutCosThetaY) {
 }
 
 TEST_F(Diagnoses, A5NeeCutAfterTheLightSample) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample))),
-                   "every path returns Le (1 + a + ... + a^(k+1)) = 1.937500, one light sample too many: is the path "
-                   "cut at depth k only after the light sample of its last vertex?");
+  expect_diagnosis(
+      check_nee_furnace_is_exact(with_nee(with_path_end(nee_cut_after_light_sample))),
+      "every path returns Le (1 + a + ... + a^(k+1)) = 1.937500, one light sample too many: is the path "
+      "cut at depth k only after the light sample of its last vertex?");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutTheJacobian) {
-  expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_jacobian))),
-                   "direct light is 2.70x and varies from path to path; every light sample here should give exactly a Le: is p_A converted to solid angle");
+  expect_diagnosis(
+      check_nee_furnace_is_exact(with_nee(with_path_end(nee_without_jacobian))),
+      "direct light is 2.70x and varies from path to path; every light sample here should give exactly a Le: is p_A converted to solid angle");
   EXPECT_FALSE(check_nee_regions(with_nee(with_path_end(nee_without_jacobian))).passed);
 }
 
 TEST_F(Diagnoses, A5NeeCapOnly) {
-  expect_diagnosis(check_nee_light_beyond_cap(with_nee(with_path_end(nee_cap_only))),
-                   "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
+  expect_diagnosis(
+      check_nee_light_beyond_cap(with_nee(with_path_end(nee_cap_only))),
+      "almost no light reaches this wall through your shadow rays, though the light is in plain view: do you sample only the cap");
 }
 
 TEST_F(Diagnoses, A5NeeWithoutOneOverNLights) {
@@ -646,14 +748,14 @@ TEST_F(Diagnoses, A5NeeWithoutOneOverNLights) {
   const TaskResult r = check_nee_two_lights(with_nee(with_path_end(nee_without_one_over_n_lights)));
   EXPECT_FALSE(r.passed) << r.message;
   EXPECT_NE(r.message.find("DIAGNOSIS: region"), std::string::npos) << r.message;
-  EXPECT_NE(r.message.find("does the light sample's pdf include the 1/N_lights"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("does the light sample's pdf include the 1/N_lights"), std::string::npos)
+      << r.message;
 }
 
 TEST_F(Diagnoses, A5NeeShadowRayHitsTheLight) {
   expect_diagnosis(check_nee_furnace_is_exact(with_nee(with_path_end(nee_shadow_ray_hits_light))),
                    "direct light is 0.00x: almost no shadow ray reaches the light");
 }
-
 
 // ---------------------------------------------------------------- a6
 // The known-wrong variants are in render/mis_known_bugs_a6.hpp.
@@ -667,28 +769,34 @@ TEST_F(Diagnoses, A6SolutionPasses) {
 }
 
 TEST_F(Diagnoses, A6LobeCosineToOneOverM) {
-  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_cosine_to_one_over_m)), "the mean cos(alpha) is");
+  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_cosine_to_one_over_m)),
+                   "the mean cos(alpha) is");
 }
 
 TEST_F(Diagnoses, A6LobeHalfTheAzimuths) {
-  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_half_the_azimuths)), "almost no direction has y < 0");
+  expect_diagnosis(check_lobe_sampler(with_lobe(lobe_half_the_azimuths)),
+                   "almost no direction has y < 0");
 }
 
 TEST_F(Diagnoses, A6LobeSineFromOneMinusCosSquared) {
   const auto cancelling = lobe_sine_from_one_minus_cos_squared;
-  EXPECT_TRUE(check_lobe_sampler(with_lobe(cancelling)).passed) << "the distribution is right at m = 10";
+  EXPECT_TRUE(check_lobe_sampler(with_lobe(cancelling)).passed)
+      << "the distribution is right at m = 10";
   expect_diagnosis(check_sharp_lobe_digits(with_lobe(cancelling)), "sin(alpha) lost its digits");
 }
 
 TEST_F(Diagnoses, A6LobePdfWithTheBrdfsNormalisation) {
   const auto m_plus_2 = lobe_pdf_with_the_brdfs_normalisation;
-  expect_diagnosis(check_lobe_pdf_integral(with_lobe_pdf(m_plus_2)), "your pdf is (m + 2)/(m + 1) too large");
+  expect_diagnosis(check_lobe_pdf_integral(with_lobe_pdf(m_plus_2)),
+                   "your pdf is (m + 2)/(m + 1) too large");
   // the correct sampler fails against the wrong pdf, and is told to fix the pdf first
-  expect_diagnosis(check_lobe_sampler(with_lobe_pdf(m_plus_2)), "your pdf integrates to 1.091, not 1");
+  expect_diagnosis(check_lobe_sampler(with_lobe_pdf(m_plus_2)),
+                   "your pdf integrates to 1.091, not 1");
 }
 
 TEST_F(Diagnoses, A6LobePdfRoundTheNormal) {
-  expect_diagnosis(check_lobe_pdf_round_mirror(with_lobe_pdf(lobe_pdf_round_the_normal)), "your pdf uses w.z");
+  expect_diagnosis(check_lobe_pdf_round_mirror(with_lobe_pdf(lobe_pdf_round_the_normal)),
+                   "your pdf uses w.z");
 }
 
 TEST_F(Diagnoses, A6PowerHeuristicNotSquared) {
@@ -707,17 +815,20 @@ TEST_F(Diagnoses, A6WeightsThatDoNotSumToOne) {
 }
 
 TEST_F(Diagnoses, A6BsdfHitWeightedAsIfByNee) {
-  expect_diagnosis(check_mis_regions(with_mis(mis_bsdf_hit_weighted_as_if_by_nee()), A6Strategy::mis_balance),
+  expect_diagnosis(check_mis_regions(with_mis(mis_bsdf_hit_weighted_as_if_by_nee()),
+                                     A6Strategy::mis_balance),
                    "the BSDF sample is weighted as if it were the light sample");
 }
 
 TEST_F(Diagnoses, A6BsdfHitNotWeighted) {
-  expect_diagnosis(check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power),
-                   "light is counted twice where light sampling wins: the BSDF sample that hits a light is added with weight 1");
+  expect_diagnosis(
+      check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power),
+      "light is counted twice where light sampling wins: the BSDF sample that hits a light is added with weight 1");
 }
 
 TEST_F(Diagnoses, A6LightSampleNotWeighted) {
-  expect_diagnosis(check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power),
+  expect_diagnosis(check_mis_regions(with_mis(mis_light_sample_not_weighted()),
+                                     A6Strategy::mis_power),
                    "light is counted twice where BSDF sampling wins");
 }
 
@@ -739,18 +850,26 @@ void expect_flags(const RegionErrorMap& map, std::initializer_list<std::size_t> 
     if (map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) {
       EXPECT_GT(map.z[r], 0.0) << "counted twice: too bright\n" << error_map_text(map);
     }
-  for (std::size_t r : flagged) EXPECT_TRUE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) << r << "\n" << error_map_text(map);
-  for (std::size_t r : clear) EXPECT_FALSE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4))) << r << "\n" << error_map_text(map);
+  for (std::size_t r : flagged)
+    EXPECT_TRUE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4)))
+        << r << "\n"
+        << error_map_text(map);
+  for (std::size_t r : clear)
+    EXPECT_FALSE(map.flagged(static_cast<int>(r % 4), static_cast<int>(r / 4)))
+        << r << "\n"
+        << error_map_text(map);
 }
 
 TEST_F(Diagnoses, A6ErrorMapFlagsWhereTheMissingWeightMatters) {
   // The light sample added with weight 1 counts light twice where BSDF sampling would carry it
   // (the sharp plate, the large light: region 15), not where light sampling wins (region 0),
   // since there w_l is about 1 anyway; the BSDF hit added with weight 1 the other way round.
-  const RegionResult light = check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power);
+  const RegionResult light =
+      check_mis_regions(with_mis(mis_light_sample_not_weighted()), A6Strategy::mis_power);
   EXPECT_FALSE(light.passed);
   expect_flags(light.map, {k_a6_bsdf_region}, {k_a6_light_region});
-  const RegionResult bsdf = check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power);
+  const RegionResult bsdf =
+      check_mis_regions(with_mis(mis_bsdf_hit_not_weighted()), A6Strategy::mis_power);
   EXPECT_FALSE(bsdf.passed);
   expect_flags(bsdf.map, {}, {k_a6_bsdf_region});
   // What the student opens: the PNG, decoded, shows region 15 of the first red (z about +7:
@@ -780,16 +899,20 @@ TEST_F(Diagnoses, A6DielectricFresnelNotInvertedWhenLeaving) {
   const auto wrong = with_dielectric(&dielectric_fresnel_not_inverted);
   // R + T = 1 still: the furnace cannot see it; the reflected fraction leaving the glass does
   EXPECT_TRUE(check_dielectric_furnace(wrong).passed);
-  expect_diagnosis(check_dielectric_branches(wrong),
-                   "leaving the glass your reflected fraction follows Fresnel with the indices of entering");
+  expect_diagnosis(
+      check_dielectric_branches(wrong),
+      "leaving the glass your reflected fraction follows Fresnel with the indices of entering");
 }
 
 TEST_F(Diagnoses, A6DielectricWithoutTotalInternalReflection) {
   const auto wrong = with_dielectric(&dielectric_without_total_internal_reflection);
-  const TaskResult furnace = check_dielectric_furnace(wrong);  // the bubble (n = 0.75) meets it from outside
+  const TaskResult furnace =
+      check_dielectric_furnace(wrong);  // the bubble (n = 0.75) meets it from outside
   expect_diagnosis(furnace, "your direction is NaN");
-  EXPECT_NE(furnace.message.find("total internal reflection"), std::string::npos) << furnace.message;
-  expect_diagnosis(check_dielectric_branches(wrong), "your direction is NaN leaving glass of n = 1.5");
+  EXPECT_NE(furnace.message.find("total internal reflection"), std::string::npos)
+      << furnace.message;
+  expect_diagnosis(check_dielectric_branches(wrong),
+                   "your direction is NaN leaving glass of n = 1.5");
   const TaskResult r = check_dielectric_branches(wrong);
   EXPECT_NE(r.message.find("total internal reflection"), std::string::npos) << r.message;
 }
@@ -798,13 +921,15 @@ TEST_F(Diagnoses, A6DielectricRefractionNotNormalised) {
   const auto wrong = with_dielectric(&dielectric_refraction_not_normalised);
   expect_diagnosis(check_dielectric_furnace(wrong), "your refracted direction has length");
   const TaskResult r = check_dielectric_branches(wrong);
-  expect_diagnosis(r, "your refracted direction has length 1.500000, not 1, entering glass of n = 1.5");
+  expect_diagnosis(
+      r, "your refracted direction has length 1.500000, not 1, entering glass of n = 1.5");
   EXPECT_NE(r.message.find("normalise it"), std::string::npos) << r.message;
 }
 
 TEST_F(Diagnoses, A6LightPdfPerUnitArea) {
-  expect_diagnosis(check_mis_regions(with_mis(&mis_light_pdf_per_unit_area), A6Strategy::mis_balance),
-                   "some regions are off by a large factor: are both pdfs of a weight in the same measure?");
+  expect_diagnosis(
+      check_mis_regions(with_mis(&mis_light_pdf_per_unit_area), A6Strategy::mis_balance),
+      "some regions are off by a large factor: are both pdfs of a weight in the same measure?");
 }
 
 TEST_F(Diagnoses, A6LightSamplingPassedOffAsMis) {
@@ -817,13 +942,16 @@ TEST_F(Diagnoses, A6LightSamplingPassedOffAsMis) {
 // The a6 reference table (k_a6_reference): run by hand with --gtest_also_run_disabled_tests.
 TEST(A6Reference, DISABLED_PrintReference) {
   constexpr int spp = 16384;
-  const std::vector<RunningStats> s = a6_region_stats(
-      a6_region_samples(&student_mis, A6Strategy::mis_power, k_a6_width, k_a6_height, spp, 0x5eed6ULL), spp);
-  const std::vector<PlateRegion> regions = plate_regions(make_veach_plates(), k_a6_width, k_a6_height);
+  const std::vector<RunningStats> s =
+      a6_region_stats(a6_region_samples(&student_mis, A6Strategy::mis_power, k_a6_width,
+                                        k_a6_height, spp, 0x5eed6ULL),
+                      spp);
+  const std::vector<PlateRegion> regions =
+      plate_regions(make_veach_plates(), k_a6_width, k_a6_height);
   for (std::size_t r = 0; r < s.size(); ++r)
     std::printf("    {%.17g, %.17g},  // plate %zu, light %zu: %d pixels\n", s[r].mean(),
-                std::sqrt(s[r].variance() / static_cast<double>(s[r].count())), regions[r].plate, regions[r].light,
-                regions[r].pixel_count());
+                std::sqrt(s[r].variance() / static_cast<double>(s[r].count())), regions[r].plate,
+                regions[r].light, regions[r].pixel_count());
 }
 
 }  // namespace

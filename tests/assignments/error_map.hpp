@@ -38,13 +38,17 @@ struct RegionErrorMap {
   std::vector<double> z;
   std::vector<std::string> column_labels, row_labels;
 
-  double at(int column, int row) const { return z[static_cast<std::size_t>(row * columns + column)]; }
+  double at(int column, int row) const {
+    return z[static_cast<std::size_t>(row * columns + column)];
+  }
   /// The two-sided per-region threshold at which a correct solution's map flags any of its
   /// regions with probability k_seed_alpha (Sidak over the regions): 4.17 for 16 regions.
   double threshold() const {
     return normal_quantile(1.0 - 0.5 * sidak_alpha(k_seed_alpha, columns * rows));
   }
-  bool flagged(int column, int row) const { return !(std::abs(at(column, row)) <= threshold()); }  // NaN flags
+  bool flagged(int column, int row) const {
+    return !(std::abs(at(column, row)) <= threshold());
+  }  // NaN flags
 };
 
 /// A region test's verdict and where it disagrees (its error map).
@@ -107,7 +111,7 @@ inline Color error_map_color(double z) {
 
 /// Where error_map_image puts the regions and the colour scale, in pixels.
 struct ErrorMapLayout {
-  int left = 0, top = 0;          ///< the top-left corner of region (0, 0)
+  int left = 0, top = 0;             ///< the top-left corner of region (0, 0)
   int bar_top = 0, bar_height = 16;  ///< the colour scale: the grid's width, under it
 };
 
@@ -129,7 +133,8 @@ inline Image error_map_image(const RegionErrorMap& map) {
   constexpr int margin = 8, scale = 2;
   const Color ink(0.0), grey(0.5);
   const ErrorMapLayout layout = error_map_layout(map);
-  const int left = layout.left, top = layout.top, bar_top = layout.bar_top, bar_height = layout.bar_height;
+  const int left = layout.left, top = layout.top, bar_top = layout.bar_top,
+            bar_height = layout.bar_height;
   const int grid_width = map.columns * k_error_map_cell;
   const std::string title = "z = (yours - reference) / s.e.";
   Image image(std::max(left + grid_width + margin, 2 * margin + text_width(title, scale)),
@@ -141,14 +146,17 @@ inline Image error_map_image(const RegionErrorMap& map) {
               top - margin - text_height(1), l, ink, 1);
   }
   for (int r = 0; r < map.rows; ++r) {
-    draw_text(image, margin, top + r * k_error_map_cell + (k_error_map_cell - text_height(scale)) / 2,
+    draw_text(image, margin,
+              top + r * k_error_map_cell + (k_error_map_cell - text_height(scale)) / 2,
               map.row_labels[static_cast<std::size_t>(r)], ink, scale);
     for (int c = 0; c < map.columns; ++c) {
       const Color fill = error_map_color(map.at(c, r));
       for (int y = 0; y < k_error_map_cell; ++y)
         for (int x = 0; x < k_error_map_cell; ++x) {
-          const bool edge = x == 0 || y == 0 || x == k_error_map_cell - 1 || y == k_error_map_cell - 1;
-          image.at(left + c * k_error_map_cell + x, top + r * k_error_map_cell + y) = edge ? grey : fill;
+          const bool edge =
+              x == 0 || y == 0 || x == k_error_map_cell - 1 || y == k_error_map_cell - 1;
+          image.at(left + c * k_error_map_cell + x, top + r * k_error_map_cell + y) =
+              edge ? grey : fill;
         }
       const std::string z = fmt::format("{:+.1f}{}", map.at(c, r), map.flagged(c, r) ? "!" : "");
       const int w = text_width(z, 1);

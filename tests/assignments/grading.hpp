@@ -62,15 +62,18 @@ inline std::string diagnosis(const std::string& text) { return "DIAGNOSIS: " + t
 /// A mean that is a simple multiple of the expected value usually is a missing or extra
 /// factor: says which, or "" when the ratio is none of them.
 inline std::string diagnose_mean_ratio(double observed, double expected) {
-  if (!std::isfinite(observed)) return diagnosis("your result is not finite (NaN or inf): a division by a pdf of 0?");
+  if (!std::isfinite(observed))
+    return diagnosis("your result is not finite (NaN or inf): a division by a pdf of 0?");
   const double r = observed / expected;
   const auto says = [&](const char* hint) {
     return diagnosis(fmt::format("your mean is {:.2f}x the expected value: {}", r, hint));
   };
   if (near(r, 2.0, 0.03)) return says("is your pdf off by a factor of 2?");
   if (near(r, 0.5, 0.03)) return says("is a factor of 2 missing (2 pi vs pi, or 2^(k-1) vs 2^k)?");
-  if (near(r, 4.0, 0.03) || near(r, 0.25, 0.03)) return says("is a factor of 4 (the area of the square [-1,1]^2) missing or extra?");
-  if (near(r, 1.0 / 3.0, 0.03) || near(r, 3.0, 0.03)) return says("is the length (b - a) of the interval missing or extra?");
+  if (near(r, 4.0, 0.03) || near(r, 0.25, 0.03))
+    return says("is a factor of 4 (the area of the square [-1,1]^2) missing or extra?");
+  if (near(r, 1.0 / 3.0, 0.03) || near(r, 3.0, 0.03))
+    return says("is the length (b - a) of the interval missing or extra?");
   if (near(r, 1.0, 1e-3)) return "";
   return "";
 }
@@ -78,7 +81,8 @@ inline std::string diagnose_mean_ratio(double observed, double expected) {
 /// Names the off-by-one of a recursion from its ray count (N branches, depth k), given the
 /// expected count 1 + N + ... + N^k (the callers write it out: a kit ships this file, and the
 /// sum is task a3.2's answer).
-inline std::string diagnose_ray_count(std::uint64_t observed, std::uint64_t n, int k, std::uint64_t expected) {
+inline std::string diagnose_ray_count(std::uint64_t observed, std::uint64_t n, int k,
+                                      std::uint64_t expected) {
   const auto power = [](std::uint64_t b, int e) {
     std::uint64_t r = 1;
     for (int i = 0; i < e; ++i) r *= b;
@@ -86,15 +90,19 @@ inline std::string diagnose_ray_count(std::uint64_t observed, std::uint64_t n, i
   };
   if (observed == expected) return "";
   if (observed == expected + power(n, k + 1))
-    return diagnosis(fmt::format("ray count is N^(k+1) = {} too many: does your recursion stop one bounce late?",
-                                 power(n, k + 1)));
+    return diagnosis(
+        fmt::format("ray count is N^(k+1) = {} too many: does your recursion stop one bounce late?",
+                    power(n, k + 1)));
   if (k > 0 && observed + power(n, k) == expected)
-    return diagnosis(fmt::format("ray count is N^k = {} too few: does your recursion stop one bounce early?",
-                                 power(n, k)));
-  if (observed + 1 == expected) return diagnosis("one ray too few: is the first (camera) ray counted?");
+    return diagnosis(
+        fmt::format("ray count is N^k = {} too few: does your recursion stop one bounce early?",
+                    power(n, k)));
+  if (observed + 1 == expected)
+    return diagnosis("one ray too few: is the first (camera) ray counted?");
   if (observed == static_cast<std::uint64_t>(k) + 1)
     return diagnosis("ray count is k + 1, as if N = 1: do you loop over the N branches?");
-  return diagnosis(fmt::format("ray count {} instead of 1 + N + ... + N^k = {}", observed, expected));
+  return diagnosis(
+      fmt::format("ray count {} instead of 1 + N + ... + N^k = {}", observed, expected));
 }
 
 }  // namespace mcrt::testing::assignment

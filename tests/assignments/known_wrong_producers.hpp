@@ -21,23 +21,41 @@
 namespace mcrt::testing::assignment {
 
 /// a1's functions as LocalSubject calls them.
-inline auto student_disk() { return [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); }; }
-inline auto student_ball() { return [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); }; }
-inline auto student_count() { return [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); }; }
-inline auto student_basic() {
-  return [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); };
+inline auto student_disk() {
+  return [](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); };
 }
-inline auto student_rule() { return [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); }; }
+inline auto student_ball() {
+  return [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); };
+}
+inline auto student_count() {
+  return [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); };
+}
+inline auto student_basic() {
+  return [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+    return monte_carlo(f, s, n, rng);
+  };
+}
+inline auto student_rule() {
+  return [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); };
+}
 
 /// a1's producer with the student's functions but one replaced.
 template <class D>
-auto with_disk(D d) { return a1_producer(d, student_ball(), student_count(), student_basic(), student_rule()); }
+auto with_disk(D d) {
+  return a1_producer(d, student_ball(), student_count(), student_basic(), student_rule());
+}
 template <class B>
-auto with_ball(B b) { return a1_producer(student_disk(), b, student_count(), student_basic(), student_rule()); }
+auto with_ball(B b) {
+  return a1_producer(student_disk(), b, student_count(), student_basic(), student_rule());
+}
 template <class B>
-auto with_basic(B b) { return a1_producer(student_disk(), student_ball(), student_count(), b, student_rule()); }
+auto with_basic(B b) {
+  return a1_producer(student_disk(), student_ball(), student_count(), b, student_rule());
+}
 template <class R>
-auto with_rule(R r) { return a1_producer(student_disk(), student_ball(), student_count(), student_basic(), r); }
+auto with_rule(R r) {
+  return a1_producer(student_disk(), student_ball(), student_count(), student_basic(), r);
+}
 
 /// a5's producer with one of the student's three estimators replaced.
 template <class R>
@@ -58,9 +76,8 @@ auto with_nee(N nee) {
 /// A known-wrong path tracer as a5.2's estimator: it ignores the pdf it is handed.
 template <class Tracer>
 auto ignoring_the_pdf(Tracer tracer) {
-  return [tracer](const Scene& scene, Ray ray, int max_depth, const HemispherePdf&, Rng& rng, RayCount& count) {
-    return tracer(scene, ray, max_depth, rng, count);
-  };
+  return [tracer](const Scene& scene, Ray ray, int max_depth, const HemispherePdf&, Rng& rng,
+                  RayCount& count) { return tracer(scene, ray, max_depth, rng, count); };
 }
 
 /// A known-wrong NEE as a5.3's estimator: its depth cut taken from the PathEnd.

@@ -37,9 +37,10 @@ double naive_disk_area(std::uint64_t n, std::uint32_t seed) {
 }
 
 void count_rate(benchmark::State& state, std::uint64_t points_per_iteration) {
-  state.counters["samples_per_second"] = benchmark::Counter(
-      static_cast<double>(points_per_iteration) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate);
+  state.counters["samples_per_second"] =
+      benchmark::Counter(static_cast<double>(points_per_iteration) *
+                             static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
 
 void BM_NaiveDiskArea(benchmark::State& state) {
@@ -89,7 +90,8 @@ void BM_CountInDiskParallel(benchmark::State& state) {
   const std::uint64_t n = std::uint64_t{1} << 27;  // 32 chunks
   const int threads = mcrt::hardware_threads();
   std::uint64_t stream = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(mcrt::count_in_disk_parallel(n, 1, stream++, threads));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(mcrt::count_in_disk_parallel(n, 1, stream++, threads));
   count_rate(state, n);
   state.SetLabel(std::to_string(threads) + " threads");
 }

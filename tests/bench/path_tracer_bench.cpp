@@ -36,7 +36,7 @@ namespace {
 
 constexpr int k_depth = 10;
 
-using mcrt::testing::plain_closest_hit;    // render/path_tracer_plain_layers.hpp
+using mcrt::testing::plain_closest_hit;  // render/path_tracer_plain_layers.hpp
 using mcrt::testing::plain_path_radiance;
 
 enum class Engine { lecture_loop, plain_layers, lanes };
@@ -48,13 +48,13 @@ mcrt::RenderResult render_with(const mcrt::Scene& scene, const mcrt::Camera& cam
   if constexpr (engine == Engine::lanes)
     return mcrt::render_path_tracer_lanes(scene, camera, settings, k_depth);
   else
-    return mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
-                                              mcrt::RayCount& count) {
-      if constexpr (engine == Engine::plain_layers)
-        return plain_path_radiance(scene, ray, k_depth, rng, count);
-      else
-        return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
-    });
+    return mcrt::render(camera, settings,
+                        [&](const mcrt::Ray& ray, mcrt::Rng& rng, mcrt::RayCount& count) {
+                          if constexpr (engine == Engine::plain_layers)
+                            return plain_path_radiance(scene, ray, k_depth, rng, count);
+                          else
+                            return mcrt::estimate_path_radiance(scene, ray, k_depth, rng, count);
+                        });
 }
 
 template <Engine engine>
@@ -90,17 +90,39 @@ void BM_ReferencePathTracerCornell(benchmark::State& state) {
   path_tracer<Engine::plain_layers>(state, "cornell");
 }
 // Wall-clock time: with 2 threads the CPU time of the main thread alone would mislead.
-BENCHMARK(BM_PathTracerCornellSpheres)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_LectureLoopPathTracerCornellSpheres)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_ReferencePathTracerCornellSpheres)->Arg(1)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_PathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_PathTracerCornellSpheres)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(2.0);
-BENCHMARK(BM_LectureLoopPathTracerCornell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_ReferencePathTracerCornell)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_LectureLoopPathTracerCornellSpheres)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_ReferencePathTracerCornellSpheres)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_PathTracerCornell)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_LectureLoopPathTracerCornell)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_ReferencePathTracerCornell)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(2.0);
 
 // Two-thread scaling, measured in pairs: each iteration renders the image of BM_PathTracer
@@ -147,12 +169,18 @@ void BM_ThreadScalingLectureLoopCornellSpheres(benchmark::State& state) {
 void BM_ThreadScalingLectureLoopCornell(benchmark::State& state) {
   thread_scaling<Engine::lecture_loop>(state, "cornell");
 }
-BENCHMARK(BM_ThreadScalingCornellSpheres)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_ThreadScalingCornellSpheres)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(4.0);
 BENCHMARK(BM_ThreadScalingCornell)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(4.0);
-BENCHMARK(BM_ThreadScalingLectureLoopCornellSpheres)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->MinTime(4.0);
-BENCHMARK(BM_ThreadScalingLectureLoopCornell)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_ThreadScalingLectureLoopCornellSpheres)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(4.0);
+BENCHMARK(BM_ThreadScalingLectureLoopCornell)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(4.0);
 
 // The host's own two-thread scaling, measured the same way, on the three loops of
@@ -187,29 +215,29 @@ void multiply_add_probe(benchmark::State& state) {
     return;
   }
   constexpr std::uint64_t steps = Chains == 1 ? 40'000'000 : 10'000'000;  // 15-45 ms each
-  host_probe(state, [] {
-    benchmark::DoNotOptimize(mcrt::bench::multiply_add_chains<Chains>(steps));
-  });
+  host_probe(state,
+             [] { benchmark::DoNotOptimize(mcrt::bench::multiply_add_chains<Chains>(steps)); });
 #else
   state.SkipWithError("the probe is written for x86-64");
 #endif
 }
 void BM_HostProbeDependentMultiplyAdds(benchmark::State& state) { multiply_add_probe<1>(state); }
-void BM_HostProbeIndependentMultiplyAdds(benchmark::State& state) {
-  multiply_add_probe<12>(state);
-}
+void BM_HostProbeIndependentMultiplyAdds(benchmark::State& state) { multiply_add_probe<12>(state); }
 void BM_HostProbeStoresAndLoads(benchmark::State& state) {
   host_probe(state, [] {
-    volatile std::uint64_t counters[12] = {};  // on each thread's own stack
+    volatile std::uint64_t counters[12] = {};               // on each thread's own stack
     mcrt::bench::increment_counters(counters, 20'000'000);  // some 90 ms
   });
 }
-BENCHMARK(BM_HostProbeDependentMultiplyAdds)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_HostProbeDependentMultiplyAdds)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(2.0);
-BENCHMARK(BM_HostProbeIndependentMultiplyAdds)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_HostProbeIndependentMultiplyAdds)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(2.0);
-BENCHMARK(BM_HostProbeStoresAndLoads)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->MinTime(2.0);
+BENCHMARK(BM_HostProbeStoresAndLoads)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 using mcrt::bench::path_rays;
 
@@ -226,16 +254,14 @@ void closest_hit_queries(benchmark::State& state, const char* scene_name) {
       }
     }
   }
-  state.counters["queries_per_second"] = benchmark::Counter(
-      static_cast<double>(rays.size()) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate);
+  state.counters["queries_per_second"] =
+      benchmark::Counter(static_cast<double>(rays.size()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
 void BM_ClosestHitCornellSpheres(benchmark::State& state) {
   closest_hit_queries<false>(state, "cornell-spheres");
 }
-void BM_ClosestHitCornell(benchmark::State& state) {
-  closest_hit_queries<false>(state, "cornell");
-}
+void BM_ClosestHitCornell(benchmark::State& state) { closest_hit_queries<false>(state, "cornell"); }
 void BM_ReferenceClosestHitCornellSpheres(benchmark::State& state) {
   closest_hit_queries<true>(state, "cornell-spheres");
 }

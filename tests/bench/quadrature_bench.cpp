@@ -21,13 +21,14 @@
 namespace {
 
 constexpr int k_dims = 4;
-constexpr std::uint64_t k_points_per_axis = 32;                 // 32^4 = 1048576 evaluations
-constexpr std::uint64_t k_samples = std::uint64_t{1} << 20;   // the same for Monte Carlo
+constexpr std::uint64_t k_points_per_axis = 32;              // 32^4 = 1048576 evaluations
+constexpr std::uint64_t k_samples = std::uint64_t{1} << 20;  // the same for Monte Carlo
 
 void evaluation_rate(benchmark::State& state, std::uint64_t per_iteration) {
-  state.counters["evaluations_per_second"] = benchmark::Counter(
-      static_cast<double>(per_iteration) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate);
+  state.counters["evaluations_per_second"] =
+      benchmark::Counter(static_cast<double>(per_iteration) *
+                             static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
 
 template <class Integrand>

@@ -28,10 +28,10 @@ void BM_IncidentRadiance(benchmark::State& state) {
   for (auto _ : state) {
     const mcrt::RenderSettings settings{1, 0, seed++, 1, nullptr};
     const mcrt::RenderResult result =
-        mcrt::render(camera, settings, [&](const mcrt::Ray& ray, mcrt::Rng& rng,
-                                           mcrt::RayCount& count) {
-          return mcrt::incident_radiance(scene, ray, 0, recursion, rng, count);
-        });
+        mcrt::render(camera, settings,
+                     [&](const mcrt::Ray& ray, mcrt::Rng& rng, mcrt::RayCount& count) {
+                       return mcrt::incident_radiance(scene, ray, 0, recursion, rng, count);
+                     });
     benchmark::DoNotOptimize(result.image.pixels.data());
     rays += result.rays;
   }
@@ -39,8 +39,12 @@ void BM_IncidentRadiance(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_IncidentRadiance)
-    ->Args({1, 3})->Args({2, 3})->Args({8, 3})->Args({1, 8})
-    ->Unit(benchmark::kMillisecond)->MinTime(1.0);
+    ->Args({1, 3})
+    ->Args({2, 3})
+    ->Args({8, 3})
+    ->Args({1, 8})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 using mcrt::bench::path_rays;
 

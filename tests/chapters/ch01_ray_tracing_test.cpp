@@ -1,7 +1,6 @@
 // Chapter 01 as a student runs it: tiny renders, their outputs, reproducibility across thread
 // counts, and every kind of bad input.
 
-
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -68,14 +67,15 @@ TEST(Ch01Test, PrintsASummaryAndHelp) {
   EXPECT_NE(run.out.find("rays per second"), std::string::npos);
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--width", "--height", "--spp", "--scene", "--seed", "--threads",
-                           "--out", "--quiet"})
+  for (const char* flag :
+       {"--width", "--height", "--spp", "--scene", "--seed", "--threads", "--out", "--quiet"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
 TEST(Ch01Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   const auto one = fresh_dir("ch01_threads1"), two = fresh_dir("ch01_threads2");
-  const std::string flags = "--scene cornell-spheres --width 40 --height 30 --spp 3 --seed 9 --quiet";
+  const std::string flags =
+      "--scene cornell-spheres --width 40 --height 30 --spp 3 --seed 9 --quiet";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --out " + one.string()).exit_code, 0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --out " + two.string()).exit_code, 0);
   // summary.json holds no timing, thread count or --out: the same file whatever --threads.
@@ -83,16 +83,21 @@ TEST(Ch01Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   EXPECT_EQ(read_text(one / "image.pfm"), read_text(two / "image.pfm"));
   EXPECT_EQ(read_text(one / "image.png"), read_text(two / "image.png"));
   const auto other = fresh_dir("ch01_seed10");
-  ASSERT_EQ(run_program(k_program, "--scene cornell-spheres --width 40 --height 30 --spp 3 "
-                                   "--seed 10 --quiet --out " + other.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program,
+                        "--scene cornell-spheres --width 40 --height 30 --spp 3 "
+                        "--seed 10 --quiet --out " +
+                            other.string())
+                .exit_code,
+            0);
   EXPECT_NE(read_text(one / "image.pfm"), read_text(other / "image.pfm"));  // jitter differs
 }
 
 TEST(Ch01Test, EveryScene) {
   for (const std::string scene : {"cornell", "cornell-spheres", "furnace"}) {
     const auto dir = fresh_dir("ch01_scene_" + scene);
-    const ProgramRun run = run_program(
-        k_program, "--scene " + scene + " --width 16 --height 12 --quiet --out " + dir.string());
+    const ProgramRun run =
+        run_program(k_program,
+                    "--scene " + scene + " --width 16 --height 12 --quiet --out " + dir.string());
     EXPECT_EQ(run.exit_code, 0) << scene << ": " << run.err;
   }
 }
@@ -100,8 +105,12 @@ TEST(Ch01Test, EveryScene) {
 TEST(Ch01Test, FurnaceSeesOnlyItsEmission) {
   // Direct light only, no point light: every camera ray returns the walls' Le exactly.
   const auto dir = fresh_dir("ch01_furnace");
-  ASSERT_EQ(run_program(k_program, "--scene furnace --emission 2.5 --albedo 0.3 --width 8 "
-                                   "--height 8 --quiet --out " + dir.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program,
+                        "--scene furnace --emission 2.5 --albedo 0.3 --width 8 "
+                        "--height 8 --quiet --out " +
+                            dir.string())
+                .exit_code,
+            0);
   const mcrt::Image image = mcrt::read_pfm(dir / "image.pfm");
   for (const mcrt::Color& c : image.pixels) EXPECT_EQ(c, mcrt::Color(2.5));
 }
@@ -116,8 +125,8 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, Ch01BadInputTest,
     ::testing::Values(BadInput{"--width 0", "--width"}, BadInput{"--width -3", "--width"},
                       BadInput{"--width abc", "--width"}, BadInput{"--spp 0", "--spp"},
-                      BadInput{"--height 1.5", "--height"}, BadInput{"--frobnicate", "--frobnicate"},
-                      BadInput{"--scene moon", "--scene"},
+                      BadInput{"--height 1.5", "--height"},
+                      BadInput{"--frobnicate", "--frobnicate"}, BadInput{"--scene moon", "--scene"},
                       BadInput{"--width 10000 --height 10000", "--width"},
                       BadInput{"--threads 0", "--threads"}, BadInput{"--seed -1", "--seed"},
                       BadInput{"--albedo 1.5", "--albedo"},

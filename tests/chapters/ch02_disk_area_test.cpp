@@ -65,9 +65,10 @@ TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
   }
 
   const CsvFile ball_error(dir / "ball_error_vs_n.csv");
-  EXPECT_EQ(header(ball_error), "k,n,trials,mean_estimate,empirical_std,theory_std,rmse,"
-                                "exact_volume,relative_theory_std,relative_rmse");
-  ASSERT_EQ(ball_error.size(), 3u * 9u);  // k = 2, 5, 10 on the grid 10..1000
+  EXPECT_EQ(header(ball_error),
+            "k,n,trials,mean_estimate,empirical_std,theory_std,rmse,"
+            "exact_volume,relative_theory_std,relative_rmse");
+  ASSERT_EQ(ball_error.size(), 3u * 9u);                 // k = 2, 5, 10 on the grid 10..1000
   for (std::size_t r = 0; r < ball_error.size(); ++r) {  // the plot's relative errors
     const double exact = ball_error.number(r, "exact_volume");
     EXPECT_NEAR(exact, mcrt::unit_ball_volume(static_cast<int>(ball_error.number(r, "k"))),
@@ -95,7 +96,8 @@ TEST(Ch02Test, WritesItsTablesPlotsAndSummary) {
   EXPECT_EQ(summary["disk"]["theory_slope"], -0.5);
   EXPECT_TRUE(summary["disk"]["fitted_slope"].is_number());
   EXPECT_GT(read_json(dir / "timings.json")["disk"]["samples_per_second"].get<double>(), 0.0);
-  EXPECT_EQ(summary["disk"]["samples"].get<double>(), 20.0 * (10 + 18 + 32 + 56 + 100 + 178 + 316 + 562 + 1000));
+  EXPECT_EQ(summary["disk"]["samples"].get<double>(),
+            20.0 * (10 + 18 + 32 + 56 + 100 + 178 + 316 + 562 + 1000));
   EXPECT_EQ(summary["ball"]["fitted_slopes"].size(), 3u);
   EXPECT_EQ(summary["ball"]["volumes"].size(), 3u);
   EXPECT_EQ(summary["ball"]["volumes"][1]["k"], 3);
@@ -128,7 +130,8 @@ TEST(Ch02Test, SameSeedGivesIdenticalTablesWhateverTheThreadCount) {
   for (const char* csv : {"disk_area.csv", "ball_volume.csv", "ball_error_vs_n.csv", "points.csv"})
     EXPECT_EQ(read_text(one / csv), read_text(two / csv)) << csv;
   const auto other = fresh_dir("ch02_seed6");
-  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 6 --quiet --out " + other.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, k_tiny + " --seed 6 --quiet --out " + other.string()).exit_code,
+            0);
   EXPECT_NE(read_text(one / "disk_area.csv"), read_text(other / "disk_area.csv"));
 }
 

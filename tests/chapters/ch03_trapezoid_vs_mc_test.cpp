@@ -37,9 +37,8 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
 
   const CsvFile errors(dir / "errors.csv");
   EXPECT_EQ(errors.header(), (std::vector<std::string>{"integrand", "dims", "method",
-                                                       "points_per_axis", "evaluations",
-                                                       "estimate", "reference", "abs_error",
-                                                       "rmse"}));
+                                                       "points_per_axis", "evaluations", "estimate",
+                                                       "reference", "abs_error", "rmse"}));
   ASSERT_GT(errors.size(), 0u);
   std::map<std::string, int> rows_per_study;
   for (std::size_t r = 0; r < errors.size(); ++r) {
@@ -71,9 +70,9 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
   for (const auto& [study, rows] : rows_per_study) EXPECT_GE(rows, 2) << study;  // a slope needs 2
 
   const CsvFile slopes(dir / "slopes.csv");
-  EXPECT_EQ(slopes.header(), (std::vector<std::string>{"integrand", "dims", "method",
-                                                       "fitted_slope", "standard_error",
-                                                       "theory_slope", "points"}));
+  EXPECT_EQ(slopes.header(),
+            (std::vector<std::string>{"integrand", "dims", "method", "fitted_slope",
+                                      "standard_error", "theory_slope", "points"}));
   ASSERT_EQ(slopes.size(), 14u);
   for (std::size_t r = 0; r < slopes.size(); ++r) {
     const std::string& integrand = slopes.text(r, "integrand");
@@ -109,10 +108,10 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
 
   // budget.csv: each k-dimensional study's last (largest) grid and N of errors.csv.
   const CsvFile budget(dir / "budget.csv");
-  EXPECT_EQ(budget.header(), (std::vector<std::string>{"integrand", "dims", "reference",
-                                                       "points_per_axis", "trapezoid_evaluations",
-                                                       "trapezoid_error", "monte_carlo_evaluations",
-                                                       "monte_carlo_rmse"}));
+  EXPECT_EQ(budget.header(),
+            (std::vector<std::string>{"integrand", "dims", "reference", "points_per_axis",
+                                      "trapezoid_evaluations", "trapezoid_error",
+                                      "monte_carlo_evaluations", "monte_carlo_rmse"}));
   ASSERT_EQ(budget.size(), 5u);  // gaussian_kd at k = 1..3, unit_ball_kd at k = 2..3
   for (std::size_t b = 0; b < budget.size(); ++b) {
     const int dims = static_cast<int>(budget.number(b, "dims"));
@@ -154,16 +153,16 @@ TEST(Ch03Test, WritesErrorsSlopesSummaryAndPlots) {
 TEST(Ch03Test, PrintsTheSlopesTableAndHelp) {
   // --dims 1 alone: the disk (the ball at k = 2) is studied all the same.
   const auto dir = fresh_dir("ch03_table");
-  const ProgramRun run = run_program(
-      k_program, "--trials 2 --max-evaluations 100 --dims 1 --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program, "--trials 2 --max-evaluations 100 --dims 1 --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   // The slopes table, one line per study and method.
   EXPECT_NE(run.out.find("fitted_slope"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("unit_ball_kd     2    trapezoid"), std::string::npos) << run.out;
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--trials", "--max-evaluations", "--dims", "--seed", "--threads",
-                           "--out", "--quiet"})
+  for (const char* flag :
+       {"--trials", "--max-evaluations", "--dims", "--seed", "--threads", "--out", "--quiet"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 

@@ -21,8 +21,9 @@ const std::string k_program = "ch04_recursive_nk";
 // 8 x 6 pixels, N = 1 and 2, k = 0..2; equal cost at depth 1 with 6 rays per pixel, which
 // buys N = 1 three samples (2 rays each) and N = 2 two samples (3 rays each); the grid's top
 // row at 4 spp.
-const std::string k_tiny = "--width 8 --height 6 --spp 1 --branching 2,1 --max-depth 2 "
-                           "--equal-cost-depth 1 --budget 6 --grid-spp 4 --quiet";
+const std::string k_tiny =
+    "--width 8 --height 6 --spp 1 --branching 2,1 --max-depth 2 "
+    "--equal-cost-depth 1 --budget 6 --grid-spp 4 --quiet";
 constexpr std::uint64_t k_pixels = 8 * 6;
 
 // The header row of a CSV file, as written.
@@ -109,8 +110,8 @@ TEST(Ch04Test, FurnaceRayCountsEqualThePrediction) {
   const auto dir = fresh_dir("ch04_furnace");
   std::string flags = k_tiny;
   flags.replace(flags.find("--branching 2,1"), 15, "--branching 1,3");
-  const ProgramRun run = run_program(
-      k_program, flags + " --scene furnace --albedo 0.6 --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program, flags + " --scene furnace --albedo 0.6 --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const CsvFile rays(dir / "rays.csv");
   ASSERT_EQ(rays.size(), 6u);
@@ -130,9 +131,9 @@ TEST(Ch04Test, PrintsATableAConclusionAndHelp) {
   EXPECT_NE(run.out.find("At equal cost"), std::string::npos) << run.out;
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--branching", "--max-depth", "--max-rays", "--spp", "--budget",
-                           "--equal-cost-depth", "--grid-spp", "--scene", "--seed",
-                           "--threads", "--out"})
+  for (const char* flag :
+       {"--branching", "--max-depth", "--max-rays", "--spp", "--budget", "--equal-cost-depth",
+        "--grid-spp", "--scene", "--seed", "--threads", "--out"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -189,28 +190,22 @@ TEST_P(Ch04BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
 
 INSTANTIATE_TEST_SUITE_P(
     Flags, Ch04BadInputTest,
-    ::testing::Values(BadInput{"--branching 0", "--branching"},
-                      BadInput{"--branching 1,0,2", "--branching"},
-                      BadInput{"--branching two", "--branching"},
-                      BadInput{"--branching 1.5", "--branching"},
-                      BadInput{"--max-depth -1", "--max-depth"},
-                      BadInput{"--max-depth three", "--max-depth"},
-                      BadInput{"--max-depth 65", "--max-depth"},
-                      BadInput{"--max-rays lots", "--max-rays"},
-                      BadInput{"--max-rays 0", "--max-rays"},
-                      BadInput{"--spp abc", "--spp"}, BadInput{"--spp 0", "--spp"},
-                      BadInput{"--budget x", "--budget"},
-                      BadInput{"--budget 3 --equal-cost-depth 3", "--budget"},
-                      BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
-                      BadInput{"--grid-spp 0", "--grid-spp"},
-                      BadInput{"--width 0", "--width"}, BadInput{"--scene moon", "--scene"},
-                      BadInput{"--threads 0", "--threads"},
-                      // Numbers are read as written: a nan limit no longer lets 1e27 rays start.
-                      BadInput{"--max-rays nan --max-depth 30 --branching 8", "--max-rays"},
-                      BadInput{"--max-rays inf", "--max-rays"},
-                      BadInput{"--max-rays 1e16", "--max-rays"},
-                      BadInput{"--spp 0x10", "--spp"}, BadInput{"--albedo nan", "--albedo"},
-                      BadInput{"--seed 18446744073709551616", "--seed"}),
+    ::testing::Values(
+        BadInput{"--branching 0", "--branching"}, BadInput{"--branching 1,0,2", "--branching"},
+        BadInput{"--branching two", "--branching"}, BadInput{"--branching 1.5", "--branching"},
+        BadInput{"--max-depth -1", "--max-depth"}, BadInput{"--max-depth three", "--max-depth"},
+        BadInput{"--max-depth 65", "--max-depth"}, BadInput{"--max-rays lots", "--max-rays"},
+        BadInput{"--max-rays 0", "--max-rays"}, BadInput{"--spp abc", "--spp"},
+        BadInput{"--spp 0", "--spp"}, BadInput{"--budget x", "--budget"},
+        BadInput{"--budget 3 --equal-cost-depth 3", "--budget"},
+        BadInput{"--equal-cost-depth -2", "--equal-cost-depth"},
+        BadInput{"--grid-spp 0", "--grid-spp"}, BadInput{"--width 0", "--width"},
+        BadInput{"--scene moon", "--scene"}, BadInput{"--threads 0", "--threads"},
+        // Numbers are read as written: a nan limit no longer lets 1e27 rays start.
+        BadInput{"--max-rays nan --max-depth 30 --branching 8", "--max-rays"},
+        BadInput{"--max-rays inf", "--max-rays"}, BadInput{"--max-rays 1e16", "--max-rays"},
+        BadInput{"--spp 0x10", "--spp"}, BadInput{"--albedo nan", "--albedo"},
+        BadInput{"--seed 18446744073709551616", "--seed"}),
     bad_input_name);
 
 TEST(Ch04Test, UnwritableOutputExitsWithCodeOneAndLeavesNothing) {

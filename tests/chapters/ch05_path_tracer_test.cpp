@@ -20,15 +20,17 @@ const std::string k_program = "ch05_path_tracer";
 
 TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   const auto dir = fresh_dir("ch05_smoke");
-  const ProgramRun run = run_program(
-      k_program, "--scene cornell-spheres --width 24 --height 18 --spp 1,4,16 --depth 4 "
-                 "--threads 2 --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program,
+                  "--scene cornell-spheres --width 24 --height 18 --spp 1,4,16 --depth 4 "
+                  "--threads 2 --out " +
+                      dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("fitted slope"), std::string::npos) << run.out;
 
   const CsvFile csv(dir / "rmse_vs_spp.csv");
   EXPECT_EQ(csv.header(), (std::vector<std::string>{"spp", "rmse", "rmse_vs_reference", "seconds",
-                                                     "rays", "rays_per_second"}));
+                                                    "rays", "rays_per_second"}));
   ASSERT_EQ(csv.size(), 3u);
   const std::vector<double> rmse = csv.numbers("rmse");
   const int pixels = 24 * 18, spp[] = {1, 4, 16};
@@ -83,9 +85,11 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
 TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
   const auto dir = fresh_dir("ch05_reference");
   const std::string reference_dir = (dir.parent_path() / "ch05_cache").string();
-  const ProgramRun run = run_program(
-      k_program, "--width 32 --height 24 --spp 4,256 --depth 0 --reference-spp 64 --quiet "
-                 "--reference-dir " + reference_dir + " --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program,
+                  "--width 32 --height 24 --spp 4,256 --depth 0 --reference-spp 64 --quiet "
+                  "--reference-dir " +
+                      reference_dir + " --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const CsvFile csv(dir / "rmse_vs_spp.csv");
   ASSERT_EQ(csv.size(), 2u);
@@ -100,7 +104,8 @@ TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
   EXPECT_GT(summary["mean_radiance_reference"].get<double>(),
             1.3 * summary["mean_radiance"].get<double>());
   EXPECT_GT(summary["depth_cut_bias_rms"].get<double>(), csv.number(1, "rmse"));
-  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(reference_dir) / "cornell_ls1_32x24.pfm"));
+  EXPECT_TRUE(
+      std::filesystem::exists(std::filesystem::path(reference_dir) / "cornell_ls1_32x24.pfm"));
   // The bias study (--bias-depths 0,1,2) renders the same spp at each depth: at depth 0 its
   // error against the reference levels off at the bias while its two-render error falls
   // (the main run's depth 0 above, so the same 2x margin), and each depth misses less light
@@ -118,7 +123,9 @@ TEST(Ch05Test, ErrorAgainstTheReferenceShowsTheDepthCutsBias) {
   // Without a reference the column stays, empty, and so do the summary's fields, as null.
   const auto none = fresh_dir("ch05_no_reference");
   ASSERT_EQ(run_program(k_program, "--width 8 --height 6 --spp 1 --reference-spp 0 --quiet --out " +
-                                       none.string()).exit_code, 0);
+                                       none.string())
+                .exit_code,
+            0);
   EXPECT_EQ(CsvFile(none / "rmse_vs_spp.csv").text(0, "rmse_vs_reference"), "");
   EXPECT_TRUE(read_json(none / "summary.json")["reference"].is_null());
 }
@@ -128,11 +135,16 @@ TEST(Ch05Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   const std::string flags = "--width 20 --height 16 --spp 2 --depth 6 --seed 5 --quiet";
   // Each run renders its own reference (a cache folder of its own), so a reference's render
   // seconds reaching summary.json would show here: they belong in timings.json alone.
-  const auto cache_one = fresh_dir("ch05_threads1_cache"), cache_two = fresh_dir("ch05_threads2_cache");
+  const auto cache_one = fresh_dir("ch05_threads1_cache"),
+             cache_two = fresh_dir("ch05_threads2_cache");
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --reference-dir " + cache_one.string() +
-                                       " --out " + one.string()).exit_code, 0);
+                                       " --out " + one.string())
+                .exit_code,
+            0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --reference-dir " + cache_two.string() +
-                                       " --out " + two.string()).exit_code, 0);
+                                       " --out " + two.string())
+                .exit_code,
+            0);
   EXPECT_TRUE(read_json(one / "timings.json").contains("reference_seconds"));
   EXPECT_EQ(read_text(one / "spp_0002.pfm"), read_text(two / "spp_0002.pfm"));
   EXPECT_EQ(read_text(one / "spp_0002.png"), read_text(two / "spp_0002.png"));
@@ -216,17 +228,16 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, Ch05BadInputTest,
     ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--spp 1,0,4", "--spp"},
                       BadInput{"--spp x", "--spp"}, BadInput{"--depth -1", "--depth"},
-                      BadInput{"--scene moon", "--scene"},
-                      BadInput{"--engine simd", "--engine"},
-                      BadInput{"--sampler halton", "--sampler"},
-                      BadInput{"--sampler", "--sampler"},
+                      BadInput{"--scene moon", "--scene"}, BadInput{"--engine simd", "--engine"},
+                      BadInput{"--sampler halton", "--sampler"}, BadInput{"--sampler", "--sampler"},
                       BadInput{"--reference-spp -1", "--reference-spp"},
                       BadInput{"--reference-spp 2000000", "--reference-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
                       // Accepted by the albedo check, but its reference's paths would have a
                       // million vertices each (3 + 1 / (1 - a)): refused by the work estimate.
-                      BadInput{"--scene furnace --albedo 0.999999 --reference-spp 1024", "--albedo"},
+                      BadInput{"--scene furnace --albedo 0.999999 --reference-spp 1024",
+                               "--albedo"},
                       BadInput{"--threads 0", "--threads"},
                       // Numbers are read as written: nothing clamped, no hex, finite reals only.
                       BadInput{"--depth 1e3", "--depth"}, BadInput{"--width 0x10", "--width"},

@@ -32,7 +32,8 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
   ASSERT_EQ(bias.size(), 5u);
   for (std::size_t k = 0; k < bias.size(); ++k) {
     EXPECT_EQ(bias.number(k, "k"), static_cast<double>(k));
-    EXPECT_NEAR(bias.number(k, "cut_bias_theory"), -std::pow(0.5, static_cast<double>(k) + 1.0) / 0.5, 1e-7);
+    EXPECT_NEAR(bias.number(k, "cut_bias_theory"),
+                -std::pow(0.5, static_cast<double>(k) + 1.0) / 0.5, 1e-7);
     // Within the 99.9% interval (at k = 0 the cut is exact: L = Le, an interval of 0).
     EXPECT_LE(std::abs(bias.number(k, "cut_bias") - bias.number(k, "cut_bias_theory")),
               bias.number(k, "cut_ci") + 1e-12);
@@ -52,8 +53,10 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
     // 4000 paths: the variance within 25% of its closed form (q = 0.7 and 0.9 have a finite
     // fourth moment, so the sample variance is within ~5%; the law itself is tested in
     // tests/render/russian_roulette_checks.cpp); the rays within 5% (their sd is ~1.5%).
-    EXPECT_NEAR(efficiency.number(i, "variance") / efficiency.number(i, "variance_theory"), 1.0, 0.25);
-    EXPECT_NEAR(efficiency.number(i, "rays_per_path") / efficiency.number(i, "rays_per_path_theory"),
+    EXPECT_NEAR(efficiency.number(i, "variance") / efficiency.number(i, "variance_theory"), 1.0,
+                0.25);
+    EXPECT_NEAR(efficiency.number(i, "rays_per_path") /
+                    efficiency.number(i, "rays_per_path_theory"),
                 1.0, 0.05);
     EXPECT_GT(efficiency.number(i, "efficiency"), 0.0);
   }
@@ -78,9 +81,10 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
     // efficiency.csv's: a finite fourth moment at q = 0.7, so the sample variance is within ~5%).
     EXPECT_NEAR(splitting.number(i, "rays_per_path") / splitting.number(i, "rays_per_path_theory"),
                 1.0, 0.05);
-    EXPECT_NEAR(splitting.number(i, "variance") / splitting.number(i, "variance_theory"), 1.0, 0.25);
-    EXPECT_NEAR(splitting.number(i, "variance_theory"),
-                efficiency.number(0, "variance_theory") / n, 1e-6);
+    EXPECT_NEAR(splitting.number(i, "variance") / splitting.number(i, "variance_theory"), 1.0,
+                0.25);
+    EXPECT_NEAR(splitting.number(i, "variance_theory"), efficiency.number(0, "variance_theory") / n,
+                1e-6);
   }
 
   const auto summary = read_json(dir / "summary.json");
@@ -117,9 +121,11 @@ TEST(Ch06Test, TinyRunWritesEveryTableImageAndSummary) {
 // The example of the docs and the issue: the furnace of albedo 0.8 renders Le / (1 - a) = 5.
 TEST(Ch06Test, FurnaceRouletteImageMeanIsLeOverOneMinusA) {
   const auto dir = fresh_dir("ch06_furnace");
-  const ProgramRun run = run_program(
-      k_program, "--scene furnace --albedo 0.8 --emission 1 --width 32 --height 32 --spp 64 "
-                 "--paths 2000 --quiet --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program,
+                  "--scene furnace --albedo 0.8 --emission 1 --width 32 --height 32 --spp 64 "
+                  "--paths 2000 --quiet --out " +
+                      dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const mcrt::Image image = mcrt::read_pfm(dir / "roulette.pfm");
   mcrt::RunningStats pixels;  // independent pixels, each the mean of 64 paths
@@ -131,7 +137,8 @@ TEST(Ch06Test, FurnaceRouletteImageMeanIsLeOverOneMinusA) {
   const mcrt::Image cut = mcrt::read_pfm(dir / "depth_cut.pfm");
   mcrt::RunningStats cut_pixels;
   for (const mcrt::Color& c : cut.pixels) cut_pixels.add((c.r + c.g + c.b) / 3.0);
-  EXPECT_NEAR(cut_pixels.mean(), 5.0 * (1.0 - std::pow(0.8, 11)), 4.4 * cut_pixels.standard_error());
+  EXPECT_NEAR(cut_pixels.mean(), 5.0 * (1.0 - std::pow(0.8, 11)),
+              4.4 * cut_pixels.standard_error());
 }
 
 TEST(Ch06Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
@@ -144,13 +151,14 @@ TEST(Ch06Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
   // efficiency.png is drawn from variance and rays per path, not seconds: the same plot in
   // every run (it drew seconds-based points, a closed form at the measured seconds per ray
   // and a best q picked by time, all of which changed from run to run).
-  for (const char* file : {"roulette.pfm", "roulette.png", "depth_cut.pfm", "depth_cut.png",
-                           "bias.csv", "path_length.csv", "efficiency.gp", "efficiency.svg",
-                           "efficiency.png", "splitting.csv", "splitting.gp", "splitting.svg",
-                           "splitting.png"})
+  for (const char* file :
+       {"roulette.pfm", "roulette.png", "depth_cut.pfm", "depth_cut.png", "bias.csv",
+        "path_length.csv", "efficiency.gp", "efficiency.svg", "efficiency.png", "splitting.csv",
+        "splitting.gp", "splitting.svg", "splitting.png"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   // Timings differ from run to run, and the best q of the CSV is chosen by measured time.
-  const std::vector<std::string> timing{"seconds", "efficiency", "efficiency_theory", "best_efficiency"};
+  const std::vector<std::string> timing{"seconds", "efficiency", "efficiency_theory",
+                                        "best_efficiency"};
   EXPECT_EQ(CsvFile(one / "efficiency.csv").without(timing),
             CsvFile(two / "efficiency.csv").without(timing));
   EXPECT_EQ(CsvFile(one / "renders.csv").without({"seconds", "rays_per_second"}),
@@ -160,9 +168,10 @@ TEST(Ch06Test, SameSeedGivesByteIdenticalOutputsWhateverTheThreadCount) {
 TEST(Ch06Test, HelpNamesEveryFlag) {
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--scene", "--albedo", "--emission", "--width", "--height", "--spp",
-                           "--depth", "--min-depth", "--policy", "--fixed-q", "--floor", "--q",
-                           "--paths", "--split", "--split-q", "--seed", "--threads", "--out", "--quiet"})
+  for (const char* flag :
+       {"--scene", "--albedo", "--emission", "--width", "--height", "--spp", "--depth",
+        "--min-depth", "--policy", "--fixed-q", "--floor", "--q", "--paths", "--split", "--split-q",
+        "--seed", "--threads", "--out", "--quiet"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 

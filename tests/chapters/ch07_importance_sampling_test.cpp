@@ -21,9 +21,11 @@ const std::string k_program = "ch07_importance_sampling";
 
 TEST(Ch07Test, TinyRunWritesImagesTablesAndSummary) {
   const auto dir = fresh_dir("ch07_smoke");
-  const ProgramRun run = run_program(
-      k_program, "--width 24 --height 18 --spp 4 --depth 4 --reference-spp 8 --threads 2 "
-                 "--out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program,
+                  "--width 24 --height 18 --spp 4 --depth 4 --reference-spp 8 --threads 2 "
+                  "--out " +
+                      dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("furnace variance with the cosine pdf"), std::string::npos) << run.out;
 
@@ -95,9 +97,11 @@ TEST(Ch07Test, TinyRunWritesImagesTablesAndSummary) {
 // (1 - a), so every pixel is that number, rounded once to the PFM's 32-bit float.
 TEST(Ch07Test, CosineFurnaceImageIsExactlyTheClosedForm) {
   const auto dir = fresh_dir("ch07_furnace");
-  const ProgramRun run = run_program(
-      k_program, "--scene furnace --albedo 0.6 --emission 1 --depth 5 --width 16 --height 16 "
-                 "--spp 4 --quiet --out " + dir.string());
+  const ProgramRun run =
+      run_program(k_program,
+                  "--scene furnace --albedo 0.6 --emission 1 --depth 5 --width 16 --height 16 "
+                  "--spp 4 --quiet --out " +
+                      dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const float expected = static_cast<float>((1.0 - std::pow(0.6, 6)) / (1.0 - 0.6));
   const mcrt::Image image = mcrt::read_pfm(dir / "cosine.pfm");

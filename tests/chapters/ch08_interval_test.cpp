@@ -58,8 +58,8 @@ TEST(Ch08IntervalTest, HalfWidthIs196StandardErrorsOfTheMeanAndCovers95Percent) 
     covered += std::abs(m.mean - truth) <= m.half_width ? 1 : 0;
   }
   const double mean_of_means = sum / k_trials;
-  const double spread = std::sqrt((sum_squares - k_trials * mean_of_means * mean_of_means) /
-                                  (k_trials - 1));
+  const double spread =
+      std::sqrt((sum_squares - k_trials * mean_of_means * mean_of_means) / (k_trials - 1));
   const double standard_error = half_width_sum / k_trials / 1.96;
   // The spread of 2000 means is known to a relative 1/sqrt(2 x 2000) = 1.6%; 8% is 5 of those.
   // A 99.9% interval's 3.29 would make the ratio 1.68, a 68% interval's 1.00 would make it 0.51.

@@ -25,8 +25,8 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   const auto dir = fresh_dir("ch08_smoke");
   const auto refs = dir.parent_path() / "ch08_smoke_cache";
   std::filesystem::remove_all(refs);
-  const ProgramRun run = run_program(
-      k_program, k_tiny + "--threads 2 --reference-dir " + refs.string() + " --out " + dir.string());
+  const ProgramRun run = run_program(k_program, k_tiny + "--threads 2 --reference-dir " +
+                                                    refs.string() + " --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
 
   for (const char* stem : {"nee", "mis"}) {
@@ -47,9 +47,9 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   }
   const CsvFile csv(dir / "efficiency.csv");
   const std::vector<std::string>& header = csv.header();
-  for (const char* column : {"scene", "light_scale", "estimator", "budget_rays_per_pixel", "spp",
-                             "rays_per_pixel", "rel_mse", "efficiency", "efficiency_vs_uniform",
-                             "mean", "mean_ci_low", "mean_ci_high"})
+  for (const char* column :
+       {"scene", "light_scale", "estimator", "budget_rays_per_pixel", "spp", "rays_per_pixel",
+        "rel_mse", "efficiency", "efficiency_vs_uniform", "mean", "mean_ci_low", "mean_ci_high"})
     EXPECT_NE(std::find(header.begin(), header.end(), column), header.end()) << column;
   for (const char* column : {"seconds", "rays_per_second"})  // timings.json's, not the CSV's
     EXPECT_EQ(std::find(header.begin(), header.end(), column), header.end()) << column;
@@ -77,12 +77,17 @@ TEST(Ch08Test, TinyRunWritesImagesReferencesAndTheShootout) {
   // A second run reuses the cache; other settings rebuild it.
   const auto pfm = refs / "cornell_ls1_12x9.pfm";
   const auto written = std::filesystem::last_write_time(pfm);
-  ASSERT_EQ(run_program(k_program, k_tiny + "--quiet --reference-dir " + refs.string() +
-                                       " --out " + dir.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program, k_tiny + "--quiet --reference-dir " + refs.string() + " --out " +
+                                       dir.string())
+                .exit_code,
+            0);
   EXPECT_EQ(std::filesystem::last_write_time(pfm), written);
-  ASSERT_EQ(run_program(k_program, "--width 12 --height 9 --spp 2 --reference-spp 6 --ray-budgets "
-                                   "8 --quiet --reference-dir " + refs.string() +
-                                       " --out " + dir.string()).exit_code, 0);
+  ASSERT_EQ(run_program(k_program,
+                        "--width 12 --height 9 --spp 2 --reference-spp 6 --ray-budgets "
+                        "8 --quiet --reference-dir " +
+                            refs.string() + " --out " + dir.string())
+                .exit_code,
+            0);
   EXPECT_EQ(read_json(refs / "cornell_ls1_12x9.json")["spp"], 6);
 }
 
@@ -94,13 +99,17 @@ TEST(Ch08Test, SameSeedGivesByteIdenticalImagesWhateverTheThreadCount) {
   std::filesystem::remove_all(refs2);
   const std::string flags = k_tiny + "--scene cornell-spheres --seed 5 --quiet";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --reference-dir " + refs1.string() +
-                                       " --out " + one.string()).exit_code, 0);
+                                       " --out " + one.string())
+                .exit_code,
+            0);
   ASSERT_EQ(run_program(k_program, flags + " --threads 2 --reference-dir " + refs2.string() +
-                                       " --out " + two.string()).exit_code, 0);
+                                       " --out " + two.string())
+                .exit_code,
+            0);
   // every output but timings.json: the shoot-out counts rays, not seconds
-  for (const char* file : {"nee.pfm", "nee.png", "mis.pfm", "mis.png", "images.csv",
-                           "efficiency.csv", "summary.json", "contact_sheet.png",
-                           "relmse_vs_rays_cornell_x0.1.gp", "relmse_vs_rays_cornell_x0.1.svg"})
+  for (const char* file :
+       {"nee.pfm", "nee.png", "mis.pfm", "mis.png", "images.csv", "efficiency.csv", "summary.json",
+        "contact_sheet.png", "relmse_vs_rays_cornell_x0.1.gp", "relmse_vs_rays_cornell_x0.1.svg"})
     EXPECT_EQ(read_text(one / file), read_text(two / file)) << file;
   EXPECT_EQ(read_text(refs1 / "cornell-spheres_ls1_12x9.pfm"),
             read_text(refs2 / "cornell-spheres_ls1_12x9.pfm"));
@@ -119,16 +128,14 @@ TEST_P(Ch08BadInputTest, ExitsWithCodeTwoAndOneLineNamingTheFlag) {
 
 INSTANTIATE_TEST_SUITE_P(
     Flags, Ch08BadInputTest,
-    ::testing::Values(BadInput{"--spp 0", "--spp"}, BadInput{"--light-scale 5", "--light-scale"},
-                      BadInput{"--light-scale 0", "--light-scale"},
-                      BadInput{"--ray-budgets 0", "--ray-budgets"},
-                      BadInput{"--ray-budgets 1,x", "--ray-budgets"},
-                      BadInput{"--ray-budgets 1e7", "--ray-budgets"},
-                      BadInput{"--budgets 1", "--budgets"}, BadInput{"--depth -1", "--depth"},
-                      BadInput{"--reference-spp 1", "--reference-spp"},
-                      BadInput{"--scene moon", "--scene"},
-                      BadInput{"--width 8192 --height 4096 --reference-spp 100000",
-                               "--reference-spp"}),
+    ::testing::Values(
+        BadInput{"--spp 0", "--spp"}, BadInput{"--light-scale 5", "--light-scale"},
+        BadInput{"--light-scale 0", "--light-scale"}, BadInput{"--ray-budgets 0", "--ray-budgets"},
+        BadInput{"--ray-budgets 1,x", "--ray-budgets"},
+        BadInput{"--ray-budgets 1e7", "--ray-budgets"}, BadInput{"--budgets 1", "--budgets"},
+        BadInput{"--depth -1", "--depth"}, BadInput{"--reference-spp 1", "--reference-spp"},
+        BadInput{"--scene moon", "--scene"},
+        BadInput{"--width 8192 --height 4096 --reference-spp 100000", "--reference-spp"}),
     bad_input_name);
 
 }  // namespace

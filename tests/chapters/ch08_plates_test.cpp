@@ -65,7 +65,9 @@ TEST(Ch08PlatesTest, SameSeedGivesByteIdenticalPlatesWhateverTheThreadCount) {
   // And another seed gives other noise (the files are not constant).
   const auto other = fresh_dir("ch08_plates_seed8");
   ASSERT_EQ(run_program(k_program, k_tiny + "--seed 8 --quiet --reference-dir " + refs.string() +
-                                       " --out " + other.string()).exit_code, 0);
+                                       " --out " + other.string())
+                .exit_code,
+            0);
   EXPECT_NE(read_text(one / "plates.csv"), read_text(other / "plates.csv"));
 }
 

@@ -164,9 +164,9 @@ TEST(Ch09Test, PrintsTheSlopesTableAndHelp) {
   EXPECT_NE(run.out.find("sobol_owen_odd_n"), std::string::npos) << run.out;
   const ProgramRun help = run_program(k_program, "--help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--trials", "--max-n", "--budget", "--dims", "--picture-points",
-                           "--seed", "--threads", "--out", "--quiet", "--sampler",
-                           "--render-max-spp", "--render-scene", "--reference-dir"})
+  for (const char* flag :
+       {"--trials", "--max-n", "--budget", "--dims", "--picture-points", "--seed", "--threads",
+        "--out", "--quiet", "--sampler", "--render-max-spp", "--render-scene", "--reference-dir"})
     EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
 }
 
@@ -198,8 +198,8 @@ const std::string k_render =
 
 TEST(Ch09Test, RenderStudyWritesErrorsSlopesAndImages) {
   const auto dir = fresh_dir("ch09_render"), cache = fresh_dir("ch09_render_cache");
-  const ProgramRun run = run_program(
-      k_program, k_render + " --reference-dir " + cache.string() + " --out " + dir.string());
+  const ProgramRun run = run_program(k_program, k_render + " --reference-dir " + cache.string() +
+                                                    " --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const CsvFile errors(dir / "render_error.csv");
   EXPECT_EQ(errors.header(),
@@ -232,7 +232,8 @@ TEST(Ch09Test, RenderStudyWritesErrorsSlopesAndImages) {
 
 TEST(Ch09Test, RenderStudyIsTheSameWhateverTheThreadCount) {
   const auto one = fresh_dir("ch09_render_threads1"), two = fresh_dir("ch09_render_threads2");
-  const auto cache_one = fresh_dir("ch09_render_cache1"), cache_two = fresh_dir("ch09_render_cache2");
+  const auto cache_one = fresh_dir("ch09_render_cache1"),
+             cache_two = fresh_dir("ch09_render_cache2");
   const std::string flags = k_render + " --sampler sobol";
   ASSERT_EQ(run_program(k_program, flags + " --threads 1 --reference-dir " + cache_one.string() +
                                        " --out " + one.string())
@@ -264,8 +265,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--dims 17", "--dims"}, BadInput{"--dims 1,,2", "--dims"},
         BadInput{"--picture-points 0", "--picture-points"}, BadInput{"--threads 0", "--threads"},
         BadInput{"--seed 18446744073709551616", "--seed"},
-        BadInput{"--sampler halton", "--sampler"},
-        BadInput{"--sampler sobol,owen", "--sampler"},
+        BadInput{"--sampler halton", "--sampler"}, BadInput{"--sampler sobol,owen", "--sampler"},
         BadInput{"--render-max-spp 12", "--render-max-spp"},
         BadInput{"--render-scene furnace", "--render-scene"},
         BadInput{"--render-max-spp 16384 --render-width 4096 --render-height 4096",

@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 namespace {
 
 struct Counts {
-  int pairs = 0;       // PNG + PFM pairs compared
-  int values = 0;      // channel values compared
-  int mid_range = 0;   // of them, with a code value strictly between 0 and 255
+  int pairs = 0;      // PNG + PFM pairs compared
+  int values = 0;     // channel values compared
+  int mid_range = 0;  // of them, with a code value strictly between 0 and 255
 };
 
 // Compares every PNG in `dir` that has a PFM of the same stem beside it.
@@ -63,8 +63,9 @@ Counts expect_png_encodes_pfm(const fs::path& dir) {
 
 TEST(ImageFilesTest, Ch05PngsAreTheSrgbEncodingOfThePfmsBesideThem) {
   const auto dir = fresh_dir("image_files_ch05");
-  const ProgramRun run = run_program(
-      "ch05_path_tracer", "--width 24 --height 18 --spp 4,32 --depth 4 --quiet --out " + dir.string());
+  const ProgramRun run =
+      run_program("ch05_path_tracer",
+                  "--width 24 --height 18 --spp 4,32 --depth 4 --quiet --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Counts counts = expect_png_encodes_pfm(dir);
   EXPECT_EQ(counts.pairs, 2);
@@ -75,7 +76,9 @@ TEST(ImageFilesTest, Ch05PngsAreTheSrgbEncodingOfThePfmsBesideThem) {
 
 TEST(ImageFilesTest, Ch01PngIsTheSrgbEncodingOfThePfmBesideIt) {
   const auto dir = fresh_dir("image_files_ch01");
-  const ProgramRun run = run_program("ch01_ray_tracing", "--width 32 --height 24 --spp 2 --quiet --out " + dir.string());
+  const ProgramRun run =
+      run_program("ch01_ray_tracing",
+                  "--width 32 --height 24 --spp 2 --quiet --out " + dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Counts counts = expect_png_encodes_pfm(dir);
   EXPECT_EQ(counts.pairs, 1);

@@ -26,8 +26,12 @@ TEST(RunFolderChapterTest, AnInterruptedSecondRunLeavesTheFirstWhole) {
   const fs::path dir = fresh_dir("run_folder_interrupted");
   const fs::path out = dir / "out";
   // No reference image (--reference-spp 0): its cache would be a second folder beside --out.
-  ASSERT_EQ(run_program("ch05_path_tracer", "--width 8 --height 6 --spp 1 --reference-spp 0 "
-                                            "--quiet --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(run_program("ch05_path_tracer",
+                        "--width 8 --height 6 --spp 1 --reference-spp 0 "
+                        "--quiet --out " +
+                            out.string())
+                .exit_code,
+            0);
   const std::string first = read_text(out / "summary.json");
   // A run of several seconds, interrupted after a moment.
   const std::string program = std::string(MCRT_BIN_DIR) + "/ch05_path_tracer";

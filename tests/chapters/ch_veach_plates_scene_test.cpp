@@ -26,16 +26,21 @@ struct GlossyRun {
 };
 
 const std::vector<GlossyRun> k_runs{
-    {"ch05_path_tracer", "--width 24 --height 18 --spp 1,4 --depth 3 --reference-spp 4",
-     {"spp_0001.pfm", "spp_0004.pfm"}, true},
-    {"ch06_russian_roulette", "--width 16 --height 12 --spp 2 --depth 4 --paths 4000 --q 0.7,0.9",
+    {"ch05_path_tracer",
+     "--width 24 --height 18 --spp 1,4 --depth 3 --reference-spp 4",
+     {"spp_0001.pfm", "spp_0004.pfm"},
+     true},
+    {"ch06_russian_roulette",
+     "--width 16 --height 12 --spp 2 --depth 4 --paths 4000 --q 0.7,0.9",
      {"depth_cut.pfm", "roulette.pfm"}},
-    {"ch07_importance_sampling", "--width 24 --height 18 --spp 4 --depth 3 --reference-spp 8",
+    {"ch07_importance_sampling",
+     "--width 24 --height 18 --spp 4 --depth 3 --reference-spp 8",
      {"uniform.pfm", "cosine.pfm", "reference.pfm"}},
     // chapter 08: NEE and MIS of the chosen scene (its shoot-out keeps its own scenes)
     {"ch08_next_event_estimation",
      "--width 24 --height 18 --spp 4 --reference-spp 8 --ray-budgets 8 --plates-spp 1",
-     {"nee.pfm", "mis.pfm"}, true},
+     {"nee.pfm", "mis.pfm"},
+     true},
 };
 
 TEST(VeachPlatesChapterTest, HelpOfChapters05To08ListsTheScene) {
@@ -80,9 +85,13 @@ TEST(VeachPlatesChapterTest, Chapter05EnginesAgreeAndAlbedoIsIgnored) {
   const std::string flags =
       "--scene veach-plates --width 21 --height 13 --spp 1,3 --depth 5 --seed 9 "
       "--reference-spp 0 --quiet";
-  ASSERT_EQ(run_program("ch05_path_tracer", flags + " --engine loop --out " + loop.string()).exit_code, 0);
+  ASSERT_EQ(
+      run_program("ch05_path_tracer", flags + " --engine loop --out " + loop.string()).exit_code,
+      0);
   ASSERT_EQ(run_program("ch05_path_tracer", flags + " --out " + lanes.string()).exit_code, 0);
-  ASSERT_EQ(run_program("ch05_path_tracer", flags + " --albedo 0.3 --out " + albedo.string()).exit_code, 0);
+  ASSERT_EQ(
+      run_program("ch05_path_tracer", flags + " --albedo 0.3 --out " + albedo.string()).exit_code,
+      0);
   for (const char* name : {"spp_0001.pfm", "spp_0003.pfm", "spp_0003.png"}) {
     EXPECT_EQ(read_text(loop / name), read_text(lanes / name)) << name;
     EXPECT_EQ(read_text(albedo / name), read_text(lanes / name)) << name;

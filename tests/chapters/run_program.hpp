@@ -28,12 +28,13 @@ inline ProgramRun run_program(const std::string& program, const std::string& arg
   const std::filesystem::path tmp = MCRT_TEST_TMP;
   std::filesystem::create_directories(tmp);
   static int counter = 0;
-  const std::string stem = (tmp / (program + "-" + std::to_string(::getpid()) + "-" +
-                                   std::to_string(counter++))).string();
+  const std::string stem =
+      (tmp / (program + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))
+          .string();
   // The default reference cache (--reference-dir not given) is this build's, never the user's.
   const std::string command = "XDG_CACHE_HOME='" + (tmp / "xdg-cache").string() + "' " +
-                              std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments +
-                              " >" + stem + ".out 2>" + stem + ".err";
+                              std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments + " >" +
+                              stem + ".out 2>" + stem + ".err";
   const int status = std::system(command.c_str());
   ProgramRun run;
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -50,7 +51,8 @@ inline ProgramRun run_program_to_full_stdout(const std::string& program,
                                              const std::string& arguments) {
   const std::filesystem::path tmp = MCRT_TEST_TMP;
   std::filesystem::create_directories(tmp);
-  const std::string err = (tmp / (program + "-" + std::to_string(::getpid()) + "-full.err")).string();
+  const std::string err =
+      (tmp / (program + "-" + std::to_string(::getpid()) + "-full.err")).string();
   const std::string command =
       std::string(MCRT_BIN_DIR) + "/" + program + " " + arguments + " >/dev/full 2>" + err;
   const int status = std::system(command.c_str());
@@ -120,7 +122,8 @@ inline void expect_refused(const std::string& program, const BadInput& input) {
 
 /// With a regular file where the output folder should go (which stops root too), the chapter
 /// exits with code 1 and one line naming the path, and writes nothing anywhere.
-inline void expect_unwritable_output_fails(const std::string& program, const std::string& arguments) {
+inline void expect_unwritable_output_fails(const std::string& program,
+                                           const std::string& arguments) {
   const auto dir = fresh_dir(program + "_unwritable");
   const auto blocker = dir / "blocker";
   { std::ofstream(blocker) << "in the way\n"; }

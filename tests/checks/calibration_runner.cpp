@@ -51,10 +51,10 @@ namespace {
 
 struct Options {
   CommonOptions common;
-  int seeds = 1000;      // at most: a rejection rate of 0.05 is then measured to +-0.007
-  int min_seeds = 200;   // at least: ... to +-0.015; a 1% KS test sees a CDF off by 0.12
-  double budget = 240;   // seconds of wall time for the whole run, pilots included
-  std::string filter;    // run only the checks whose name contains this
+  int seeds = 1000;     // at most: a rejection rate of 0.05 is then measured to +-0.007
+  int min_seeds = 200;  // at least: ... to +-0.015; a 1% KS test sees a CDF off by 0.12
+  double budget = 240;  // seconds of wall time for the whole run, pilots included
+  std::string filter;   // run only the checks whose name contains this
 };
 
 // Seeds every check runs first, to time it.
@@ -65,7 +65,8 @@ constexpr int k_pilot_seeds = 20;
 bool filter_matches(const std::string& filter, const std::string& name) {
   if (!filter.empty() && filter.back() == '$') {
     const std::string end = filter.substr(0, filter.size() - 1);
-    return name.size() >= end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
+    return name.size() >= end.size() &&
+           name.compare(name.size() - end.size(), end.size(), end) == 0;
   }
   return name.find(filter) != std::string::npos;
 }
@@ -142,8 +143,8 @@ std::vector<int> allocate_seeds(const std::vector<Calibration>& pilots, std::siz
     const std::size_t k = order[r];
     const double share = std::max(0.0, left) / static_cast<double>(order.size() - r);
     const double affordable = share / cost[k] + k_pilot_seeds;
-    seeds[k] = static_cast<int>(std::clamp(affordable, static_cast<double>(o.min_seeds),
-                                           static_cast<double>(o.seeds)));
+    seeds[k] = static_cast<int>(
+        std::clamp(affordable, static_cast<double>(o.min_seeds), static_cast<double>(o.seeds)));
     left -= (seeds[k] - k_pilot_seeds) * cost[k];
   }
   return seeds;
@@ -214,9 +215,10 @@ std::string rate_cell(const Rate& r, std::size_t seeds) {
 }
 
 void print_table(const std::vector<Calibration>& rows, double level) {
-  std::printf("Calibration: rejections (rate) on correct code; consistency level a = %.2g per "
-              "test (Sidak: 1%% for the whole run)\n",
-              level);
+  std::printf(
+      "Calibration: rejections (rate) on correct code; consistency level a = %.2g per "
+      "test (Sidak: 1%% for the whole run)\n",
+      level);
   int width = 5;
   for (const Calibration& c : rows) width = std::max(width, static_cast<int>(c.check->name.size()));
   std::printf("%-*s %7s %6s %14s %14s %14s %7s %7s %8s %s\n", width, "check", "alpha", "seeds",
@@ -252,8 +254,7 @@ void write_outputs(const std::filesystem::path& dir, const std::vector<Calibrati
     table << ',' << c.ks_statistic << ',' << c.ks_p << ',' << c.seconds << ','
           << (c.consistent ? "yes" : "no") << '\n';
     for (std::size_t i = 0; i < c.p_values.size(); ++i)
-      all << c.check->name << ',' << calibration_seed(base_seed, i) << ',' << c.p_values[i]
-          << '\n';
+      all << c.check->name << ',' << calibration_seed(base_seed, i) << ',' << c.p_values[i] << '\n';
   }
   // Empirical CDFs: for each check a pair of columns (sorted p-value, fraction i/S); a check
   // with fewer seeds leaves its cells empty in the last rows.
@@ -286,8 +287,9 @@ void write_outputs(const std::filesystem::path& dir, const std::vector<Calibrati
   plot.title = "Empirical CDF of each check's p-values on correct code (ideal: the diagonal)";
   plot.x_label = "p-value";
   plot.y_label = "fraction of seeds with a smaller p-value";
-  plot.settings = "set key outside right font ',8' noenhanced\nset xrange [0:1]\n"
-                  "set yrange [0:1]\n";
+  plot.settings =
+      "set key outside right font ',8' noenhanced\nset xrange [0:1]\n"
+      "set yrange [0:1]\n";
   plot.plot = "plot for [i=1:" + std::to_string(2 * rows.size()) +
               ":2] 'p_value_cdf.csv' using i:i+1 with lines title columnhead(i), "
               "x with lines dt 2 lc 'black' "
@@ -341,11 +343,11 @@ int run(const CLI::App& app, Options o) {
   if (!o.common.quiet) print_table(rows, level);
   const auto inconsistent =
       std::count_if(rows.begin(), rows.end(), [](const Calibration& c) { return !c.consistent; });
-  std::cout << (inconsistent == 0 ? "all " + std::to_string(rows.size()) +
-                                        " checks are consistent with their design"
-                                  : std::to_string(inconsistent) + " of " +
-                                        std::to_string(rows.size()) +
-                                        " checks are INCONSISTENT with their design")
+  std::cout << (inconsistent == 0
+                    ? "all " + std::to_string(rows.size()) +
+                          " checks are consistent with their design"
+                    : std::to_string(inconsistent) + " of " + std::to_string(rows.size()) +
+                          " checks are INCONSISTENT with their design")
             << "; table in " << (o.common.out / "calibration.csv").string() << "\n";
   return inconsistent == 0 ? 0 : 3;
 }
@@ -353,9 +355,10 @@ int run(const CLI::App& app, Options o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Runs every statistical check over many seeds on the correct code and compares "
-               "its rejection rates and p-values with its design (exit code 3 if they differ).",
-               "calibrate_statistical_checks"};
+  CLI::App app{
+      "Runs every statistical check over many seeds on the correct code and compares "
+      "its rejection rates and p-values with its design (exit code 3 if they differ).",
+      "calibrate_statistical_checks"};
   Options o;
   add_common_options(app, o.common, Chapter{"calibration", ""});
   app.add_option("--seeds", o.seeds, "Most seeds per check")->check(CLI::Range(100, 100000));
@@ -363,6 +366,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(k_pilot_seeds, 100000));
   app.add_option("--budget", o.budget, "Seconds the whole run should take (a target)")
       ->check(CLI::Range(1.0, 86400.0));
-  app.add_option("--filter", o.filter, "Run only the checks whose name contains this text (TEXT$: ends with it)");
+  app.add_option("--filter", o.filter,
+                 "Run only the checks whose name contains this text (TEXT$: ends with it)");
   return run_chapter(app, argc, argv, [&] { return run(app, o); });
 }

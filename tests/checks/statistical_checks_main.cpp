@@ -12,9 +12,8 @@ class CheckTest : public ::testing::Test {
   explicit CheckTest(const mcrt::testing::StatisticalCheck& check) : check_(check) {}
   void TestBody() override {
     const double p = check_.p_value(mcrt::testing::k_suite_seed);
-    EXPECT_GE(p, check_.alpha) << check_.name << " rejected at seed "
-                               << mcrt::testing::k_suite_seed << ": p = " << p
-                               << " < alpha = " << check_.alpha;
+    EXPECT_GE(p, check_.alpha) << check_.name << " rejected at seed " << mcrt::testing::k_suite_seed
+                               << ": p = " << p << " < alpha = " << check_.alpha;
   }
 
  private:
@@ -27,6 +26,7 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   for (const auto& check : mcrt::testing::statistical_checks())
     ::testing::RegisterTest("StatisticalCheck", check.name.c_str(), nullptr, nullptr, __FILE__,
-                            __LINE__, [&check]() -> ::testing::Test* { return new CheckTest(check); });
+                            __LINE__,
+                            [&check]() -> ::testing::Test* { return new CheckTest(check); });
   return RUN_ALL_TESTS();
 }

@@ -98,7 +98,8 @@ TEST(StreamKeyTest, ReproducesStreamIndexBelowTwoToThe32) {
   for (int i = 0; i < 50; ++i) values.push_back(rng.next_bits());  // 32-bit draws
   for (std::uint64_t a : values)
     for (std::uint64_t b : values)
-      ASSERT_EQ(stream_key({{a, 1ull << 32}, {b, 1ull << 32}}), stream_index(a, b)) << a << " " << b;
+      ASSERT_EQ(stream_key({{a, 1ull << 32}, {b, 1ull << 32}}), stream_index(a, b))
+          << a << " " << b;
 }
 
 TEST(StreamKeyTest, ThrowsOnAPartOutOfItsRange) {

@@ -24,19 +24,20 @@ using namespace mcrt;
 
 namespace {
 
-bool same_bits(const double* a, const double* b, int n) { return std::memcmp(a, b, n * sizeof(double)) == 0; }
+bool same_bits(const double* a, const double* b, int n) {
+  return std::memcmp(a, b, n * sizeof(double)) == 0;
+}
 
 // A unit normal: a random one, or one of the special ones.
 Vec3 normal_for(int i, Rng& rng) {
-  static const std::vector<Vec3> special{{0, 0, 1},  {0, 0, -1}, {1, 0, 0},  {-1, 0, 0},
-                                         {0, 1, 0},  {0, -1, 0}, {1, 0, 0.0}, {1, 0, -0.0}};
+  static const std::vector<Vec3> special{{0, 0, 1}, {0, 0, -1}, {1, 0, 0},   {-1, 0, 0},
+                                         {0, 1, 0}, {0, -1, 0}, {1, 0, 0.0}, {1, 0, -0.0}};
   if (i % 3 == 0) return special[rng.uniform_below(static_cast<std::uint32_t>(special.size()))];
   return sample_uniform_sphere(rng.uniform2());
 }
 
 double u1_for(int i, Rng& rng) {
-  static const double special[] = {0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875,
-                                   1.0 - 0x1p-32};
+  static const double special[] = {0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0 - 0x1p-32};
   return i % 4 == 0 ? special[rng.uniform_below(9)] : rng.uniform();
 }
 
@@ -57,7 +58,8 @@ TEST(BounceLanesTest, AvxLanesGiveTheOnePathCodesBits) {
       }
       lanes.u0[l] = (trial + l) % 11 == 0 ? 0.0 : rng.uniform();
       lanes.u1[l] = u1_for(trial + l, rng);
-      lanes.bouncing[l] = -static_cast<std::int64_t>((trial >> l) & 1);  // every mask of the four lanes
+      lanes.bouncing[l] =
+          -static_cast<std::int64_t>((trial >> l) & 1);  // every mask of the four lanes
       rays.set(l, Ray(Vec3(rng.uniform()), Vec3(0, 1, 0)));
     }
     BounceLanes fast_lanes = lanes, plain_lanes = lanes;
@@ -128,8 +130,10 @@ TEST(BounceLanesTest, LobedLanesGiveTheOnePathLoopsWeight) {
       if (avx2 && !cpu_has_avx2()) continue;
       BounceLanes out = lanes;
       RayLanes out_rays = rays;
-      if (avx2) bounce_lanes_avx2(out, out_rays);
-      else bounce_lanes_portable(out, out_rays);
+      if (avx2)
+        bounce_lanes_avx2(out, out_rays);
+      else
+        bounce_lanes_portable(out, out_rays);
       for (int l = 0; l < k_bounce_lanes; ++l)
         for (int axis = 0; axis < 3; ++axis)
           ASSERT_TRUE(same_bits(&out.beta[axis][l], &expected[l][axis], 1))

@@ -49,7 +49,8 @@ void randomise(int trial, int max_depth, Rng& rng, PathLanes& paths, BounceLanes
     paths.start(l, rng.next_bits(), rng.next_bits());
     if (((trial >> l) & 1) == 0) paths.stop(l);  // every mask of live lanes
     paths.depth[l] = rng.uniform_below(static_cast<std::uint32_t>(max_depth) + 1);
-    bounce.hit.material[l] = static_cast<std::int64_t>(rng.uniform_below(k_material_count + 1)) - 1;  // -1: a miss
+    bounce.hit.material[l] =
+        static_cast<std::int64_t>(rng.uniform_below(k_material_count + 1)) - 1;  // -1: a miss
     for (int axis = 0; axis < 3; ++axis) {
       paths.radiance[axis][l] = rng.uniform();
       bounce.beta[axis][l] = (trial + l) % 4 == 0 ? weight_for(trial + axis, rng) : rng.uniform();
@@ -69,11 +70,13 @@ TEST(PathLanesTest, EachLaneDrawsItsPathsRngNumbers) {
       paths.start(l, seed, stream);
       rngs.emplace_back(seed, stream);
       ASSERT_EQ(paths.uniform2(l), rngs[l].uniform2()) << "lane " << l;  // the camera ray's
-      bounce.hit.material[l] = 2;                                       // white: all bounce
+      bounce.hit.material[l] = 2;                                        // white: all bounce
     }
     for (int step = 0; step < 50; ++step) {
-      if (avx2) shade_lanes_avx2(materials, 1000, paths, bounce);
-      else shade_lanes_portable(materials, 1000, paths, bounce);
+      if (avx2)
+        shade_lanes_avx2(materials, 1000, paths, bounce);
+      else
+        shade_lanes_portable(materials, 1000, paths, bounce);
       for (int l = 0; l < k_lanes; ++l) {
         const Vec2 u = rngs[l].uniform2();
         ASSERT_EQ(bounce.u0[l], u.x) << "lane " << l << " step " << step << " avx2 " << avx2;
@@ -97,8 +100,10 @@ TEST(PathLanesTest, ShadeAndEndFollowTheLoopsRules) {
       BounceLanes bounce;
       randomise(trial, max_depth, rng, paths, bounce);
       const PathLanes before = paths;
-      if (avx2) shade_lanes_avx2(materials, max_depth, paths, bounce);
-      else shade_lanes_portable(materials, max_depth, paths, bounce);
+      if (avx2)
+        shade_lanes_avx2(materials, max_depth, paths, bounce);
+      else
+        shade_lanes_portable(materials, max_depth, paths, bounce);
       for (int l = 0; l < k_lanes; ++l) {
         const bool live = before.live[l] != 0, hit = bounce.hit.material[l] >= 0;
         const bool bounces = live && hit && before.depth[l] != max_depth;
@@ -122,11 +127,14 @@ TEST(PathLanesTest, ShadeAndEndFollowTheLoopsRules) {
       }
       const PathLanes shaded = paths;
       const BounceLanes bounced = bounce;
-      const unsigned ended = avx2 ? end_lanes_avx2(paths, bounce) : end_lanes_portable(paths, bounce);
+      const unsigned ended =
+          avx2 ? end_lanes_avx2(paths, bounce) : end_lanes_portable(paths, bounce);
       for (int l = 0; l < k_lanes; ++l) {
-        const bool black = bounced.beta[0][l] == 0.0 && bounced.beta[1][l] == 0.0 && bounced.beta[2][l] == 0.0;
+        const bool black =
+            bounced.beta[0][l] == 0.0 && bounced.beta[1][l] == 0.0 && bounced.beta[2][l] == 0.0;
         const bool goes_on = bounced.bouncing[l] != 0 && !black;
-        EXPECT_EQ((ended >> l) & 1, shaded.live[l] != 0 && !goes_on ? 1u : 0u) << trial << " lane " << l;
+        EXPECT_EQ((ended >> l) & 1, shaded.live[l] != 0 && !goes_on ? 1u : 0u)
+            << trial << " lane " << l;
         EXPECT_EQ(paths.depth[l], goes_on ? shaded.depth[l] + 1 : 0) << trial << " lane " << l;
         for (int axis = 0; axis < 3; ++axis) {
           if (goes_on) {  // the path keeps its estimate and weight
@@ -158,7 +166,8 @@ TEST(PathLanesTest, AvxLanesGiveThePortableLanesBits) {
     shade_lanes_portable(materials, max_depth, plain_paths, plain_bounce);
     for (int l = 0; l < k_lanes; ++l) {
       ASSERT_EQ(fast_bounce.bouncing[l], plain_bounce.bouncing[l]) << trial << " lane " << l;
-      ASSERT_EQ((fast_bounce.lobed >> l) & 1u, (plain_bounce.lobed >> l) & 1u) << trial << " lane " << l;
+      ASSERT_EQ((fast_bounce.lobed >> l) & 1u, (plain_bounce.lobed >> l) & 1u)
+          << trial << " lane " << l;
       ASSERT_EQ(fast_paths.rng.state[l], plain_paths.rng.state[l]) << trial << " lane " << l;
       for (int axis = 0; axis < 3; ++axis)
         ASSERT_TRUE(same_bits(fast_paths.radiance[axis][l], plain_paths.radiance[axis][l]))
@@ -178,10 +187,12 @@ TEST(PathLanesTest, AvxLanesGiveThePortableLanesBits) {
     for (int l = 0; l < k_lanes; ++l) {
       ASSERT_EQ(fast_paths.depth[l], plain_paths.depth[l]) << trial;
       for (int axis = 0; axis < 3; ++axis) {
-        ASSERT_TRUE(same_bits(fast_paths.radiance[axis][l], plain_paths.radiance[axis][l])) << trial;
+        ASSERT_TRUE(same_bits(fast_paths.radiance[axis][l], plain_paths.radiance[axis][l]))
+            << trial;
         ASSERT_TRUE(same_bits(fast_bounce.beta[axis][l], plain_bounce.beta[axis][l])) << trial;
         if ((ended >> l) & 1) {
-          ASSERT_TRUE(same_bits(fast_paths.finished[axis][l], plain_paths.finished[axis][l])) << trial;
+          ASSERT_TRUE(same_bits(fast_paths.finished[axis][l], plain_paths.finished[axis][l]))
+              << trial;
         }
       }
     }
@@ -197,8 +208,10 @@ TEST(PathLanesTest, ASceneWithoutMaterialsShadesNothing) {
       paths.start(l, 1, l);
       bounce.hit.material[l] = -1;
     }
-    if (avx2) shade_lanes_avx2({}, 5, paths, bounce);
-    else shade_lanes_portable({}, 5, paths, bounce);
+    if (avx2)
+      shade_lanes_avx2({}, 5, paths, bounce);
+    else
+      shade_lanes_portable({}, 5, paths, bounce);
     EXPECT_EQ(paths.live_lanes(), 0xfu);
     EXPECT_EQ(avx2 ? end_lanes_avx2(paths, bounce) : end_lanes_portable(paths, bounce), 0xfu);
   }

@@ -50,8 +50,10 @@ void check_engine(bool avx2) {
     for (int count = 1; count <= PathStarts::k_capacity; ++count) {
       RowSample next = c.first;
       PathStarts starts;
-      if (avx2) make_path_starts_avx2(camera, c.settings, c.y, next, count, starts);
-      else make_path_starts_portable(camera, c.settings, c.y, next, count, starts);
+      if (avx2)
+        make_path_starts_avx2(camera, c.settings, c.y, next, count, starts);
+      else
+        make_path_starts_portable(camera, c.settings, c.y, next, count, starts);
       RowSample expected = c.first;
       for (int i = 0; i < count; ++i, expected.advance(c.settings.spp)) {
         // render()'s lines for this sample

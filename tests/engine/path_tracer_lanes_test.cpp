@@ -52,9 +52,10 @@ void expect_lecture_image(const Case& c) {
   const Scene scene = make_scene(c.scene);
   const Camera camera(scene.camera, c.width, c.height);
   const RenderSettings settings{c.spp, c.first_sample, 11, c.threads, nullptr};
-  const RenderResult lecture = render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_path_radiance(scene, ray, c.depth, rng, count);
-  });
+  const RenderResult lecture =
+      render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
+        return estimate_path_radiance(scene, ray, c.depth, rng, count);
+      });
   const RenderResult lanes = render_path_tracer_lanes(scene, camera, settings, c.depth);
   ASSERT_EQ(lanes.image.width, lecture.image.width);
   ASSERT_EQ(lanes.image.height, lecture.image.height);
@@ -70,8 +71,7 @@ void expect_lecture_image(const Case& c) {
 }
 
 TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnEveryScene) {
-  for (const std::string& name : scene_names())
-    expect_lecture_image({name, 40, 30, 8, 10, 0, 2});
+  for (const std::string& name : scene_names()) expect_lecture_image({name, 40, 30, 8, 10, 0, 2});
 }
 
 // Widths 1 to 9 with 1 to 3 spp leave every remainder of four lanes in a row; 1031 paths in a
@@ -96,9 +96,11 @@ TEST(PathTracerLanesTest, GivesTheLectureLoopsImageAtEverySizeAndDepth) {
 // one row of 1031 paths; depths 0 to 4 and 10.
 TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnVeachPlatesAtEverySizeAndDepth) {
   for (int width = 1; width <= 9; ++width)
-    for (int spp = 1; spp <= 3; ++spp) expect_lecture_image({"veach-plates", width, 7, spp, 10, 0, 1});
+    for (int spp = 1; spp <= 3; ++spp)
+      expect_lecture_image({"veach-plates", width, 7, spp, 10, 0, 1});
   expect_lecture_image({"veach-plates", 1031, 2, 1, 10, 0, 1});
-  for (int depth = 0; depth <= 4; ++depth) expect_lecture_image({"veach-plates", 24, 18, 4, depth, 0, 1});
+  for (int depth = 0; depth <= 4; ++depth)
+    expect_lecture_image({"veach-plates", 24, 18, 4, depth, 0, 1});
   for (int threads : {1, 2}) expect_lecture_image({"veach-plates", 33, 17, 5, 10, 5, threads});
 }
 
@@ -110,7 +112,8 @@ TEST(PathTracerLanesTest, GivesTheLectureLoopsImageForLaterSamplesAndAnyThreadCo
 // paths (camera rays and their bounces): hit_in_lane of closest_hits gives closest_hit's Hit,
 // field by field, in every lane.
 void expect_closest_hits(const Scene& scene, const std::vector<Ray>& rays) {
-  for (std::size_t first = 0; first + RayLanes::k_lanes <= rays.size(); first += RayLanes::k_lanes) {
+  for (std::size_t first = 0; first + RayLanes::k_lanes <= rays.size();
+       first += RayLanes::k_lanes) {
     RayLanes lanes;
     for (int l = 0; l < RayLanes::k_lanes; ++l) lanes.set(l, rays[first + l]);
     const Scene::ClosestLanes nearest = scene.closest_hits(lanes);
@@ -138,8 +141,10 @@ void expect_closest_hits(const Scene& scene, const std::vector<Ray>& rays) {
         ASSERT_TRUE(hits->found(l)) << "ray " << first + l;
         EXPECT_EQ(hits->material[l], expected->material) << "ray " << first + l;
         for (int axis = 0; axis < 3; ++axis) {
-          EXPECT_TRUE(same_bits(hits->point[axis][l], expected->point[axis])) << "ray " << first + l;
-          EXPECT_TRUE(same_bits(hits->normal[axis][l], expected->normal[axis])) << "ray " << first + l;
+          EXPECT_TRUE(same_bits(hits->point[axis][l], expected->point[axis]))
+              << "ray " << first + l;
+          EXPECT_TRUE(same_bits(hits->normal[axis][l], expected->normal[axis]))
+              << "ray " << first + l;
         }
       }
     }
@@ -160,14 +165,16 @@ TEST(PathTracerLanesTest, FourRaySearchesGiveEachRaysClosestHit) {
           rays.push_back(ray);
           const std::optional<Hit> hit = scene.closest_hit(ray);
           if (!hit) break;
-          ray = spawn_ray(*hit, Frame(hit->normal).to_world(sample_uniform_hemisphere(rng.uniform2())));
+          ray = spawn_ray(*hit,
+                          Frame(hit->normal).to_world(sample_uniform_hemisphere(rng.uniform2())));
         }
       }
     // Random rays from a box around every scene (the sphere box's walls are at most 170 from
     // the origin, the quad box's at most 555, the furnace's 1): some start outside, some inside
     // the primitives, some miss everything.
     for (int i = 0; i < 4000; ++i) {
-      const Vec3 origin(rng.uniform() * 700 - 100, rng.uniform() * 700 - 100, rng.uniform() * 700 - 100);
+      const Vec3 origin(rng.uniform() * 700 - 100, rng.uniform() * 700 - 100,
+                        rng.uniform() * 700 - 100);
       rays.emplace_back(i % 2 ? origin : origin * 0.002, sample_uniform_sphere(rng.uniform2()));
     }
     expect_closest_hits(scene, rays);

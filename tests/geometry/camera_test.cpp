@@ -83,8 +83,8 @@ TEST(CameraTest, CornellSpheresMatchesSmallptsCamera) {
 // ceiling at 81.6, and saw the light's ball from outside.)
 TEST(CameraTest, NoCameraRayOfTheSphereBoxStartsOutsideTheBox) {
   for (const Scene& scene : {make_cornell_spheres(), make_smallpt()})
-    for (const auto& [w, h] : {std::pair{1024, 768}, std::pair{320, 240}, std::pair{256, 192},
-                               std::pair{32, 24}}) {
+    for (const auto& [w, h] :
+         {std::pair{1024, 768}, std::pair{320, 240}, std::pair{256, 192}, std::pair{32, 24}}) {
       const Camera camera(scene.camera, w, h);
       constexpr int k_steps = 64;
       for (int i = 0; i <= k_steps; ++i)
@@ -93,12 +93,12 @@ TEST(CameraTest, NoCameraRayOfTheSphereBoxStartsOutsideTheBox) {
           for (std::size_t k = 0; k < scene.spheres().size(); ++k) {
             const Sphere& s = scene.spheres()[k];
             const double distance = glm::length(ray.origin - s.center);
-            const bool wall = s.radius == 1e5, in_the_room = wall ? distance < s.radius
-                                                                   : distance > s.radius;
-            ASSERT_TRUE(in_the_room) << scene.name << " " << w << "x" << h << " at (" << i
-                                     << ", " << j << "): the ray starts at " << ray.origin.x
-                                     << ", " << ray.origin.y << ", " << ray.origin.z
-                                     << ", beyond sphere " << k;
+            const bool wall = s.radius == 1e5,
+                       in_the_room = wall ? distance < s.radius : distance > s.radius;
+            ASSERT_TRUE(in_the_room)
+                << scene.name << " " << w << "x" << h << " at (" << i << ", " << j
+                << "): the ray starts at " << ray.origin.x << ", " << ray.origin.y << ", "
+                << ray.origin.z << ", beyond sphere " << k;
           }
         }
     }

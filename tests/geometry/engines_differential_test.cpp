@@ -85,7 +85,8 @@ TEST(DiskCounterDifferentialTest, LargeRandomSizes) {
   for (int i = 0; i < 6; ++i) {
     // Up to ~2^18 points, every remainder mod 16 equally likely.
     const std::uint64_t n = 16 * sizes.uniform_below(1u << 14) + sizes.uniform_below(16);
-    expect_engines_agree({n, k_seeds[i % 3], k_streams[(i / 3) % 3] + static_cast<std::uint64_t>(i)});
+    expect_engines_agree(
+        {n, k_seeds[i % 3], k_streams[(i / 3) % 3] + static_cast<std::uint64_t>(i)});
   }
 }
 
@@ -144,9 +145,10 @@ TEST(SphereSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
         const Vec3 local = sample_uniform_sphere(rng.uniform2());
         const Ray ray{random_point(rng, 20.0), local};
         // Default range, a window, and a range starting beyond some near roots.
-        const Interval range = r % 3 == 0   ? Interval{}
-                               : r % 3 == 1 ? Interval{4.0 * rng.uniform(), 4.0 + 20.0 * rng.uniform()}
-                                            : Interval{1e-9, 6.0 * rng.uniform()};
+        const Interval range = r % 3 == 0 ? Interval{}
+                               : r % 3 == 1
+                                   ? Interval{4.0 * rng.uniform(), 4.0 + 20.0 * rng.uniform()}
+                                   : Interval{1e-9, 6.0 * rng.uniform()};
         const SphereSet::Nearest plain = plain_nearest(spheres, ray, range);
         const SphereSet::Nearest portable = set.nearest_portable(ray, range);
         const SphereSet::Nearest chosen = set.nearest(ray, range);
@@ -212,9 +214,10 @@ TEST(QuadSetDifferentialTest, EveryCountFrom0To64WithRandomRays) {
         Vec3 direction = sample_uniform_sphere(rng.uniform2());
         if (r % 4 == 3) direction = Vec3(0.0), direction[r % 3] = rng.uniform() < 0.5 ? -1.0 : 1.0;
         const Ray ray{random_point(rng, 20.0), direction};
-        const Interval range = r % 3 == 0   ? Interval{}
-                               : r % 3 == 1 ? Interval{4.0 * rng.uniform(), 4.0 + 20.0 * rng.uniform()}
-                                            : Interval{1e-9, 6.0 * rng.uniform()};
+        const Interval range = r % 3 == 0 ? Interval{}
+                               : r % 3 == 1
+                                   ? Interval{4.0 * rng.uniform(), 4.0 + 20.0 * rng.uniform()}
+                                   : Interval{1e-9, 6.0 * rng.uniform()};
         const QuadSet::Nearest plain = plain_nearest(quads, ray, range);
         const QuadSet::Nearest portable = set.nearest_portable(ray, range);
         const QuadSet::Nearest chosen = set.nearest(ray, range);
@@ -263,7 +266,6 @@ TEST(QuadSetDifferentialTest, RaysWithinTheParallelThresholdMissInEveryEngine) {
   }
 }
 
-
 // ---------------------------------------------------------------------------------------------
 // Four rays at once: nearest_lanes (both engines) against the plain loop, ray by ray.
 
@@ -281,7 +283,8 @@ void expect_lanes_agree(const std::vector<Shape>& shapes, const Set& set, Rng& r
     for (int l = 0; l < RayLanes::k_lanes; ++l) {
       Vec3 direction = sample_uniform_sphere(rng.uniform2());
       // One ray in four runs along an axis: parallel to a third of the axis-aligned quads.
-      if ((g + l) % 4 == 3) direction = Vec3(0.0), direction[l % 3] = rng.uniform() < 0.5 ? -1.0 : 1.0;
+      if ((g + l) % 4 == 3)
+        direction = Vec3(0.0), direction[l % 3] = rng.uniform() < 0.5 ? -1.0 : 1.0;
       ray[l] = Ray{random_point(rng, 20.0), direction};
       rays.set(l, ray[l]);
       start.t[l] = l % 3 == 0 ? Interval{}.max : t_min + 30.0 * rng.uniform();
@@ -299,8 +302,10 @@ void expect_lanes_agree(const std::vector<Shape>& shapes, const Set& set, Rng& r
       const double index = hit ? static_cast<double>(plain.index) : start.index[l];
       for (const NearestLanes* lanes : {&portable, &chosen, &fast}) {
         if (lanes == &fast && !Set::has_avx2()) continue;
-        EXPECT_EQ(lanes->t[l], t) << shapes.size() << " " << what << ", group " << g << " lane " << l;
-        EXPECT_EQ(lanes->index[l], index) << shapes.size() << " " << what << ", group " << g << " lane " << l;
+        EXPECT_EQ(lanes->t[l], t) << shapes.size() << " " << what << ", group " << g << " lane "
+                                  << l;
+        EXPECT_EQ(lanes->index[l], index)
+            << shapes.size() << " " << what << ", group " << g << " lane " << l;
       }
     }
   }
@@ -381,8 +386,7 @@ TEST(QuadSetDifferentialTest, AxisAlignedQuadsKeepEveryBitOnTheirPlanesAndEdges)
           direction[rng.uniform_below(3)] = rng.uniform() < 0.5 ? -0.0 : 0.0;
           break;
         }
-        default:
-          direction = sample_uniform_sphere(rng.uniform2());
+        default: direction = sample_uniform_sphere(rng.uniform2());
       }
       ray[l] = Ray{whole_point(), direction};
       rays.set(l, ray[l]);
@@ -452,7 +456,8 @@ TEST(QuadSetDifferentialTest, GroupsBehindBoxesGiveThePlainLoopsAnswer) {
         continue;
       }
       const double angle = rng.uniform_below(2) == 0 ? 0.0 : 6.3 * rng.uniform();
-      const Vec3 size(0.5 + 6.0 * rng.uniform(), 0.5 + 6.0 * rng.uniform(), 0.5 + 6.0 * rng.uniform());
+      const Vec3 size(0.5 + 6.0 * rng.uniform(), 0.5 + 6.0 * rng.uniform(),
+                      0.5 + 6.0 * rng.uniform());
       const std::vector<Quad> faces = box_faces(size, angle, random_point(rng, 12.0));
       quads.insert(quads.end(), faces.begin(), faces.end());
       grouped.insert(grouped.end(), faces.size(), true);
@@ -482,8 +487,8 @@ TEST(QuadSetDifferentialTest, GroupsBehindBoxesGiveThePlainLoopsAnswer) {
       if (avx2) set.nearest_lanes_avx2(rays, Interval{}.min, fast);
       for (int l = 0; l < RayLanes::k_lanes; ++l) {
         const QuadSet::Nearest plain = plain_nearest(quads, ray[l], Interval{});
-        const std::string where =
-            "trial " + std::to_string(trial) + ", group " + std::to_string(g) + " lane " + std::to_string(l);
+        const std::string where = "trial " + std::to_string(trial) + ", group " +
+                                  std::to_string(g) + " lane " + std::to_string(l);
         const QuadSet::Nearest portable = set.nearest_portable(ray[l], Interval{});
         EXPECT_EQ(portable.index, plain.index) << where;
         EXPECT_EQ(portable.t, plain.t) << where;

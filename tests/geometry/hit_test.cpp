@@ -105,7 +105,7 @@ TEST(SpawnRayTest, ARayIntoASphereMeetsItsFarSideFromInside) {
       const auto exit = intersect(ball, inside, {});
       ASSERT_TRUE(exit);
       EXPECT_FALSE(exit->front_face);
-      EXPECT_GT(exit->t, 1e-3 * radius) << radius << " " << b;  // the far side, not the entry
+      EXPECT_GT(exit->t, 1e-3 * radius) << radius << " " << b;   // the far side, not the entry
       EXPECT_LT(glm::dot(exit->normal, inside.direction), 0.0);  // the normal faces the ray
       const Ray out = spawn_ray(*exit, inside.direction);
       EXPECT_GT(glm::length(out.origin - ball.center), radius);

@@ -32,7 +32,8 @@ namespace {
 std::vector<Vec3> direction_cases(Rng& rng, int random) {
   std::vector<Vec3> cases;
   for (int octant = 0; octant < 8; ++octant) {
-    const Vec3 sign((octant & 1) ? -1.0 : 1.0, (octant & 2) ? -1.0 : 1.0, (octant & 4) ? -1.0 : 1.0);
+    const Vec3 sign((octant & 1) ? -1.0 : 1.0, (octant & 2) ? -1.0 : 1.0,
+                    (octant & 4) ? -1.0 : 1.0);
     cases.push_back(glm::normalize(sign));
     for (int axis = 0; axis < 3; ++axis)
       for (double nudge : {1e-12, 1e-8, 1e-5, 1e-3}) {
@@ -90,7 +91,8 @@ TEST(FramePropertyTest, OrthonormalRightHandedBasisAroundEveryNormal) {
     EXPECT_EQ(frame.normal, n);
     EXPECT_NEAR(glm::length(frame.tangent), 1.0, 1e-12) << n.x << " " << n.y << " " << n.z;
     EXPECT_NEAR(glm::length(frame.bitangent), 1.0, 1e-12) << n.x << " " << n.y << " " << n.z;
-    EXPECT_NEAR(glm::dot(frame.tangent, frame.bitangent), 0.0, 1e-12) << n.x << " " << n.y << " " << n.z;
+    EXPECT_NEAR(glm::dot(frame.tangent, frame.bitangent), 0.0, 1e-12)
+        << n.x << " " << n.y << " " << n.z;
     EXPECT_NEAR(glm::dot(frame.tangent, n), 0.0, 1e-12) << n.x << " " << n.y << " " << n.z;
     EXPECT_NEAR(glm::dot(frame.bitangent, n), 0.0, 1e-12) << n.x << " " << n.y << " " << n.z;
     // Right-handed: t x b = n, so local directions keep their orientation in every frame.
@@ -123,7 +125,8 @@ SphereCase random_sphere_case(Rng& rng, const Vec3& direction) {
   // Outside: start 1.5 .. 20 radii from the centre, against `direction`, offset sideways
   // by up to 1.2 r so some rays miss and some graze.
   const double back = inside ? 0.0 : r * (1.5 + 18.5 * rng.uniform());
-  const Vec3 side = direction_at(direction, 0.0, rng) * (inside ? 0.9 * r * rng.uniform() : 1.2 * r * rng.uniform());
+  const Vec3 side = direction_at(direction, 0.0, rng) *
+                    (inside ? 0.9 * r * rng.uniform() : 1.2 * r * rng.uniform());
   return {sphere, {sphere.center - back * direction + side, direction}};
 }
 
@@ -159,7 +162,8 @@ TEST(SpherePropertyTest, HitsAgreeWithAnIndependentSolutionFromEveryDirection) {
     ++compared;
     const std::optional<Hit> hit = intersect(sphere, ray, {});
     const bool expected = roots.real && roots.far > 1e-9L * r;
-    ASSERT_EQ(hit.has_value(), expected) << "radius " << r << " direction " << d.x << " " << d.y << " " << d.z;
+    ASSERT_EQ(hit.has_value(), expected)
+        << "radius " << r << " direction " << d.x << " " << d.y << " " << d.z;
     if (!hit) {
       ++misses;
       continue;
@@ -173,7 +177,8 @@ TEST(SpherePropertyTest, HitsAgreeWithAnIndependentSolutionFromEveryDirection) {
     EXPECT_NEAR(glm::length(hit->point - sphere.center), r, tol);
     EXPECT_NEAR(glm::length(hit->normal), 1.0, 1e-12);
     EXPECT_LE(glm::dot(hit->normal, ray.direction), 0.0);
-    EXPECT_NEAR(std::abs(glm::dot(hit->normal, glm::normalize(hit->point - sphere.center))), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(glm::dot(hit->normal, glm::normalize(hit->point - sphere.center))), 1.0,
+                1e-9);
   }
   EXPECT_GT(hits, 2000);
   EXPECT_GT(misses, 500);
@@ -201,11 +206,13 @@ TEST(SpherePropertyTest, SpawnedRaysNeverHitTheirOwnSurface) {
     const auto next = intersect_distance(sphere, spawned, {});
     if (leave) {
       ++leaving;
-      EXPECT_FALSE(next) << "radius " << sphere.radius << " cos " << cos_theta << " t " << next.value_or(0.0);
+      EXPECT_FALSE(next) << "radius " << sphere.radius << " cos " << cos_theta << " t "
+                         << next.value_or(0.0);
     } else {
       ++entering;
       ASSERT_TRUE(next) << "radius " << sphere.radius << " cos " << cos_theta;
-      EXPECT_GT(*next, sphere.radius * cos_theta) << "radius " << sphere.radius << " cos " << cos_theta;
+      EXPECT_GT(*next, sphere.radius * cos_theta)
+          << "radius " << sphere.radius << " cos " << cos_theta;
     }
   }
   EXPECT_GT(leaving, 1500);
@@ -224,7 +231,8 @@ Quad random_quad(Rng& rng) {
   // v: in the plane, 20 .. 160 degrees from u (sheared parallelograms too).
   const double angle = k_pi * (0.11 + 0.78 * rng.uniform());
   const Vec3 w = glm::normalize(glm::cross(n, u));
-  const Vec3 v = size * (0.3 + rng.uniform()) * (std::cos(angle) * glm::normalize(u) + std::sin(angle) * w);
+  const Vec3 v =
+      size * (0.3 + rng.uniform()) * (std::cos(angle) * glm::normalize(u) + std::sin(angle) * w);
   const Vec3 corner = 100.0 * size * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5);
   return Quad(corner, u, v, 1);
 }
@@ -271,14 +279,15 @@ TEST(QuadPropertyTest, HitsAgreeWithAnIndependentSolutionFromEveryDirection) {
     // Skip what round-off decides: edge coordinates within 1e-6 of an edge, or a ray within
     // 1e-9 of parallel to the plane.
     const double cos_plane = std::abs(glm::dot(q.normal(), d));
-    if (cos_plane < 1e-6 || std::abs(static_cast<double>(s.a)) < 1e-6 || std::abs(static_cast<double>(s.a - 1)) < 1e-6 ||
+    if (cos_plane < 1e-6 || std::abs(static_cast<double>(s.a)) < 1e-6 ||
+        std::abs(static_cast<double>(s.a - 1)) < 1e-6 ||
         std::abs(static_cast<double>(s.b)) < 1e-6 || std::abs(static_cast<double>(s.b - 1)) < 1e-6)
       continue;
     ++compared;
     const bool expected = s.a > 0 && s.a < 1 && s.b > 0 && s.b < 1 && s.t > 1e-9L;
     const std::optional<Hit> hit = intersect(q, ray, {});
-    ASSERT_EQ(hit.has_value(), expected) << "a " << static_cast<double>(s.a) << " b " << static_cast<double>(s.b)
-                                         << " cos " << cos_plane;
+    ASSERT_EQ(hit.has_value(), expected) << "a " << static_cast<double>(s.a) << " b "
+                                         << static_cast<double>(s.b) << " cos " << cos_plane;
     if (!hit) {
       ++misses;
       continue;
@@ -303,7 +312,8 @@ TEST(QuadPropertyTest, SpawnedRaysNeverHitTheirOwnSurface) {
   for (const Vec3& d : direction_cases(rng, 6000)) {
     const Quad q = random_quad(rng);
     const double size = std::sqrt(q.area());
-    const Vec3 target = q.corner() + (0.05 + 0.9 * rng.uniform()) * q.edge_u() + (0.05 + 0.9 * rng.uniform()) * q.edge_v();
+    const Vec3 target = q.corner() + (0.05 + 0.9 * rng.uniform()) * q.edge_u() +
+                        (0.05 + 0.9 * rng.uniform()) * q.edge_v();
     // Incoming rays at any angle to either face, grazing ones included; the case's direction
     // picks the face.
     const double cos_in = random_cos(rng);

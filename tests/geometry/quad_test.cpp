@@ -31,15 +31,15 @@ TEST(QuadTest, FrontAndBackHits) {
 }
 
 TEST(QuadTest, EdgesAndOutside) {
-  EXPECT_TRUE(intersect_distance(k_square, {{1.0, 0.0, 1}, {0, 0, -1}}, {}));   // on an edge
+  EXPECT_TRUE(intersect_distance(k_square, {{1.0, 0.0, 1}, {0, 0, -1}}, {}));  // on an edge
   EXPECT_FALSE(intersect_distance(k_square, {{1.001, 0.0, 1}, {0, 0, -1}}, {}));
   EXPECT_FALSE(intersect_distance(k_square, {{0, -1.5, 1}, {0, 0, -1}}, {}));
 }
 
 TEST(QuadTest, ParallelAndBehindRaysMiss) {
-  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 0}, {1, 0, 0}}, {}));   // in the plane
-  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 1, 0}}, {}));   // parallel above
-  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 0, 1}}, {}));   // plane behind
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 0}, {1, 0, 0}}, {}));  // in the plane
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 1, 0}}, {}));  // parallel above
+  EXPECT_FALSE(intersect_distance(k_square, {{0, 0, 1}, {0, 0, 1}}, {}));  // plane behind
 }
 
 TEST(QuadTest, TMinExcludesTheOrigin) {
@@ -80,8 +80,8 @@ TEST(QuadTest, PlaneOffsetFormAgreesWithTheHitPointForm) {
   std::uniform_real_distribution<double> coordinate(0.0, 600.0), signed_unit(-1.0, 1.0);
   auto point = [&] { return Vec3(coordinate(random), coordinate(random), coordinate(random)); };
   auto vector = [&](double length) {
-    return length * glm::normalize(Vec3(signed_unit(random), signed_unit(random),
-                                        signed_unit(random)));
+    return length *
+           glm::normalize(Vec3(signed_unit(random), signed_unit(random), signed_unit(random)));
   };
   int hits = 0, compared = 0;
   for (int i = 0; i < 20000; ++i) {
@@ -97,8 +97,8 @@ TEST(QuadTest, PlaneOffsetFormAgreesWithTheHitPointForm) {
     if (cosine < 0.1 || distance < 1.0) continue;
     ++compared;
     // Where the old form puts the point, in edge coordinates.
-    const double t_plane = glm::dot(q.plane_normal(), q.corner() - origin) /
-                           glm::dot(q.plane_normal(), ray.direction);
+    const double t_plane =
+        glm::dot(q.plane_normal(), q.corner() - origin) / glm::dot(q.plane_normal(), ray.direction);
     const Vec3 p = ray.at(t_plane) - q.corner();
     const double a = q.coordinate_a(p), b = q.coordinate_b(p);
     const double margin =
@@ -110,8 +110,8 @@ TEST(QuadTest, PlaneOffsetFormAgreesWithTheHitPointForm) {
     }
     if (!before || !after) continue;
     ++hits;
-    const double bound = 2.0 * 8.0 * 0x1p-53 *
-                         (glm::length(q.corner()) + glm::length(origin)) / cosine;
+    const double bound =
+        2.0 * 8.0 * 0x1p-53 * (glm::length(q.corner()) + glm::length(origin)) / cosine;
     EXPECT_NEAR(*after, *before, bound) << "quad " << i;
   }
   // Floors, so the comparison cannot pass empty: the fixed seed gives far more.

@@ -27,21 +27,21 @@ constexpr std::uint64_t k_ball_streams = 0x0203'0000;
 // 4 e-4, so a bias above ~2e-3 is found.
 MCRT_STATISTICAL_CHECK(disk_area_mean_is_pi, k_alpha) {
   return mcrt::testing::pooled_mean_p_value(mcrt::estimate_disk_area_fast, mcrt::k_pi,
-                                           mcrt::disk_area_theory_std, 3, seed, k_mean_streams);
+                                            mcrt::disk_area_theory_std, 3, seed, k_mean_streams);
 }
 
 // 4000 estimates at N = 1000 (not a multiple of the 16 lanes): s^2 has a relative standard
 // error of sqrt(2 / 4000) = 2.2 %, so a variance off by 10 % is found.
 MCRT_STATISTICAL_CHECK(disk_area_variance_is_16pq_over_n, k_alpha) {
   return mcrt::testing::variance_p_value(mcrt::estimate_disk_area_fast, 4.0,
-                                        mcrt::k_disk_hit_probability, 1000, 4000, seed,
-                                        k_variance_stream);
+                                         mcrt::k_disk_hit_probability, 1000, 4000, seed,
+                                         k_variance_stream);
 }
 
 // 200 trials at each N of a 4-per-decade grid from 10 to 10^5 (17 sizes, 4.6e7 points).
 MCRT_STATISTICAL_CHECK(disk_area_error_slope_is_minus_one_half, k_alpha) {
   return mcrt::testing::error_slope(mcrt::estimate_disk_area_fast, mcrt::k_pi, 10, 100000, 200,
-                                   seed, k_slope_streams)
+                                    seed, k_slope_streams)
       .p_value;
 }
 

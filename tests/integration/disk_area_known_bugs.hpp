@@ -28,7 +28,9 @@ inline double disk_area_identical_lanes(std::uint64_t n, Rng& rng) {
 }
 
 /// Wrong: a fixed bias of 0.02, so the rms error stops falling once sigma is below it.
-inline double disk_area_biased(std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng) + 0.02; }
+inline double disk_area_biased(std::uint64_t n, Rng& rng) {
+  return estimate_disk_area(n, rng) + 0.02;
+}
 
 /// Wrong: the 3-ball's estimate scaled by 2^(k-1) instead of 2^k.
 inline double ball_volume_half_scale(std::uint64_t n, Rng& rng) {
@@ -43,12 +45,15 @@ inline double disk_area_nearest_multiple_of_four_over_n(std::uint64_t n, Rng&) {
 }
 
 /// Wrong: 4N points drawn where N were asked: unbiased, a quarter of the variance.
-inline double disk_area_four_times_the_points(std::uint64_t n, Rng& rng) { return estimate_disk_area(4 * n, rng); }
+inline double disk_area_four_times_the_points(std::uint64_t n, Rng& rng) {
+  return estimate_disk_area(4 * n, rng);
+}
 
 /// Wrong, not Monte Carlo: the expected count N p (rounded) in place of the count M, so
 /// 2^k round(N p) / N with p = V_k / 2^k: no random number drawn, zero spread.
 inline double ball_volume_expected_count(int k, std::uint64_t n, Rng&) {
-  return std::ldexp(std::round(hit_count_mean(n, ball_hit_probability(k))), k) / static_cast<double>(n);
+  return std::ldexp(std::round(hit_count_mean(n, ball_hit_probability(k))), k) /
+         static_cast<double>(n);
 }
 
 }  // namespace mcrt::testing

@@ -18,8 +18,8 @@ namespace mcrt::testing {
 
 /// Sample sizes for the pooled mean test: tiny ones (where 4 M / N takes a handful of values),
 /// sizes that are not multiples of the 16 generator lanes, and a few large ones.
-inline const std::vector<std::uint64_t> k_pooled_sizes = {1,    2,     10,    17,        100,
-                                                          1000, 4099,  65536, 1000003,   4194319};
+inline const std::vector<std::uint64_t> k_pooled_sizes = {1,    2,    10,    17,      100,
+                                                          1000, 4099, 65536, 1000003, 4194319};
 
 /// Pooled z-test of the mean. `trials` estimates F_i at every size n_i, from streams
 /// (stream_base + i, trial). The weighted mean sum n_i F_i / sum n_i is again unbiased, with
@@ -39,8 +39,7 @@ double pooled_mean_p_value(Estimate&& estimate, double exact, TheoryStd&& theory
       weighted_variance += n_d * n_d * sigma * sigma;
     }
   }
-  return z_test_p_value(weighted_sum / total_n, exact,
-                               std::sqrt(weighted_variance) / total_n);
+  return z_test_p_value(weighted_sum / total_n, exact, std::sqrt(weighted_variance) / total_n);
 }
 
 /// The sample variance s^2 of `trials` estimates |box| M / N at one n, against its closed form
@@ -58,7 +57,8 @@ double variance_p_value(Estimate&& estimate, double box_volume, double p, std::u
   }
   const double n_d = static_cast<double>(n), q = 1.0 - p;
   const double sigma2 = box_volume * box_volume * p * q / n_d;
-  const double mu4 = std::pow(box_volume / n_d, 4.0) * n_d * p * q * (1.0 + 3.0 * (n_d - 2.0) * p * q);
+  const double mu4 =
+      std::pow(box_volume / n_d, 4.0) * n_d * p * q * (1.0 + 3.0 * (n_d - 2.0) * p * q);
   return variance_z_test_p_value(stats.variance(), static_cast<std::uint64_t>(trials), sigma2, mu4);
 }
 
@@ -97,8 +97,7 @@ SlopeResult error_slope(Estimate&& estimate, double exact, std::uint64_t first, 
   const LineFit fit = fit_log_log(ns, rmses);
   const double dof = static_cast<double>(grid.size()) - 2.0;
   const double t = std::abs(fit.slope + 0.5) / fit.slope_standard_error;
-  const double p = 2.0 * boost::math::cdf(
-                             boost::math::complement(boost::math::students_t(dof), t));
+  const double p = 2.0 * boost::math::cdf(boost::math::complement(boost::math::students_t(dof), t));
   return {fit.slope, fit.slope_standard_error, p};
 }
 

@@ -33,7 +33,7 @@ TEST(HitOrMissTheoryTest, BernoulliMomentsAndStandardDeviations) {
   EXPECT_DOUBLE_EQ(ball_hit_probability(2), p);
   EXPECT_DOUBLE_EQ(ball_volume_theory_std(2, 400), disk_area_theory_std(400));
   EXPECT_DOUBLE_EQ(ball_hit_probability(1), 1.0);  // the segment fills its cube
-  EXPECT_EQ(ball_volume_theory_std(1, 10), 0.0);  // every point of [-1, 1) is inside
+  EXPECT_EQ(ball_volume_theory_std(1, 10), 0.0);   // every point of [-1, 1) is inside
   EXPECT_DOUBLE_EQ(ball_hit_probability(3), k_pi / 6.0);
   // The relative std sqrt((1 - q) / (q N)) grows with k.
   for (int k = 2; k < 12; ++k)
@@ -62,13 +62,16 @@ constexpr double k_alpha = 1e-4;
 
 TEST(DiskAreaProceduresTest, RejectKnownWrongEstimators) {
   const std::uint64_t seed = 20261122;
-  EXPECT_LT(mcrt::testing::pooled_mean_p_value(mcrt::testing::disk_area_same_coordinate_twice, k_pi, disk_area_theory_std, 1,
-                                        seed, 0),
+  EXPECT_LT(mcrt::testing::pooled_mean_p_value(mcrt::testing::disk_area_same_coordinate_twice, k_pi,
+                                               disk_area_theory_std, 1, seed, 0),
             k_alpha);
-  EXPECT_LT(mcrt::testing::variance_p_value(mcrt::testing::disk_area_identical_lanes, 4.0, k_disk_hit_probability, 1024, 1000,
-                                     seed, 1),
+  EXPECT_LT(mcrt::testing::variance_p_value(mcrt::testing::disk_area_identical_lanes, 4.0,
+                                            k_disk_hit_probability, 1024, 1000, seed, 1),
             k_alpha);
-  EXPECT_LT(mcrt::testing::error_slope(mcrt::testing::disk_area_biased, k_pi, 10, 100000, 50, seed, 2).p_value, k_alpha);
+  EXPECT_LT(mcrt::testing::error_slope(mcrt::testing::disk_area_biased, k_pi, 10, 100000, 50, seed,
+                                       2)
+                .p_value,
+            k_alpha);
   EXPECT_LT(mcrt::testing::pooled_mean_p_value(
                 mcrt::testing::ball_volume_half_scale, unit_ball_volume(3),
                 [](std::uint64_t n) { return ball_volume_theory_std(3, n); }, 1, seed, 3),
@@ -79,8 +82,8 @@ TEST(DiskAreaProceduresTest, AcceptTheRightEstimatorAtSmallSizes) {
   // The same procedures, smaller, on the lecture's loop (another seed than the checks, which
   // run the chapter's engine): each passes with probability 1 - 1e-4.
   const std::uint64_t seed = 77;
-  EXPECT_GE(mcrt::testing::variance_p_value(estimate_disk_area, 4.0, k_disk_hit_probability, 64, 2000,
-                                     seed, 4),
+  EXPECT_GE(mcrt::testing::variance_p_value(estimate_disk_area, 4.0, k_disk_hit_probability, 64,
+                                            2000, seed, 4),
             k_alpha);
   const auto slope = mcrt::testing::error_slope(estimate_disk_area, k_pi, 10, 10000, 50, seed, 5);
   EXPECT_GE(slope.p_value, k_alpha) << "slope " << slope.slope << " +- " << slope.standard_error;

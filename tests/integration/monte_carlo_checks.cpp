@@ -21,8 +21,8 @@ namespace {
 // average of T N >= 1e5 bounded values, normal to far better than the test needs.
 // False-failure rate alpha = 1e-4.
 template <class Integrand, class Domain>
-double unbiased_p_value(const Integrand& f, const Domain& domain, double volume,
-                        std::uint64_t seed, int trials, std::uint64_t n) {
+double unbiased_p_value(const Integrand& f, const Domain& domain, double volume, std::uint64_t seed,
+                        int trials, std::uint64_t n) {
   mcrt::RunningStats estimates;
   for (int t = 0; t < trials; ++t) {
     mcrt::Rng rng(seed, static_cast<std::uint64_t>(t));

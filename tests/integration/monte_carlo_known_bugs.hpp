@@ -55,8 +55,7 @@ double monte_carlo_without_volume(const F& f, const Segment& domain, std::uint64
 
 /// Wrong: samples from a slightly short interval [a, b - 1%], weighted by the full length.
 template <class F>
-double monte_carlo_on_short_interval(const F& f, const Segment& domain, std::uint64_t n,
-                                     Rng& rng) {
+double monte_carlo_on_short_interval(const F& f, const Segment& domain, std::uint64_t n, Rng& rng) {
   const Segment short_domain{domain.lower, domain.upper - 0.01 * domain.length()};
   return monte_carlo(f, short_domain, n, rng).estimate / short_domain.length() * domain.length();
 }
@@ -65,7 +64,8 @@ double monte_carlo_on_short_interval(const F& f, const Segment& domain, std::uin
 /// off as F_N, with a "standard error" from the spread of its f values as F_N's would be: no
 /// random number drawn, zero spread (its error, (b - a) h^2 f'' / 24, is far below F_N's sd).
 template <class F>
-MonteCarloEstimate monte_carlo_midpoint_rule(const F& f, const Segment& domain, std::uint64_t n, Rng&) {
+MonteCarloEstimate monte_carlo_midpoint_rule(const F& f, const Segment& domain, std::uint64_t n,
+                                             Rng&) {
   const double h = domain.length() / static_cast<double>(n);
   double total = 0.0, total_of_squares = 0.0;
   for (std::uint64_t i = 0; i < n; ++i) {

@@ -33,8 +33,8 @@ TEST(MonteCarlo, ConstantIntegrandIsExactWithZeroStandardError) {
   // f = 0.75: every term is the same, sum = 0.75 N exactly, so F_N = vol * 0.75 with no
   // round-off at all and s^2 = 0.
   Rng rng(7, 0);
-  const auto result = mcrt::monte_carlo([](std::span<const double>) { return 0.75; }, test_box(),
-                                        1000, rng);
+  const auto result =
+      mcrt::monte_carlo([](std::span<const double>) { return 0.75; }, test_box(), 1000, rng);
   EXPECT_EQ(result.estimate, 3.0);
   EXPECT_EQ(result.standard_error, 0.0);
   Rng rng1(7, 1);
@@ -105,8 +105,9 @@ TEST(MonteCarlo, VarianceClosedForm) {
 TEST(MonteCarlo, ZTestRejectsKnownWrongEstimators) {
   const mcrt::Cubic cubic;
   const std::uint64_t n = 200000;
-  const double standard_error = std::sqrt(mcrt::monte_carlo_variance(
-      cubic.domain.length(), cubic.reference(), cubic.integral_of_square(), n));
+  const double standard_error =
+      std::sqrt(mcrt::monte_carlo_variance(cubic.domain.length(), cubic.reference(),
+                                           cubic.integral_of_square(), n));
   Rng rng(42, 0), rng_short(42, 1), rng_right(42, 2);
   const auto p = [&](double estimate) {
     return mcrt::testing::z_test_p_value(estimate, cubic.reference(), standard_error);

@@ -106,7 +106,7 @@ TEST(HypothesisTest, VarianceTestIsTwoSided) {
   // chi^2 with 10 dof: 20.48318 at 0.975 and 3.246973 at 0.025; n = 11 values.
   EXPECT_NEAR(variance_test_p_value(2.048318, 11, 1.0), 0.05, k_table_tol);
   EXPECT_NEAR(variance_test_p_value(0.3246973, 11, 1.0), 0.05, k_table_tol);
-  EXPECT_EQ(variance_test_p_value(0.0, 11, 1.0), 0.0);  // identical values: caught at once
+  EXPECT_EQ(variance_test_p_value(0.0, 11, 1.0), 0.0);    // identical values: caught at once
   EXPECT_EQ(variance_test_p_value(0.0, 4000, 1.0), 0.0);  // ... for any number of them
 }
 
@@ -114,8 +114,8 @@ TEST(HypothesisTest, VarianceZTestUsesTheFourthMoment) {
   // Uniform values: sigma^2 = 1/12, mu4 = 1/80, so Var[s^2] = (1/80 - (n-3)/(n-1)/144) / n.
   const std::uint64_t n = 100000;
   const double sd = std::sqrt((1.0 / 80.0 - (n - 3.0) / (n - 1.0) / 144.0) / n);
-  EXPECT_NEAR(variance_z_test_p_value(1.0 / 12.0 + 1.959964 * sd, n, 1.0 / 12.0, 1.0 / 80.0),
-              0.05, k_table_tol);
+  EXPECT_NEAR(variance_z_test_p_value(1.0 / 12.0 + 1.959964 * sd, n, 1.0 / 12.0, 1.0 / 80.0), 0.05,
+              k_table_tol);
   // The uniform's light tails make s^2 steadier than for normal values (mu4 = 3 sigma^4):
   // the same deviation is more significant.
   const double normal_sd = std::sqrt(2.0 / (n - 1.0)) / 12.0;
@@ -303,8 +303,10 @@ TEST(ChiSquareTest, FailureReportHasOneRowPerCellAndAPlotScript) {
     }
     observed += v[6];
     expected += v[7];
-    if (v[0] == 0) EXPECT_GT(v[6], 0.0);  // the left column has every sample
-    else EXPECT_EQ(v[6], 0.0);
+    if (v[0] == 0)
+      EXPECT_GT(v[6], 0.0);  // the left column has every sample
+    else
+      EXPECT_EQ(v[6], 0.0);
     ++rows;
   }
   EXPECT_EQ(rows, 9);

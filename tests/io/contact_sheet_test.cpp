@@ -64,9 +64,10 @@ TEST(TextTest, WidthAndHeightArithmetic) {
   EXPECT_EQ(text_width("", 2), 0);
   EXPECT_GT(text_width("a", 1), 0);
   // Widths add up glyph by glyph and grow linearly with the scale.
-  EXPECT_EQ(text_width("N=4 k=3", 1), text_width("N=4", 1) + text_width(" ", 1) + text_width("k=3", 1));
+  EXPECT_EQ(text_width("N=4 k=3", 1),
+            text_width("N=4", 1) + text_width(" ", 1) + text_width("k=3", 1));
   EXPECT_EQ(text_width("1 spp"), 2 * text_width("1 spp", 1));  // default scale 2
-  EXPECT_EQ(text_width("\xC3\xA9", 3), text_width("?", 3));     // UTF-8 'e acute' is one glyph
+  EXPECT_EQ(text_width("\xC3\xA9", 3), text_width("?", 3));    // UTF-8 'e acute' is one glyph
   EXPECT_GE(text_height(1), 7);  // capitals are 7 units tall, descenders reach below
   EXPECT_EQ(text_height(), 2 * text_height(1));
   EXPECT_EQ(text_height(3), 3 * text_height(1));
@@ -87,8 +88,8 @@ TEST(TextTest, DrawsOnlyInsideItsBoxAndOnlyInTheTextColour) {
       const Color& c = image.at(x, y);
       if (c == k_background) continue;
       EXPECT_EQ(c, k_ink) << "at " << x << "," << y;
-      const bool inside = x >= x0 && x < x0 + text_width(text, scale) && y >= y0 &&
-                          y < y0 + text_height(scale);
+      const bool inside =
+          x >= x0 && x < x0 + text_width(text, scale) && y >= y0 && y < y0 + text_height(scale);
       EXPECT_TRUE(inside) << "pixel outside the text box at " << x << "," << y;
       ++inked;
     }
@@ -138,10 +139,12 @@ TEST(TextTest, EachFontPixelIsAScaleByScaleBlock) {
 TEST(TextTest, UnknownCharactersDrawAsQuestionMark) {
   const std::string question = rendering("?", 2);
   for (const std::string unknown : {"\x01", "\n", "\t", "\x7f", "\xff", "\xC3\xA9", "\xE2\x88\x9A"})
-    EXPECT_EQ(rendering(unknown, 2), question) << "for byte 0x" << std::hex
-                                               << (static_cast<unsigned char>(unknown[0]) + 0);
-  EXPECT_EQ(rendering("a\xC3\xA9" "b"), rendering("a?b"));  // one glyph per UTF-8 character
-  EXPECT_NE(rendering("A"), rendering("?"));                // and known ones are not '?'
+    EXPECT_EQ(rendering(unknown, 2), question)
+        << "for byte 0x" << std::hex << (static_cast<unsigned char>(unknown[0]) + 0);
+  EXPECT_EQ(rendering("a\xC3\xA9"
+                      "b"),
+            rendering("a?b"));                // one glyph per UTF-8 character
+  EXPECT_NE(rendering("A"), rendering("?"));  // and known ones are not '?'
 }
 
 TEST(TextTest, ClippingAtEveryEdgeMatchesACropOfAnUnclippedDrawing) {
@@ -162,8 +165,9 @@ TEST(TextTest, ClippingAtEveryEdgeMatchesACropOfAnUnclippedDrawing) {
 TEST(TextTest, ExtremePositionsDrawNothingAndDoNotOverflow) {
   const std::string text(200, 'W');
   Image image(8, 8, k_background);
-  const std::pair<int, int> far_away[] = {{INT_MAX, 0}, {INT_MIN, 0}, {0, INT_MAX}, {0, INT_MIN},
-                                          {INT_MAX - 3, INT_MAX - 3}, {INT_MIN, INT_MIN}};
+  const std::pair<int, int> far_away[] = {
+      {INT_MAX, 0},      {INT_MIN, 0}, {0, INT_MAX}, {0, INT_MIN}, {INT_MAX - 3, INT_MAX - 3},
+      {INT_MIN, INT_MIN}};
   for (const auto& [x, y] : far_away) draw_text(image, x, y, text, k_ink, 1000);
   EXPECT_EQ(count_pixels(image, k_background), 64);
   // The fourth 'T' starts at x = 0, and its top bar's first font unit covers the whole image.
@@ -229,7 +233,8 @@ TEST(ContactSheetTest, EachImageIsCopiedToItsCellAndNothingElseIsOverwritten) {
   // Labels "k=i" at scale 2 over images up to 12 x 8: band = text height + 2 scale; the title
   // band is its text height + gap.
   int widest_label = 0;
-  for (const LabelledImage& cell : cells) widest_label = std::max(widest_label, text_width(cell.label, 2));
+  for (const LabelledImage& cell : cells)
+    widest_label = std::max(widest_label, text_width(cell.label, 2));
   const int cell_width = std::max(12, widest_label), band = text_height(2) + 4;
   const int cell_height = band + 8, title_band = text_height(2) + 5;
   ASSERT_EQ(sheet.width, 5 + 3 * (cell_width + 5));
@@ -257,8 +262,7 @@ TEST(ContactSheetTest, EachImageIsCopiedToItsCellAndNothingElseIsOverwritten) {
   }
   // Everything else is background, label ink or the title: the images appear once each.
   const int ink = count_pixels(sheet, k_ink);
-  EXPECT_EQ(count_pixels(sheet, k_background) + ink + image_pixels,
-            sheet.width * sheet.height);
+  EXPECT_EQ(count_pixels(sheet, k_background) + ink + image_pixels, sheet.width * sheet.height);
   int expected_ink = ink_count("T", 2);
   for (const LabelledImage& cell : cells) expected_ink += ink_count(cell.label, 2);
   EXPECT_EQ(ink, expected_ink);

@@ -30,18 +30,22 @@ struct DecodedPng {
   std::vector<std::uint8_t> bytes;
   std::uint8_t at(int x, int y, int c) const {
     return bytes[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                  static_cast<std::size_t>(x)) * static_cast<std::size_t>(channels) +
+                  static_cast<std::size_t>(x)) *
+                     static_cast<std::size_t>(channels) +
                  static_cast<std::size_t>(c)];
   }
 };
 
 inline DecodedPng decode_png(const std::string& file_bytes) {
   DecodedPng png;
-  unsigned char* data = stbi_load_from_memory(
-      reinterpret_cast<const unsigned char*>(file_bytes.data()), static_cast<int>(file_bytes.size()),
-      &png.width, &png.height, &png.channels, 0);
-  if (!data) throw std::runtime_error(std::string("stb_image cannot decode: ") + stbi_failure_reason());
-  png.bytes.assign(data, data + static_cast<std::size_t>(png.width) * static_cast<std::size_t>(png.height) *
+  unsigned char* data =
+      stbi_load_from_memory(reinterpret_cast<const unsigned char*>(file_bytes.data()),
+                            static_cast<int>(file_bytes.size()), &png.width, &png.height,
+                            &png.channels, 0);
+  if (!data)
+    throw std::runtime_error(std::string("stb_image cannot decode: ") + stbi_failure_reason());
+  png.bytes.assign(data, data + static_cast<std::size_t>(png.width) *
+                                    static_cast<std::size_t>(png.height) *
                                     static_cast<std::size_t>(png.channels));
   stbi_image_free(data);
   return png;
@@ -50,11 +54,13 @@ inline DecodedPng decode_png(const std::string& file_bytes) {
 /// A colour PFM's floats, row 0 at the top (already turned round from the file's order).
 struct PfmPixels {
   int width = 0, height = 0;
-  double scale = 0.0;       ///< as written in the header (its sign is the byte order)
-  std::vector<float> rgb;   ///< 3 floats per pixel, row-major, row 0 at the top
+  double scale = 0.0;      ///< as written in the header (its sign is the byte order)
+  std::vector<float> rgb;  ///< 3 floats per pixel, row-major, row 0 at the top
   float at(int x, int y, int c) const {
     return rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                static_cast<std::size_t>(x)) * 3 + static_cast<std::size_t>(c)];
+                static_cast<std::size_t>(x)) *
+                   3 +
+               static_cast<std::size_t>(c)];
   }
 };
 
@@ -76,9 +82,11 @@ inline PfmPixels read_pfm_bytes(const std::string& file) {
   pfm.height = std::stoi(token());
   pfm.scale = std::stod(token());
   ++pos;  // exactly one whitespace character ends the header
-  if (pfm.width <= 0 || pfm.height <= 0 || pfm.scale == 0.0) throw std::runtime_error("bad PFM header");
+  if (pfm.width <= 0 || pfm.height <= 0 || pfm.scale == 0.0)
+    throw std::runtime_error("bad PFM header");
   const bool little_endian = pfm.scale < 0.0;
-  const std::size_t count = static_cast<std::size_t>(pfm.width) * static_cast<std::size_t>(pfm.height) * 3;
+  const std::size_t count =
+      static_cast<std::size_t>(pfm.width) * static_cast<std::size_t>(pfm.height) * 3;
   if (file.size() - pos != count * 4) throw std::runtime_error("PFM raster has the wrong size");
   pfm.rgb.resize(count);
   for (int row = 0; row < pfm.height; ++row) {  // row 0 of the file is the image's bottom row
@@ -93,7 +101,9 @@ inline PfmPixels read_pfm_bytes(const std::string& file) {
         float v;
         std::memcpy(&v, &bits, sizeof v);
         pfm.rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(pfm.width) +
-                 static_cast<std::size_t>(x)) * 3 + static_cast<std::size_t>(c)] = v;
+                 static_cast<std::size_t>(x)) *
+                    3 +
+                static_cast<std::size_t>(c)] = v;
       }
   }
   return pfm;

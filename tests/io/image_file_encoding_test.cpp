@@ -30,8 +30,8 @@ struct KnownCode {
   int code;
 };
 constexpr KnownCode k_known_codes[] = {
-    {0.0, 0},   {0.001, 3},   {0.0031308, 10}, {0.01, 25},  {0.18, 118}, {0.25, 137},
-    {0.5, 188}, {0.9, 243},   {1.0, 255},      {1.5, 255},  {100.0, 255}, {-0.25, 0},
+    {0.0, 0},   {0.001, 3}, {0.0031308, 10}, {0.01, 25}, {0.18, 118},  {0.25, 137},
+    {0.5, 188}, {0.9, 243}, {1.0, 255},      {1.5, 255}, {100.0, 255}, {-0.25, 0},
 };
 
 TEST(PngEncodingTest, KnownLinearValuesGiveTheirSrgbCodeValues) {
@@ -88,7 +88,8 @@ TEST(PngEncodingTest, NonSquareImageKeepsRowsAndColumns) {
 TEST(PfmEncodingTest, IndependentReaderSeesTheImageTopRowFirst) {
   Image image(7, 4);
   for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 7; ++x) image.at(x, y) = Color(x + 0.5, 10.0 * y + 0.25, -1e-3 * (x + 7 * y));
+    for (int x = 0; x < 7; ++x)
+      image.at(x, y) = Color(x + 0.5, 10.0 * y + 0.25, -1e-3 * (x + 7 * y));
   const auto pfm = read_pfm_bytes(encode_pfm(image));
   ASSERT_EQ(pfm.width, 7);
   ASSERT_EQ(pfm.height, 4);
@@ -96,7 +97,8 @@ TEST(PfmEncodingTest, IndependentReaderSeesTheImageTopRowFirst) {
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 7; ++x)
       for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(pfm.at(x, y, c), static_cast<float>(image.at(x, y)[c])) << x << "," << y << "," << c;
+        EXPECT_EQ(pfm.at(x, y, c), static_cast<float>(image.at(x, y)[c]))
+            << x << "," << y << "," << c;
 }
 
 // A big-endian PFM (positive scale) written here byte by byte: the project's reader must

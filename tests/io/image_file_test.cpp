@@ -15,7 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) { return mcrt::testing::temp_suite_dir("image_test") / name; }
+fs::path scratch(const std::string& name) {
+  return mcrt::testing::temp_suite_dir("image_test") / name;
+}
 
 // Every channel counts once: (r + g + b) / 3 per pixel, then the mean over pixels. Distinct
 // channels, so a channel counted twice or left out changes the value (grey images cannot).

@@ -26,7 +26,8 @@ fs::path file_with(const std::string& name, const std::string& bytes) {
 TEST(PlotFileTest, AWholePngIsAcceptedAndATruncatedOneRejected) {
   const std::string png = mcrt::encode_png(mcrt::Image(4, 3));
   EXPECT_EQ(mcrt::image_file_problem(file_with("whole.png", png)), "");
-  const std::string truncated = mcrt::image_file_problem(file_with("cut.png", png.substr(0, png.size() - 5)));
+  const std::string truncated =
+      mcrt::image_file_problem(file_with("cut.png", png.substr(0, png.size() - 5)));
   EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
   EXPECT_NE(mcrt::image_file_problem(file_with("empty.png", "")), "");
   EXPECT_NE(mcrt::image_file_problem(file_with("text.png", "<svg></svg>")), "");
@@ -72,8 +73,8 @@ TEST(PlotFileTest, ALogAxisWithNoPositiveValueIsDrawnLinear) {
   if (!mcrt::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
   const fs::path dir = mcrt::testing::fresh_temp_dir("plot_file_test", "zeros");
   mcrt::testing::write_text(dir / "data.csv", "n,rmse\n1,0\n4,0\n");
-  mcrt::Plot plot{"zeros", "title", "n", "rmse", true, true, "",
-                  "plot 'data.csv' using \"n\":\"rmse\" with lines"};
+  mcrt::Plot plot{"zeros", "title", "n", "rmse",
+                  true,    true,    "",  "plot 'data.csv' using \"n\":\"rmse\" with lines"};
   plot.x_values = {1.0, 4.0};
   plot.y_values = {0.0, 0.0};
   mcrt::write_plot(dir, plot);  // would throw on gnuplot's "all points y value undefined"

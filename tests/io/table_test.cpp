@@ -82,10 +82,10 @@ TEST(TableTest, ConsoleAlignsColumnsRightUnderTheirNames) {
 
 TEST(TableTest, WrongKindWrongCountAndUnknownColumnThrow) {
   Table table({{"n", Column::integer}, {"x", Column::real}, {"s", Column::text}});
-  EXPECT_THROW(table.add_row({1.5, 2.0, "a"}), std::logic_error);  // a real in an integer column
-  EXPECT_THROW(table.add_row({1, "x", "a"}), std::logic_error);    // text in a real column
-  EXPECT_THROW(table.add_row({1, 2.0, 3}), std::logic_error);      // an integer in a text column
-  EXPECT_THROW(table.add_row({1, 2.0}), std::logic_error);         // too few cells
+  EXPECT_THROW(table.add_row({1.5, 2.0, "a"}), std::logic_error);     // a real in an integer column
+  EXPECT_THROW(table.add_row({1, "x", "a"}), std::logic_error);       // text in a real column
+  EXPECT_THROW(table.add_row({1, 2.0, 3}), std::logic_error);         // an integer in a text column
+  EXPECT_THROW(table.add_row({1, 2.0}), std::logic_error);            // too few cells
   EXPECT_THROW(table.add_row({1, 2.0, "a", "b"}), std::logic_error);  // too many
   EXPECT_EQ(table.size(), 0u);
   table.add_row({1, 2.0, "a"});

@@ -43,8 +43,8 @@ PlatePoint highlight_point(const VeachPlates& scene, std::size_t plate, std::siz
   return p;
 }
 
-using OneSample = std::function<double(const VeachPlates&, const Hit&, const Vec3&, Rng&,
-                                       RayCount&)>;
+using OneSample =
+    std::function<double(const VeachPlates&, const Hit&, const Vec3&, Rng&, RayCount&)>;
 
 // n independent one-sample estimates at a point, from streams (stream_base + i) of `seed`.
 RunningStats sample_estimator(const OneSample& estimate, const VeachPlates& scene,
@@ -177,8 +177,8 @@ TEST(VeachPlatesTest, TheFigureIsFramedOnThePlatesWithEveryHighlightInView) {
   EXPECT_GT(on_plates, 0.65 * k_width * k_height);
   for (std::size_t k = 0; k < scene.plate_count(); ++k)
     for (std::size_t j = 0; j < scene.light_count(); ++j) {
-      const Vec2 h = project_to_pixel(scene.camera, k_width, k_height,
-                                      mirror_highlight(scene, k, j));
+      const Vec2 h =
+          project_to_pixel(scene.camera, k_width, k_height, mirror_highlight(scene, k, j));
       EXPECT_GT(h.x, 0.1 * k_width) << k << " " << j;
       EXPECT_LT(h.x, 0.9 * k_width) << k << " " << j;
       EXPECT_GT(h.y, 0.05 * k_height) << k << " " << j;
@@ -329,8 +329,8 @@ TEST(GlossyDirectTest, EveryStrategyTracesThreeRaysPerPlateSample) {
   const VeachPlates scene = make_veach_plates();
   const PlatePoint p = highlight_point(scene, 0, 0);
   const Ray camera_ray(scene.camera.eye, -p.wo);
-  for (GlossyStrategy s : {GlossyStrategy::light, GlossyStrategy::bsdf,
-                           GlossyStrategy::mis_balance, GlossyStrategy::mis_power}) {
+  for (GlossyStrategy s : {GlossyStrategy::light, GlossyStrategy::bsdf, GlossyStrategy::mis_balance,
+                           GlossyStrategy::mis_power}) {
     Rng rng(6, 0);
     RayCount count;
     for (int i = 0; i < 100; ++i) estimate_plates_radiance(scene, camera_ray, s, rng, count);
@@ -373,8 +373,8 @@ TEST(GlossyDirectTest, EachStrategyWinsWhereVeachSaysAndMisStaysClose) {
     std::vector<double> e;
     for (const Image& a : images) e.push_back(region_relative_mse(a, reference, r));
     const double best = *std::min_element(e.begin(), e.end());
-    const std::string cell = "plate " + std::to_string(r.plate) + " light " +
-                             std::to_string(r.light);
+    const std::string cell =
+        "plate " + std::to_string(r.plate) + " light " + std::to_string(r.light);
     if (r.plate == 0 && r.light == 0) {
       EXPECT_LT(10.0 * e[0], e[1]) << cell;
     }

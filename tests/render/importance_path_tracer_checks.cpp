@@ -38,7 +38,9 @@ constexpr std::uint64_t k_grazing_hemisphere_stream = 210;
 double cosine_power_p_value(std::uint64_t seed, int m) {
   const std::string name = "cosine_power_sampler_matches_its_pdf_m" + std::to_string(m);
   return hemisphere_sampler_p_value([m](Vec2 u) { return sample_cosine_power_hemisphere(u, m); },
-                                    [m](const Vec3& w) { return cosine_power_hemisphere_pdf(w.z, m); },
+                                    [m](const Vec3& w) {
+                                      return cosine_power_hemisphere_pdf(w.z, m);
+                                    },
                                     seed, k_cosine_power_stream + static_cast<std::uint64_t>(m),
                                     name);
 }
@@ -59,10 +61,9 @@ MCRT_STATISTICAL_CHECK(cosine_power_sampler_matches_its_pdf_m8, k_sampler_alpha)
   return cosine_power_p_value(seed, 8);
 }
 MCRT_STATISTICAL_CHECK(grazing_hemisphere_sampler_matches_its_pdf, k_sampler_alpha) {
-  return hemisphere_sampler_p_value(sample_grazing_hemisphere,
-                                    [](const Vec3& w) { return grazing_hemisphere_pdf(w.z); }, seed,
-                                    k_grazing_hemisphere_stream,
-                                    "grazing_hemisphere_sampler_matches_its_pdf");
+  return hemisphere_sampler_p_value(
+      sample_grazing_hemisphere, [](const Vec3& w) { return grazing_hemisphere_pdf(w.z); }, seed,
+      k_grazing_hemisphere_stream, "grazing_hemisphere_sampler_matches_its_pdf");
 }
 
 // The pdfs integrate to 1. cos^m is a polynomial of degree m <= 8 in cos(theta) on each cell,
@@ -109,8 +110,9 @@ constexpr int k_furnace_paths = 400000;
 
 double furnace_mean_check(std::uint64_t seed, std::uint64_t block, const HemispherePdf& pdf) {
   const FurnaceSetup setup{0.5, 1.0, 2};
-  return importance_furnace_mean_p_value(
-      setup, pdf, furnace_samples(setup, k_furnace_paths, seed, block, importance_tracer(pdf)));
+  return importance_furnace_mean_p_value(setup, pdf,
+                                         furnace_samples(setup, k_furnace_paths, seed, block,
+                                                         importance_tracer(pdf)));
 }
 
 MCRT_STATISTICAL_CHECK(importance_furnace_mean_uniform, 1e-4) {

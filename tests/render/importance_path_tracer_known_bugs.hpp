@@ -24,9 +24,10 @@ inline Color path_radiance_cosine_pdf_without_inv_pi(const Scene& scene, Ray ray
 /// Wrong: f_r cos / p with the cosine divided out twice, f_r cos / (p cos): a / cos(theta).
 inline Color path_radiance_dividing_by_cosine_twice(const Scene& scene, Ray ray, int max_depth,
                                                     Rng& rng, RayCount& count) {
-  return path_radiance_with(
-      scene, ray, max_depth, rng, count, sample_cosine_hemisphere,
-      [](Color f_r, Vec3 w) { return f_r * w.z / (cosine_hemisphere_pdf(w.z) * w.z); });
+  return path_radiance_with(scene, ray, max_depth, rng, count, sample_cosine_hemisphere,
+                            [](Color f_r, Vec3 w) {
+                              return f_r * w.z / (cosine_hemisphere_pdf(w.z) * w.z);
+                            });
 }
 
 }  // namespace mcrt::testing

@@ -40,8 +40,7 @@ inline auto importance_tracer(HemispherePdf pdf) {
 inline double importance_furnace_mean_p_value(const FurnaceSetup& setup, const HemispherePdf& pdf,
                                               const RunningStats& samples) {
   const double expected = furnace_radiance(setup.albedo, setup.emission, setup.depth);
-  const double variance =
-      furnace_radiance_variance(pdf, setup.albedo, setup.emission, setup.depth);
+  const double variance = furnace_radiance_variance(pdf, setup.albedo, setup.emission, setup.depth);
   return z_test_p_value(samples.mean(), expected,
                         std::sqrt(variance / static_cast<double>(samples.count())));
 }

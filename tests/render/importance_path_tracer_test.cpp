@@ -116,9 +116,9 @@ TEST(ImportancePathTracerTest, ChecksRejectKnownWrongTracers) {
   };
   EXPECT_LE(furnace_deviation(importance_tracer(cosine_power_pdf(1))), 1e-12);
   EXPECT_GE(plates(importance_tracer(cosine_power_pdf(1))), 1e-4);
-  for (const auto& wrong : {path_radiance_cosine_pdf_without_inv_pi,
-                            path_radiance_dividing_by_cosine_twice,
-                            path_radiance_cosine_directions_uniform_pdf}) {
+  for (const auto& wrong :
+       {path_radiance_cosine_pdf_without_inv_pi, path_radiance_dividing_by_cosine_twice,
+        path_radiance_cosine_directions_uniform_pdf}) {
     EXPECT_GT(furnace_deviation(wrong), 1e-3);
     EXPECT_LT(plates(wrong), 1e-4);
   }

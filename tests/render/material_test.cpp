@@ -27,7 +27,8 @@ TEST(MaterialTest, WithoutALobeFrIsBrdfBitForBit) {
     ASSERT_FALSE(m.has_lobe());
     // Any directions, above or below the surface: the diffuse f_r does not look at them.
     const Vec3 n = sample_uniform_sphere(rng.uniform2());
-    const Vec3 wi = sample_uniform_sphere(rng.uniform2()), wo = sample_uniform_sphere(rng.uniform2());
+    const Vec3 wi = sample_uniform_sphere(rng.uniform2()),
+               wo = sample_uniform_sphere(rng.uniform2());
     ASSERT_TRUE(same_bits(m.f_r(wi, wo, n), m.brdf())) << i;
     ASSERT_TRUE(same_bits(m.f_r(wi, wo, n), m.albedo * k_inv_pi)) << i;
     ASSERT_TRUE(same_bits(cosine_bounce_weight(m, wi, wo, n), m.albedo)) << i;
@@ -49,7 +50,7 @@ TEST(MaterialTest, WithALobeFrIsDiffusePlusThePhongLobe) {
     const double lobe = phong_brdf(Phong{0.0, m.specular, m.exponent}, wi, wo, n);
     const Color f = m.f_r(wi, wo, n);
     ASSERT_EQ(f, m.albedo * k_inv_pi + Color(lobe)) << i;
-    ASSERT_EQ(f, m.f_r(wo, wi, n)) << i;  // reciprocity, bit for bit (phong.hpp's cos alpha)
+    ASSERT_EQ(f, m.f_r(wo, wi, n)) << i;        // reciprocity, bit for bit (phong.hpp's cos alpha)
     if (i % 2 == 1 && glm::dot(wi, n) > 0.1) {  // the peak: rho_s (m + 2) / (2 pi)
       EXPECT_NEAR(lobe, m.specular * (m.exponent + 2.0) * k_inv_two_pi,
                   1e-9 * m.specular * (m.exponent + 2.0));  // pow's round-off, m times cos's

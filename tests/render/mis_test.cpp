@@ -21,7 +21,8 @@ TEST(MisTest, WeightsSumToOneForEveryPair) {
   Rng rng(3, 0);
   for (MisHeuristic h : {MisHeuristic::balance, MisHeuristic::power})
     for (int i = 0; i < 10000; ++i) {
-      const double a = std::exp(40.0 * rng.uniform() - 20.0), b = std::exp(40.0 * rng.uniform() - 20.0);
+      const double a = std::exp(40.0 * rng.uniform() - 20.0),
+                   b = std::exp(40.0 * rng.uniform() - 20.0);
       EXPECT_NEAR(mis_weight(h, a, b) + mis_weight(h, b, a), 1.0, 1e-12);
       EXPECT_GE(mis_weight(h, a, b), 0.0);
     }

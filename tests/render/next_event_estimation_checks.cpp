@@ -60,8 +60,8 @@ MCRT_STATISTICAL_CHECK(quad_light_pdf_per_steradian_integrates_to_one, 1e-4) {
   const auto back = scene.add_material({Color(0.0), Color(0.0)});
   const Quad lamp = mcrt::testing::cornell_lamp();
   scene.add_quad({lamp.corner(), lamp.edge_u(), lamp.edge_v(), light}, back);
-  return mcrt::testing::light_pdf_normalisation_p_value(scene, Vec3(278, 354, 279.5),
-                                                        Vec3(0, 1, 0), 100000, seed, 50);
+  return mcrt::testing::light_pdf_normalisation_p_value(scene, Vec3(278, 354, 279.5), Vec3(0, 1, 0),
+                                                        100000, seed, 50);
 }
 
 // The cap from inside the room: the light and the ceiling that hides all of it but the cap.
@@ -70,8 +70,8 @@ MCRT_STATISTICAL_CHECK(sphere_cap_light_pdf_per_steradian_integrates_to_one, 1e-
   const auto light = scene.add_material({Color(0.0), Color(12.0)});
   scene.add_sphere({{50, -1e5 + 81.6, 81.6}, 1e5, scene.add_material({Color(0.75), Color(0.0)})});
   scene.add_sphere_light({{50, 681.6 - 0.27, 81.6}, 600, light}, 0);
-  return mcrt::testing::light_pdf_normalisation_p_value(scene, Vec3(50, 41.6, 81.6),
-                                                        Vec3(0, 1, 0), 100000, seed, 51);
+  return mcrt::testing::light_pdf_normalisation_p_value(scene, Vec3(50, 41.6, 81.6), Vec3(0, 1, 0),
+                                                        100000, seed, 51);
 }
 
 // The cone sampler (sphere lights seen from outside): from a point between cornell-spheres'
@@ -89,8 +89,8 @@ MCRT_STATISTICAL_CHECK(sphere_cone_light_pdf_per_steradian_integrates_to_one, 1e
   const Vec3 x = mcrt::testing::k_above_ceiling;
   Scene scene;
   scene.add_sphere({light.center, light.radius, scene.add_material({Color(0.0), Color(12.0)})});
-  return mcrt::testing::light_pdf_normalisation_p_value(
-      scene, x, glm::normalize(light.center - x), 100000, seed, 52);
+  return mcrt::testing::light_pdf_normalisation_p_value(scene, x, glm::normalize(light.center - x),
+                                                        100000, seed, 52);
 }
 
 // Above cornell-spheres' ceiling (render/next_event_estimation_procedures.hpp): 20000 rays per strip each.
@@ -219,8 +219,8 @@ MCRT_STATISTICAL_CHECK_AT_MOST(mis_agrees_with_independent_renderer_cornell, 1e-
   return mcrt::testing::quad_box_comparison_p_value(
       make_cornell_box(), {.nee_reference = true}, seed,
       [](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
-        return estimate_mis_radiance(s, ray, PathEnd{Roulette{}, depth}, MisHeuristic::power,
-                                     rng, count);
+        return estimate_mis_radiance(s, ray, PathEnd{Roulette{}, depth}, MisHeuristic::power, rng,
+                                     count);
       });
 }
 

@@ -23,10 +23,10 @@ struct NeeMistake {
   bool emission_twice = false;     ///< BSDF-sampled hits on lights add Le as well
   bool shadow_hits_light = false;  ///< the shadow ray's range includes the light point itself
   bool light_from_behind = false;  ///< |cos(theta_y)| and Le of a one-sided light's back
-  bool cap_only = false;  ///< a sphere light sampled on its cap from everywhere (the cap is
-                          ///< all the room sees, but not all a point outside the room sees)
-  bool one_light_pdf = false;  ///< the pick of one of N lights left out of the pdf (no 1/N)
-  bool no_cos_y = false;        ///< p_w taken as p_A r^2: the light's cos(theta_y) left out
+  bool cap_only = false;         ///< a sphere light sampled on its cap from everywhere (the cap is
+                                 ///< all the room sees, but not all a point outside the room sees)
+  bool one_light_pdf = false;    ///< the pick of one of N lights left out of the pdf (no 1/N)
+  bool no_cos_y = false;         ///< p_w taken as p_A r^2: the light's cos(theta_y) left out
   bool cut_after_light = false;  ///< the depth cut checked after the light sample, not before
 };
 
@@ -37,14 +37,13 @@ inline DirectSample wrong_direct_light(const Scene& scene, const Hit& hit, Rng& 
   const double u_pick = rng.uniform();
   const Vec2 u = rng.uniform2();
   const std::size_t n = scene.emitters().size();
-  const Emitter& e = scene.emitters()[std::min(
-      n - 1, static_cast<std::size_t>(u_pick * static_cast<double>(n)))];
+  const Emitter& e =
+      scene.emitters()[std::min(n - 1, static_cast<std::size_t>(u_pick * static_cast<double>(n)))];
   const Vec3 x = spawn_ray(hit, hit.normal).origin;
   const Sphere* sphere = e.kind == Emitter::sphere ? &scene.spheres()[e.index] : nullptr;
-  const LightPoint y =
-      m.cap_only && sphere
-          ? sample_sphere_cap(sphere->center, sphere->radius, e.cap_axis, e.cap_height, u)
-          : sample_emitter(scene, e, x, u);
+  const LightPoint y = m.cap_only && sphere ? sample_sphere_cap(sphere->center, sphere->radius,
+                                                                e.cap_axis, e.cap_height, u)
+                                            : sample_emitter(scene, e, x, u);
   const auto [shadow_ray, distance] = spawn_ray_to(hit, y.point);
   d.wi = shadow_ray.direction;
   d.cos_x = glm::dot(hit.normal, d.wi);
@@ -53,7 +52,8 @@ inline DirectSample wrong_direct_light(const Scene& scene, const Hit& hit, Rng& 
                              : scene.emitted(e, y.normal, -d.wi);
   if (d.cos_x <= 0.0 || d.le == Color(0.0)) return d;
   const double p_area = m.one_light_pdf ? y.pdf_area : y.pdf_area / static_cast<double>(n);
-  d.pdf_light = m.no_jacobian ? p_area : area_to_solid_angle_pdf(p_area, distance, m.no_cos_y ? 1.0 : cos_y);
+  d.pdf_light =
+      m.no_jacobian ? p_area : area_to_solid_angle_pdf(p_area, distance, m.no_cos_y ? 1.0 : cos_y);
   ++count.rays;
   const double end = m.shadow_hits_light ? distance * (1.0 + k_shadow_ray_shortening)
                                          : distance * (1.0 - k_shadow_ray_shortening);
@@ -117,13 +117,13 @@ inline Color nee_without_cos_y(const Scene& scene, Ray ray, int depth, Rng& rng,
 
 /// Wrong: the path cut at depth k after the light sample of its last vertex, not before: that
 /// sample's light has travelled k + 1 segments, one bounce more than the depth allows.
-inline Color nee_cut_after_light_sample(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
+inline Color nee_cut_after_light_sample(const Scene& scene, Ray ray, int depth, Rng& rng,
+                                        RayCount& c) {
   return wrong_nee_radiance(scene, ray, depth, rng, c, {.cut_after_light = true});
 }
 
 /// Wrong: a one-sided light lights what is behind it (|cos(theta_y)|, Le of its back).
-inline Color nee_light_from_behind(const Scene& scene, Ray ray, int depth, Rng& rng,
-                                   RayCount& c) {
+inline Color nee_light_from_behind(const Scene& scene, Ray ray, int depth, Rng& rng, RayCount& c) {
   return wrong_nee_radiance(scene, ray, depth, rng, c, {.light_from_behind = true});
 }
 
@@ -167,10 +167,10 @@ inline Color mis_weights_not_summing_to_one(const Scene& scene, Ray ray, int max
     }
     const DirectSample light = sample_direct_light(scene, *hit, rng, count);
     if (light.contributes())
-      radiance += beta *
-                  mis_weight(MisHeuristic::balance, light.pdf_light,
-                             cosine_hemisphere_pdf(light.cos_x)) *
-                  material.brdf() * light.le * light.cos_x / light.pdf_light;
+      radiance +=
+          beta *
+          mis_weight(MisHeuristic::balance, light.pdf_light, cosine_hemisphere_pdf(light.cos_x)) *
+          material.brdf() * light.le * light.cos_x / light.pdf_light;
     const Vec3 local = sample_cosine_hemisphere(rng.uniform2());
     pdf_bsdf = cosine_hemisphere_pdf(local.z);
     if (!(pdf_bsdf > 0.0)) break;

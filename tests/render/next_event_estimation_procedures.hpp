@@ -90,7 +90,8 @@ double cone_light_p_value(std::uint64_t seed, PdfSolidAngle&& pdf_solid_angle) {
   const auto density = [&](Vec2) {
     return pdf_solid_angle(light.center, light.radius, x) * k_pi * one_minus_cos_max / 2.0;
   };
-  return square_sampler_p_value(sample, density, seed, k_cap_light_stream + 2, "sphere cone (solid angle)");
+  return square_sampler_p_value(sample, density, seed, k_cap_light_stream + 2,
+                                "sphere cone (solid angle)");
 }
 
 /// The direct light of points above cornell-spheres' ceiling, where the light is seen beyond its
@@ -108,14 +109,15 @@ double above_ceiling_direct_light_p_value(int n, std::uint64_t seed, Estimate&& 
     double sum[2] = {0, 0}, sum2[2] = {0, 0};
     for (int k = 0; k < n; ++k)
       for (int which = 0; which < 2; ++which) {
-        Rng rng(seed, stream_index((std::uint64_t{1} << 23) + which, static_cast<std::uint64_t>(k)));
+        Rng rng(seed,
+                stream_index((std::uint64_t{1} << 23) + which, static_cast<std::uint64_t>(k)));
         // y in [82, 84], z in [130, 160]: under the light (above y = 85.2 at z = 130 a point is
         // inside the light sphere, which no camera ray reaches)
         const Vec2 u = rng.uniform2();
         const Ray ray{{1.5, 82.0 + 2.0 * u.x, 130.0 + 30.0 * u.y}, direction};
         RayCount count;
-        const Color l = which == 0 ? estimate(scene, ray, 1, rng, count)
-                                   : reference(scene, ray, 1, rng, count);
+        const Color l =
+            which == 0 ? estimate(scene, ray, 1, rng, count) : reference(scene, ray, 1, rng, count);
         const double v = l.x + l.y + l.z;
         sum[which] += v;
         sum2[which] += v * v;
@@ -125,8 +127,8 @@ double above_ceiling_direct_light_p_value(int n, std::uint64_t seed, Estimate&& 
       mean[i] = sum[i] / n;
       variance_of_mean[i] = (sum2[i] - sum[i] * mean[i]) / (n - 1.0) / n;
     }
-    p_values.push_back(z_test_p_value(mean[0], mean[1],
-                                      std::sqrt(variance_of_mean[0] + variance_of_mean[1])));
+    p_values.push_back(
+        z_test_p_value(mean[0], mean[1], std::sqrt(variance_of_mean[0] + variance_of_mean[1])));
   }
   return sidak_p_value(p_values);
 }
@@ -135,9 +137,8 @@ double above_ceiling_direct_light_p_value(int n, std::uint64_t seed, Estimate&& 
 /// that sees the whole light, E over uniform hemisphere directions w of
 /// [w reaches the light] p_w(w) / (1 / 2 pi) is 1. n directions; a z-test of the mean against 1.
 /// `scene` holds the light alone; x's normal is `normal`.
-inline double light_pdf_normalisation_p_value(const Scene& scene, const Vec3& x,
-                                              const Vec3& normal, int n, std::uint64_t seed,
-                                              std::uint64_t stream) {
+inline double light_pdf_normalisation_p_value(const Scene& scene, const Vec3& x, const Vec3& normal,
+                                              int n, std::uint64_t seed, std::uint64_t stream) {
   Rng rng(seed, stream);
   const Frame frame(normal);
   double sum = 0.0, sum2 = 0.0;
@@ -200,7 +201,7 @@ inline Scene lamp_facing_away_scene() {
   const auto lamp = scene.add_material({Color(0.0), Color(10.0)});
   const auto back = scene.add_material({Color(0.0), Color(0.0)});
   scene.add_quad({{-50, 0, -50}, {0, 0, 100}, {100, 0, 0}, white});  // normal +y
-  scene.add_quad({{-1, 1, -1}, {0, 0, 2}, {2, 0, 0}, lamp}, back);    // normal +y: faces away
+  scene.add_quad({{-1, 1, -1}, {0, 0, 2}, {2, 0, 0}, lamp}, back);   // normal +y: faces away
   return scene;
 }
 

@@ -37,9 +37,9 @@ TEST(NeeTest, FurnaceIsExactEverySampleBeforeRoulette) {
     for (int i = 0; i < 200; ++i) {
       Rng rng(6, static_cast<std::uint64_t>(i));
       RayCount count;
-      const Color l = estimate_nee_radiance(
-          furnace, {Vec3(0.0), sample_uniform_sphere(dirs.uniform2())}, {Roulette{}, k}, rng,
-          count);
+      const Color l =
+          estimate_nee_radiance(furnace, {Vec3(0.0), sample_uniform_sphere(dirs.uniform2())},
+                                {Roulette{}, k}, rng, count);
       // 1e-6: the shadow ray starts 1e-7 (1 + |x|) off the wall (spawn_ray), which moves
       // cos cos / r^2 by about that much.
       EXPECT_NEAR(l.r, furnace_radiance(0.5, 2.0, k), 1e-6) << "k = " << k;
@@ -66,7 +66,8 @@ TEST(NeeTest, FarFromTheLampItsDirectLightIsThePointLights) {
   const Scene box = make_cornell_box(0.1);
   Scene scene;
   const auto white = scene.add_material({Color(0.73), Color(0.0)});
-  const auto lamp = scene.add_material(box.materials[box.quads()[box.emitters()[0].index].material()]);
+  const auto lamp =
+      scene.add_material(box.materials[box.quads()[box.emitters()[0].index].material()]);
   const auto back = scene.add_material({Color(0.0), Color(0.0)});
   scene.add_quad({{-1e3, 0, -1e3}, {0, 0, 2e3}, {2e3, 0, 0}, white});
   const Quad& q = box.quads()[box.emitters()[0].index];
@@ -77,8 +78,9 @@ TEST(NeeTest, FarFromTheLampItsDirectLightIsThePointLights) {
   for (int i = 0; i < n; ++i) {
     Rng rng(7, static_cast<std::uint64_t>(i));
     RayCount count;
-    sum += estimate_nee_radiance(scene, {x + Vec3(0, 1, 0), Vec3(0, -1, 0)}, {Roulette{}, 1},
-                                 rng, count).r;
+    sum += estimate_nee_radiance(scene, {x + Vec3(0, 1, 0), Vec3(0, -1, 0)}, {Roulette{}, 1}, rng,
+                                 count)
+               .r;
   }
   const PointLight& light = box.point_light;
   const Vec3 to_light = light.position - x;
@@ -92,8 +94,8 @@ TEST(NeeTest, FarFromTheLampItsDirectLightIsThePointLights) {
 double direct_light_p(const auto& estimate) {
   const Scene whole = make_cornell_box();
   const Scene room = mcrt::testing::cornell_room_without_boxes();
-  return mcrt::testing::direct_light_p_value(room, whole, mcrt::testing::direct_light_points(), 20000,
-                                       mcrt::testing::k_suite_seed, estimate);
+  return mcrt::testing::direct_light_p_value(room, whole, mcrt::testing::direct_light_points(),
+                                             20000, mcrt::testing::k_suite_seed, estimate);
 }
 
 TEST(NeeKnownBugsTest, JacobianLeftOutIsRejected) {
@@ -110,7 +112,7 @@ TEST(NeeKnownBugsTest, MisWeightsNotSummingToOneAreRejected) {
 }
 TEST(NeeKnownBugsTest, OneSidedLightSampledFromBehindIsRejected) {
   EXPECT_LT(mcrt::testing::light_behind_p_value(2000, mcrt::testing::k_suite_seed,
-                                          mcrt::testing::nee_light_from_behind),
+                                                mcrt::testing::nee_light_from_behind),
             k_alpha);
 }
 
@@ -127,10 +129,12 @@ TEST(NeeKnownBugsTest, CapOnlySphereLightIsRejectedAboveTheCeiling) {
 TEST(NeeKnownBugsTest, WrongAreaPdfsAreRejectedByTheChiSquare) {
   // Half the true density: the expected counts no longer match.
   EXPECT_LT(mcrt::testing::quad_light_pdf_p_value(mcrt::testing::k_suite_seed,
-                                            [](double area) { return 0.5 / area; }),
+                                                  [](double area) { return 0.5 / area; }),
             k_alpha);
   EXPECT_LT(mcrt::testing::cap_light_pdf_p_value(mcrt::testing::k_suite_seed,
-                                           [](double r, double h) { return 1.0 / (k_pi * r * h); }),
+                                                 [](double r, double h) {
+                                                   return 1.0 / (k_pi * r * h);
+                                                 }),
             k_alpha);
   // The cone's pdf without its 2: half the density.
   EXPECT_LT(mcrt::testing::cone_light_p_value(mcrt::testing::k_suite_seed,

@@ -38,8 +38,8 @@ using mcrt::testing::FurnaceSetup;
 constexpr int k_furnace_paths = 40000;
 
 double furnace_mean_check(std::uint64_t seed, std::uint64_t block, const FurnaceSetup& setup) {
-  const RunningStats samples = mcrt::testing::furnace_samples(
-      setup, k_furnace_paths, seed, block, mcrt::testing::chapter_path_tracer);
+  const RunningStats samples = mcrt::testing::furnace_samples(setup, k_furnace_paths, seed, block,
+                                                              mcrt::testing::chapter_path_tracer);
   return mcrt::testing::furnace_mean_p_value(setup, samples);
 }
 
@@ -66,8 +66,7 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_mean_a02_k2, 1e-4) {
 // samples (consistent, and the samples are bounded, so every moment exists). At n = 4e4 the
 // sample variance is close to normal (CLT), so the test holds its false-failure rate.
 
-double furnace_variance_check(std::uint64_t seed, std::uint64_t block,
-                              const FurnaceSetup& setup) {
+double furnace_variance_check(std::uint64_t seed, std::uint64_t block, const FurnaceSetup& setup) {
   const std::vector<double> values =
       mcrt::testing::furnace_radiance_values(setup, k_furnace_paths, seed, block);
   const double expected = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
@@ -99,9 +98,11 @@ MCRT_STATISTICAL_CHECK(path_tracer_furnace_variance_a09_k8, 1e-4) {
 Image render_image(const Camera& camera, const Scene& scene, int depth, int spp,
                    std::uint64_t first_sample, std::uint64_t seed) {
   const RenderSettings settings{spp, first_sample, seed, 1, nullptr};
-  return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-           return estimate_path_radiance(scene, ray, depth, rng, count);
-         }).image;
+  return render(camera, settings,
+                [&](const Ray& ray, Rng& rng, RayCount& count) {
+                  return estimate_path_radiance(scene, ray, depth, rng, count);
+                })
+      .image;
 }
 
 MCRT_STATISTICAL_CHECK(path_tracer_rmse_slope_is_minus_one_half, 1e-4) {
@@ -240,8 +241,7 @@ MCRT_STATISTICAL_CHECK_AT_MOST(path_tracer_agrees_with_independent_renderer_corn
       ours.add(estimate_path_radiance(scene, ray, k_depth, rng, count));
       Rng reference_rng(seed, stream_index(block + 1, i));
       const Vec2 v = reference_rng.uniform2();
-      const Ray reference_ray =
-          camera.generate_ray(x0 + k_tile_size * v.x, y0 + k_tile_size * v.y);
+      const Ray reference_ray = camera.generate_ray(x0 + k_tile_size * v.x, y0 + k_tile_size * v.y);
       reference.add(reference_radiance(spheres, reference_ray.origin, reference_ray.direction,
                                        k_depth, reference_rng));
     }

@@ -49,7 +49,7 @@ inline double furnace_mean_p_value(const FurnaceSetup& setup, const RunningStats
   const double expected = furnace_radiance(setup.albedo, setup.emission, setup.depth);
   const double variance = furnace_radiance_variance(setup.albedo, setup.emission, setup.depth);
   return z_test_p_value(samples.mean(), expected,
-                               std::sqrt(variance / static_cast<double>(samples.count())));
+                        std::sqrt(variance / static_cast<double>(samples.count())));
 }
 
 /// The furnace radiance of n paths of the chapter's tracer, one value (the channel mean) per

@@ -48,9 +48,8 @@ inline Color path_radiance_with_sphere_pdf(const Scene& scene, Ray ray, int max_
 }
 
 /// Wrong: cosine-weighted directions divided by the uniform pdf 1/(2 pi) instead of cos / pi.
-inline Color path_radiance_cosine_directions_uniform_pdf(const Scene& scene, Ray ray,
-                                                         int max_depth, Rng& rng,
-                                                         RayCount& count) {
+inline Color path_radiance_cosine_directions_uniform_pdf(const Scene& scene, Ray ray, int max_depth,
+                                                         Rng& rng, RayCount& count) {
   return path_radiance_with(scene, ray, max_depth, rng, count, sample_cosine_hemisphere,
                             [](Color f_r, Vec3 w) { return f_r * w.z / uniform_hemisphere_pdf(); });
 }

@@ -34,8 +34,8 @@ Color trace(const Scene& scene, const Ray& ray, std::uint64_t stream, int depth 
 TEST(PathTracerTest, BounceDirectionsLieInTheNormalsHemisphere) {
   // The tracer's new direction is Frame(n).to_world(local) with local.z = cos(theta_i).
   Rng rng(1, 0);
-  std::vector<Vec3> normals{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0},
-                            glm::normalize(Vec3(1e-9, 0, -1))};
+  std::vector<Vec3> normals{
+      {0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0}, glm::normalize(Vec3(1e-9, 0, -1))};
   for (int i = 0; i < 200; ++i) normals.push_back(sample_uniform_sphere(rng.uniform2()));
   const std::vector<Vec2> corners{{0, 0}, {0, 0.999999}, {0.999999, 0}, {0.999999, 0.999999}};
   for (const Vec3& n : normals) {
@@ -98,7 +98,8 @@ TEST(PathTracerTest, RaysGrazingQuadEdgesStayFinite) {
     const std::vector<Vec3> targets{o, o + u, o + v, o + u + v, o + 0.5 * u, o + 0.5 * v};
     for (const Vec3& target : targets) {
       for (int i = 0; i < 5; ++i) {
-        const Vec3 origin(5 + 545 * rng.uniform(), 5 + 545 * rng.uniform(), 5 + 545 * rng.uniform());
+        const Vec3 origin(5 + 545 * rng.uniform(), 5 + 545 * rng.uniform(),
+                          5 + 545 * rng.uniform());
         expect_finite_and_non_negative(scene, {origin, glm::normalize(target - origin)}, stream++);
       }
     }
@@ -152,7 +153,8 @@ TEST(PathTracerTest, RaysStartingOnASurfaceStayFinite) {
     const Camera camera(scene.camera, 16, 16);
     Rng rng(6, 0);
     for (int i = 0; i < 300; ++i) {
-      const auto hit = scene.closest_hit(camera.generate_ray(16 * rng.uniform(), 16 * rng.uniform()));
+      const auto hit =
+          scene.closest_hit(camera.generate_ray(16 * rng.uniform(), 16 * rng.uniform()));
       if (!hit) continue;  // out through the open front of the box
       expect_finite_and_non_negative(scene, {hit->point, sample_uniform_sphere(rng.uniform2())},
                                      static_cast<std::uint64_t>(i));

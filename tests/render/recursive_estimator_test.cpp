@@ -61,8 +61,7 @@ TEST(IncidentRadiance, FurnaceRayCountsEqualThePrediction) {
     for (int k : {0, 1, 2, 4}) {
       const RenderResult r = render_recursive(furnace, width, height, spp, {n, k});
       const auto samples = static_cast<std::uint64_t>(width * height * spp);
-      EXPECT_EQ(r.rays, samples * max_rays_per_sample(n, k))
-          << "N = " << n << ", k = " << k;
+      EXPECT_EQ(r.rays, samples * max_rays_per_sample(n, k)) << "N = " << n << ", k = " << k;
     }
 }
 

@@ -45,7 +45,10 @@ inline std::vector<double> standardised(const std::vector<double>& values, doubl
 inline double neighbour_correlation_p_value(const std::vector<double>& values, int width,
                                             int height, double mean, double variance) {
   const std::vector<double> z = standardised(values, mean, variance);
-  auto at = [&](int x, int y) { return z[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]; };
+  auto at = [&](int x, int y) {
+    return z[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+             static_cast<std::size_t>(x)];
+  };
   ChiSquareSum sum;
   const int offsets[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
   for (const auto& offset : offsets) {

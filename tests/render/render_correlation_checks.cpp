@@ -38,9 +38,10 @@ std::vector<double> furnace_pixel_values(int width, int height, std::uint64_t se
   settings.spp = 1;
   settings.first_sample = sample;
   settings.seed = seed;
-  const RenderResult result = render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_path_radiance(scene, ray, k_depth, rng, count);
-  });
+  const RenderResult result =
+      render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
+        return estimate_path_radiance(scene, ray, k_depth, rng, count);
+      });
   std::vector<double> values;
   values.reserve(result.image.pixels.size());
   for (const Color& c : result.image.pixels) values.push_back(average(c));
@@ -66,9 +67,10 @@ MCRT_STATISTICAL_CHECK(samples_of_one_pixel_are_uncorrelated, 1e-4) {
   std::vector<std::vector<double>> samples;
   for (int s = 0; s < k_samples; ++s)
     samples.push_back(furnace_pixel_values(k_side, k_side, seed, static_cast<std::uint64_t>(s)));
-  return mcrt::testing::sample_correlation_p_value(
-      samples, furnace_radiance(k_albedo, k_emission, k_depth),
-      furnace_radiance_variance(k_albedo, k_emission, k_depth));
+  return mcrt::testing::sample_correlation_p_value(samples,
+                                                   furnace_radiance(k_albedo, k_emission, k_depth),
+                                                   furnace_radiance_variance(k_albedo, k_emission,
+                                                                             k_depth));
 }
 
 // Uniforms of generator a against those of its neighbour b (next seed, or next stream) over

@@ -27,9 +27,12 @@ TEST(CorrelationProceduresTest, NeighbourCheckRejectsPixelsSharingStreams) {
   const Scene furnace = make_furnace(k_albedo, k_emission);
   const std::uint64_t seed = mcrt::testing::k_suite_seed;
   const auto right = bugs::furnace_pixels_keyed(furnace, 128, 128, k_depth, seed, 0, right_key);
-  const auto wrong = bugs::furnace_pixels_keyed(furnace, 128, 128, k_depth, seed, 0, bugs::key_x_plus_y);
-  EXPECT_GE(mcrt::testing::neighbour_correlation_p_value(right, 128, 128, k_mean, k_variance), k_alpha);
-  EXPECT_LT(mcrt::testing::neighbour_correlation_p_value(wrong, 128, 128, k_mean, k_variance), k_alpha);
+  const auto wrong =
+      bugs::furnace_pixels_keyed(furnace, 128, 128, k_depth, seed, 0, bugs::key_x_plus_y);
+  EXPECT_GE(mcrt::testing::neighbour_correlation_p_value(right, 128, 128, k_mean, k_variance),
+            k_alpha);
+  EXPECT_LT(mcrt::testing::neighbour_correlation_p_value(wrong, 128, 128, k_mean, k_variance),
+            k_alpha);
 }
 
 TEST(CorrelationProceduresTest, SampleCheckRejectsSamplesSharingStreams) {
@@ -38,7 +41,8 @@ TEST(CorrelationProceduresTest, SampleCheckRejectsSamplesSharingStreams) {
   std::vector<std::vector<double>> right, wrong;
   for (std::uint64_t s = 0; s < 4; ++s) {
     right.push_back(bugs::furnace_pixels_keyed(furnace, 96, 96, k_depth, seed, s, right_key));
-    wrong.push_back(bugs::furnace_pixels_keyed(furnace, 96, 96, k_depth, seed, s, bugs::key_ignoring_sample));
+    wrong.push_back(
+        bugs::furnace_pixels_keyed(furnace, 96, 96, k_depth, seed, s, bugs::key_ignoring_sample));
   }
   EXPECT_GE(mcrt::testing::sample_correlation_p_value(right, k_mean, k_variance), k_alpha);
   EXPECT_LT(mcrt::testing::sample_correlation_p_value(wrong, k_mean, k_variance), k_alpha);

@@ -30,8 +30,9 @@ constexpr int k_paths = 40000;
 
 // Stream blocks: 600 + the check, apart from the other checks' blocks.
 double mean_check(std::uint64_t seed, std::uint64_t block, const RouletteFurnaceSetup& setup) {
-  const std::vector<FurnacePath> paths = mcrt::testing::roulette_furnace_paths(
-      setup, k_paths, seed, 600 + block, mcrt::testing::chapter_roulette);
+  const std::vector<FurnacePath> paths =
+      mcrt::testing::roulette_furnace_paths(setup, k_paths, seed, 600 + block,
+                                            mcrt::testing::chapter_roulette);
   return mcrt::testing::roulette_mean_p_value(setup, paths);
 }
 
@@ -58,8 +59,9 @@ MCRT_STATISTICAL_CHECK(roulette_furnace_mean_throughput_a03_d1, 1e-4) {
 // The variance of fixed q. a = 0.5, q = 0.9: the eighth moment's ratio (2a)^8 / (9 q^7) = 0.23.
 MCRT_STATISTICAL_CHECK(roulette_furnace_variance_a05_d2_q09, 1e-4) {
   const RouletteFurnaceSetup setup{0.5, 1.0, {2, RoulettePolicy::fixed, 0.9, 0.05}};
-  const std::vector<FurnacePath> paths = mcrt::testing::roulette_furnace_paths(
-      setup, k_paths, seed, 611, mcrt::testing::chapter_roulette);
+  const std::vector<FurnacePath> paths =
+      mcrt::testing::roulette_furnace_paths(setup, k_paths, seed, 611,
+                                            mcrt::testing::chapter_roulette);
   const double expected = furnace_roulette_variance(0.5, 1.0, 2, 0.9);
   return mcrt::testing::variance_z_test_p_value(mcrt::testing::radiance_values(paths), expected);
 }
@@ -68,8 +70,9 @@ MCRT_STATISTICAL_CHECK(roulette_furnace_variance_a05_d2_q09, 1e-4) {
 double path_length_check(std::uint64_t seed, std::uint64_t block, double albedo, int min_depth,
                          double q) {
   const RouletteFurnaceSetup setup{albedo, 1.0, {min_depth, RoulettePolicy::fixed, q, 0.05}};
-  const std::vector<FurnacePath> paths = mcrt::testing::roulette_furnace_paths(
-      setup, k_paths, seed, 600 + block, mcrt::testing::chapter_roulette);
+  const std::vector<FurnacePath> paths =
+      mcrt::testing::roulette_furnace_paths(setup, k_paths, seed, 600 + block,
+                                            mcrt::testing::chapter_roulette);
   return mcrt::testing::path_length_test(min_depth, q, paths).p_value;
 }
 

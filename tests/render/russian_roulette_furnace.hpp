@@ -63,7 +63,8 @@ inline double roulette_mean_p_value(const RouletteFurnaceSetup& setup,
   const Roulette& r = setup.roulette;
   if (r.policy == RoulettePolicy::fixed &&
       r.q > furnace_roulette_variance_threshold(setup.albedo)) {
-    const double variance = furnace_roulette_variance(setup.albedo, setup.emission, r.min_depth, r.q);
+    const double variance =
+        furnace_roulette_variance(setup.albedo, setup.emission, r.min_depth, r.q);
     return z_test_p_value(radiance.mean(), expected,
                           std::sqrt(variance / static_cast<double>(radiance.count())));
   }
@@ -88,7 +89,8 @@ inline ChiSquareResult path_length_test(int min_depth, double q,
   tail.u_index = longest + 1;
   tail.expected = n * std::pow(q, longest - min_depth);
   for (const FurnacePath& path : paths) {
-    const auto r = static_cast<int>(std::min<std::uint64_t>(path.rays, static_cast<std::uint64_t>(longest) + 1));
+    const auto r = static_cast<int>(
+        std::min<std::uint64_t>(path.rays, static_cast<std::uint64_t>(longest) + 1));
     cells[static_cast<std::size_t>(r - 1)].observed += 1.0;
   }
   return chi_square_test(std::move(cells), 0);

@@ -64,8 +64,8 @@ inline Color roulette_before_emission(const Scene& scene, Ray ray, const Roulett
 }
 
 /// Wrong: the throughput q is not clamped to 1, so a weight above 1 is divided by it unpaid.
-inline Color roulette_q_not_clamped(const Scene& scene, Ray ray, const Roulette& roulette,
-                                    Rng& rng, RayCount& count) {
+inline Color roulette_q_not_clamped(const Scene& scene, Ray ray, const Roulette& roulette, Rng& rng,
+                                    RayCount& count) {
   return roulette_path_with(RouletteMistake::q_not_clamped, scene, ray, roulette, rng, count);
 }
 

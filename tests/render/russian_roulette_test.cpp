@@ -56,7 +56,8 @@ TEST(RussianRouletteTest, WithoutRouletteTheVarianceIsTheDeepDepthCuts) {
   // where b^k and a^k are below 1e-30).
   for (double a : {0.3, 0.5, 0.8})
     EXPECT_NEAR(furnace_roulette_variance(a, 1.5, 3, 1.0), furnace_radiance_variance(a, 1.5, 300),
-                1e-9) << a;
+                1e-9)
+        << a;
 }
 
 TEST(RussianRouletteTest, VarianceIsInfiniteAtAndBelowTheThreshold) {
@@ -66,7 +67,8 @@ TEST(RussianRouletteTest, VarianceIsInfiniteAtAndBelowTheThreshold) {
   EXPECT_TRUE(std::isinf(furnace_roulette_variance(0.6, 1.0, 3, 0.3)));
   EXPECT_TRUE(std::isfinite(furnace_roulette_variance(0.6, 1.0, 3, b + 1e-3)));
   // Stopping more often costs variance: it falls as q rises.
-  EXPECT_GT(furnace_roulette_variance(0.6, 1.0, 3, 0.5), furnace_roulette_variance(0.6, 1.0, 3, 0.9));
+  EXPECT_GT(furnace_roulette_variance(0.6, 1.0, 3, 0.5),
+            furnace_roulette_variance(0.6, 1.0, 3, 0.9));
 }
 
 TEST(RussianRouletteTest, DepthCutBiasIsWhatTheCutLoses) {
@@ -114,8 +116,9 @@ TEST(RussianRouletteTest, BeforeTheMinimumDepthItIsTheDepthCutsPath) {
       Rng cut_rng(7, i), roulette_rng(7, i);
       RayCount cut_count, roulette_count;
       const Color cut = estimate_path_radiance(furnace, ray, d, cut_rng, cut_count);
-      const Color roulette = estimate_path_radiance_roulette(
-          furnace, ray, {d, RoulettePolicy::fixed, 0.5, 0.05}, roulette_rng, roulette_count);
+      const Color roulette =
+          estimate_path_radiance_roulette(furnace, ray, {d, RoulettePolicy::fixed, 0.5, 0.05},
+                                          roulette_rng, roulette_count);
       EXPECT_GE(roulette.r, cut.r - 1e-12);
       EXPECT_GE(roulette_count.rays, static_cast<std::uint64_t>(d) + 1);
       EXPECT_EQ(cut_count.rays, static_cast<std::uint64_t>(d) + 1);
@@ -203,8 +206,8 @@ TEST(RussianRouletteKnownBugsTest, PathLengthTestRejectsRouletteFromDepthZero) {
   // Its mean is right (roulette from depth 0 is unbiased): a t-test of it passes, so only the
   // path lengths (or the variance) can tell it from the right estimator.
   RunningStats radiance;
-  for (const FurnacePath& path : roulette_furnace_paths(k_fixed, k_paths, k_suite_seed, 601,
-                                                        roulette_from_depth_zero))
+  for (const FurnacePath& path :
+       roulette_furnace_paths(k_fixed, k_paths, k_suite_seed, 601, roulette_from_depth_zero))
     radiance.add(path.radiance);
   EXPECT_GE(t_test_p_value(radiance.mean(), radiance.variance(), radiance.count(), 2.0), k_alpha);
 }

@@ -20,16 +20,16 @@ using mcrt::testing::plain_closest_hit;  // support/plain_closest_hit.hpp
 
 // 3000 rays from inside and around `scene` (origins in a cube of side `scale`), with and without
 // a range: closest_hit must give the plain loop's hit, bit for bit.
-void expect_same_hits_as_the_plain_loop(const Scene& scene, const std::string& name,
-                                        double scale) {
+void expect_same_hits_as_the_plain_loop(const Scene& scene, const std::string& name, double scale) {
   Rng rng(11, 0);
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
     const Vec3 origin = scale * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.3);
     const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
     const Ray ray{origin, rng.uniform() < 0.5 ? local : -local};
-    const Interval range = i % 3 == 0 ? Interval{} : Interval{scale * 0.1 * rng.uniform(),
-                                                              scale * 2.0 * rng.uniform()};
+    const Interval range = i % 3 == 0
+                               ? Interval{}
+                               : Interval{scale * 0.1 * rng.uniform(), scale * 2.0 * rng.uniform()};
     const std::optional<Hit> fast = scene.closest_hit(ray, range);
     const std::optional<Hit> plain = plain_closest_hit(scene, ray, range);
     ASSERT_EQ(fast.has_value(), plain.has_value()) << name << " ray " << i;
@@ -85,11 +85,10 @@ TEST(ClosestHitTest, SphereSetAgreesWithThePlainLoopInEveryBlockLayout) {
     SphereSet set;
     for (std::size_t i = 0; i < count; ++i) {
       // Every third sphere repeats an earlier one: equal t, and the lower index must win.
-      const Sphere s = i % 3 == 2 ? spheres[i / 2]
-                                  : Sphere{10.0 * (Vec3(rng.uniform(), rng.uniform(),
-                                                        rng.uniform()) - 0.5),
-                                           1.0 + 4.0 * rng.uniform(),
-                                           static_cast<std::uint32_t>(i)};
+      const Sphere s =
+          i % 3 == 2 ? spheres[i / 2]
+                     : Sphere{10.0 * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5),
+                              1.0 + 4.0 * rng.uniform(), static_cast<std::uint32_t>(i)};
       spheres.push_back(s);
       set.add(s);
     }
@@ -98,8 +97,8 @@ TEST(ClosestHitTest, SphereSetAgreesWithThePlainLoopInEveryBlockLayout) {
       const Vec3 origin = 12.0 * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5);
       const Vec3 local = sample_uniform_hemisphere(rng.uniform2());
       const Ray ray{origin, rng.uniform() < 0.5 ? local : -local};
-      const Interval range = r % 2 == 0 ? Interval{} : Interval{3.0 * rng.uniform(),
-                                                                20.0 * rng.uniform()};
+      const Interval range =
+          r % 2 == 0 ? Interval{} : Interval{3.0 * rng.uniform(), 20.0 * rng.uniform()};
       const SphereSet::Nearest plain = plain_nearest(spheres, ray, range);
       const SphereSet::Nearest portable = set.nearest_portable(ray, range);
       EXPECT_EQ(portable.index, plain.index) << count << " spheres, ray " << r;

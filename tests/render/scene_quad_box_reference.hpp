@@ -65,8 +65,8 @@ inline void add_reference_box(ReferenceQuadBox& box, Vec3 size, double degrees, 
                               Color albedo) {
   const double angle = degrees * k_pi / 180.0;
   const glm::dmat3 r_y(std::cos(angle), 0.0, -std::sin(angle),  // column 0: image of x
-                       0.0, 1.0, 0.0,                              // column 1: image of y
-                       std::sin(angle), 0.0, std::cos(angle));     // column 2: image of z
+                       0.0, 1.0, 0.0,                           // column 1: image of y
+                       std::sin(angle), 0.0, std::cos(angle));  // column 2: image of z
   std::array<Vec3, 8> c;  // corner i has x, y, z bits (i & 1, i & 2, i & 4)
   for (int i = 0; i < 8; ++i)
     c[i] = at + r_y * Vec3((i & 1) ? size.x : 0.0, (i & 2) ? size.y : 0.0, (i & 4) ? size.z : 0.0);
@@ -141,8 +141,8 @@ struct ReferenceHit {
 
 /// Hits closer than 1e-6 are the ray's own start point: round-off of coordinates below 1e3 is
 /// about 1e-13, and the smallest gap of the scene (lamp to ceiling) is 1.
-inline std::optional<ReferenceHit> reference_closest_hit(const ReferenceQuadBox& box,
-                                                         const Vec3& o, const Vec3& d) {
+inline std::optional<ReferenceHit> reference_closest_hit(const ReferenceQuadBox& box, const Vec3& o,
+                                                         const Vec3& d) {
   std::optional<ReferenceHit> best;
   for (std::size_t i = 0; i < box.triangles.size(); ++i)
     if (const auto t = moller_trumbore(box.triangles[i], o, d, 1e-6); t && (!best || *t < best->t))
@@ -165,7 +165,8 @@ inline Vec3 reference_camera_direction(const ReferenceQuadBox& box, int width, i
 /// sqrt(u1) and angle), lifted to the hemisphere, in the basis of Duff et al. around n.
 inline Vec3 reference_cosine_direction(const Vec3& n, Rng& rng) {
   const double r = std::sqrt(rng.uniform()), phi = k_two_pi * rng.uniform();
-  const double x = r * std::cos(phi), y = r * std::sin(phi), z = std::sqrt(std::max(0.0, 1.0 - r * r));
+  const double x = r * std::cos(phi), y = r * std::sin(phi),
+               z = std::sqrt(std::max(0.0, 1.0 - r * r));
   const double sign = std::copysign(1.0, n.z), a = -1.0 / (sign + n.z), b = n.x * n.y * a;
   const Vec3 t1(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
   const Vec3 t2(b, sign + n.y * n.y * a, -n.y);
@@ -334,8 +335,8 @@ double direct_light_p_value(const Scene& room, const Scene& whole,
     }
     const double mean = sum / n, variance = (sum2 - sum * mean) / (n - 1.0);
     const double e = polygon_irradiance(points[i].x, Vec3(0, 1, 0), box.lamp, box.lamp_radiance.x);
-    const double expected = (box.floor_albedo.x + box.floor_albedo.y + box.floor_albedo.z) *
-                            k_inv_pi * e;
+    const double expected =
+        (box.floor_albedo.x + box.floor_albedo.y + box.floor_albedo.z) * k_inv_pi * e;
     p_values.push_back(z_test_p_value(mean, expected, std::sqrt(variance / n)));
   }
   return sidak_p_value(p_values);

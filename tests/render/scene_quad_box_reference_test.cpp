@@ -26,10 +26,9 @@ TEST(QuadBoxReferenceTest, LambertFormulaMatchesTheParallelRectangleFormFactor) 
   EXPECT_NEAR(polygon_irradiance(Vec3(0.0), up, lamp, le),
               k_pi * le * corner_rectangle_form_factor(a, b, c), 1e-12 * le);
   const double x = 40.0, z = 70.0;
-  const double parts = corner_rectangle_form_factor(x, z, c) +
-                       corner_rectangle_form_factor(a - x, z, c) +
-                       corner_rectangle_form_factor(x, b - z, c) +
-                       corner_rectangle_form_factor(a - x, b - z, c);
+  const double parts =
+      corner_rectangle_form_factor(x, z, c) + corner_rectangle_form_factor(a - x, z, c) +
+      corner_rectangle_form_factor(x, b - z, c) + corner_rectangle_form_factor(a - x, b - z, c);
   EXPECT_NEAR(polygon_irradiance(Vec3(x, 0, z), up, lamp, le), k_pi * le * parts, 1e-12 * le);
   // Far away the lamp is a point source: E -> Le A cos / r^2.
   const double r = 1e5 + c;
@@ -74,8 +73,8 @@ TEST(QuadBoxReferenceTest, SceneStatementMatchesCornellRayByRay) {
     for (int x = 0; x < 64; ++x) {
       const Vec2 u = rng.uniform2();
       const Ray ray = camera.generate_ray(x, y, u);
-      EXPECT_LT(glm::length(ray.direction - reference_camera_direction(box, 64, 48, x + u.x,
-                                                                       y + u.y)),
+      EXPECT_LT(glm::length(ray.direction -
+                            reference_camera_direction(box, 64, 48, x + u.x, y + u.y)),
                 1e-12);
       compare(ray.origin, ray.direction);
     }
@@ -133,11 +132,11 @@ TEST(QuadBoxReferenceTest, ProceduresRejectKnownWrongTracers) {
   // 2 bounces gives p of about 1e-3 at the check's size: its power is for gross errors.)
   QuadBoxComparison cut;
   cut.depth = 1;
-  EXPECT_LT(quad_box_comparison_p_value(
-                whole, cut, 7,
-                [](const Scene& s, const Ray& ray, int depth, Rng& rng, RayCount& count) {
-                  return estimate_path_radiance(s, ray, depth, rng, count);
-                }),
+  EXPECT_LT(quad_box_comparison_p_value(whole, cut, 7,
+                                        [](const Scene& s, const Ray& ray, int depth, Rng& rng,
+                                           RayCount& count) {
+                                          return estimate_path_radiance(s, ray, depth, rng, count);
+                                        }),
             1e-4);
 }
 

@@ -50,15 +50,15 @@ inline std::array<ReferenceSphere, 9> reference_sphere_box(bool specular = false
   const Color none(0.0), grey(0.75), white(0.999);
   using enum ReferenceSurface;
   return {{
-      {1e5, {1e5 + 1, 40.8, 81.6}, {0.75, 0.25, 0.25}, none},  // left
+      {1e5, {1e5 + 1, 40.8, 81.6}, {0.75, 0.25, 0.25}, none},    // left
       {1e5, {-1e5 + 99, 40.8, 81.6}, {0.25, 0.25, 0.75}, none},  // right
-      {1e5, {50, 40.8, 1e5}, grey, none},                         // back
-      {1e5, {50, 40.8, -1e5 + 170}, none, none},                  // front (black)
-      {1e5, {50, 1e5, 81.6}, grey, none},                         // bottom
-      {1e5, {50, -1e5 + 81.6, 81.6}, grey, none},                 // top
+      {1e5, {50, 40.8, 1e5}, grey, none},                        // back
+      {1e5, {50, 40.8, -1e5 + 170}, none, none},                 // front (black)
+      {1e5, {50, 1e5, 81.6}, grey, none},                        // bottom
+      {1e5, {50, -1e5 + 81.6, 81.6}, grey, none},                // top
       {16.5, {27, 16.5, 47}, white, none, specular ? mirror : diffuse},
       {16.5, {73, 16.5, 78}, white, none, specular ? glass : diffuse},
-      {600, {50, 681.6 - 0.27, 81.6}, none, Color(12.0)},         // the light
+      {600, {50, 681.6 - 0.27, 81.6}, none, Color(12.0)},  // the light
   }};
 }
 
@@ -137,7 +137,8 @@ inline Color reference_sphere_radiance(const std::array<ReferenceSphere, 9>& box
     Vec3 w = outward;
     if (glm::dot(w, d) > 0.0) w = -w;
     // smallpt's basis: u perpendicular to w and to whichever axis is not close to it.
-    const Vec3 u = glm::normalize(glm::cross(std::abs(w.x) > 0.1 ? Vec3(0, 1, 0) : Vec3(1, 0, 0), w));
+    const Vec3 u =
+        glm::normalize(glm::cross(std::abs(w.x) > 0.1 ? Vec3(0, 1, 0) : Vec3(1, 0, 0), w));
     const Vec3 v = glm::cross(w, u);
     const double phi = k_two_pi * rng.uniform(), r2 = rng.uniform(), r = std::sqrt(r2);
     d = glm::normalize(u * (std::cos(phi) * r) + v * (std::sin(phi) * r) + w * std::sqrt(1.0 - r2));
@@ -170,7 +171,8 @@ RegionVerdict sphere_box_comparison(const Scene& scene, const SphereBoxCompariso
       [&](const Ray& ray, Rng& rng, RayCount& count) { return estimate(scene, ray, rng, count); },
       [&](int x, int y, Rng& rng) {
         const Vec2 u = rng.uniform2();
-        const Vec3 d = cx * ((x + u.x) / c.width - 0.5) + cy * (0.5 - (y + u.y) / c.height) + forward;
+        const Vec3 d =
+            cx * ((x + u.x) / c.width - 0.5) + cy * (0.5 - (y + u.y) / c.height) + forward;
         // smallpt's Ray(cam.o + d*140, d.norm()): norm() normalises d first (g++ evaluates
         // the second argument first), so the ray starts 140 along the unit direction.
         const Vec3 unit = glm::normalize(d);

@@ -37,9 +37,11 @@ double two_render_error_p_value(std::uint64_t seed, const MeanSquaredError& mean
   const Camera camera(scene.camera, 128, 128);
   auto render_samples = [&](std::uint64_t first_sample) {
     const RenderSettings settings{spp, first_sample, seed, 1, nullptr};
-    return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-             return estimate_path_radiance(scene, ray, depth, rng, count);
-           }).image;
+    return render(camera, settings,
+                  [&](const Ray& ray, Rng& rng, RayCount& count) {
+                    return estimate_path_radiance(scene, ray, depth, rng, count);
+                  })
+        .image;
   };
   const Image a = render_samples(0), b = render_samples(spp);
 

@@ -160,7 +160,7 @@ TEST(VeachPlatesSceneTest, DepthOneEstimatorsMatchGlossyDirect) {
   const VeachPlates plates = make_veach_plates();
   const Scene scene = make_scene("veach-plates");
   const HemispherePdf cosine = cosine_power_pdf(1);
-  constexpr int k_paths = 1000000;     // per cell and path tracer: ~0.15 s each
+  constexpr int k_paths = 1000000;       // per cell and path tracer: ~0.15 s each
   constexpr int k_mis_samples = 100000;  // MIS's error is 5-40x smaller per sample
   const RayEstimate uniform = [&](const Ray& r, Rng& rng, RayCount& c) {
     return estimate_path_radiance(scene, r, 1, rng, c);
@@ -185,9 +185,11 @@ TEST(VeachPlatesSceneTest, DepthOneEstimatorsMatchGlossyDirect) {
     const Ray ray = ray_to_highlight(plates, plate, light);
     const std::optional<Hit> hit = scene.closest_hit(ray);
     ASSERT_TRUE(hit && hit->material == static_cast<std::uint32_t>(plate));  // on its plate
-    const RaySamples mis = sample_ray([&](const Ray& r, Rng& rng, RayCount& c) {
-      return estimate_plates_radiance(plates, r, GlossyStrategy::mis_power, rng, c);
-    }, ray, k_mis_samples, 3);
+    const RaySamples mis = sample_ray(
+        [&](const Ray& r, Rng& rng, RayCount& c) {
+          return estimate_plates_radiance(plates, r, GlossyStrategy::mis_power, rng, c);
+        },
+        ray, k_mis_samples, 3);
     ASSERT_GT(mis.stats.mean(), 0.1);  // a lit highlight
     const auto agreement = [&](const RayEstimate& estimate, std::uint64_t seed, int n) {
       const RaySamples s = sample_ray(estimate, ray, n, seed);

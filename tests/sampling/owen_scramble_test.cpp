@@ -17,7 +17,8 @@ TEST(OwenScrambleTest, ReverseBitsReversesAndIsItsOwnInverse) {
   EXPECT_EQ(reverse_bits(1u), 0x80000000u);
   EXPECT_EQ(reverse_bits(0x0000000fu), 0xf0000000u);
   EXPECT_EQ(reverse_bits(0x12345678u), 0x1e6a2c48u);
-  for (std::uint32_t x : {0u, 7u, 0xdeadbeefu, 0xffffffffu}) EXPECT_EQ(reverse_bits(reverse_bits(x)), x);
+  for (std::uint32_t x : {0u, 7u, 0xdeadbeefu, 0xffffffffu})
+    EXPECT_EQ(reverse_bits(reverse_bits(x)), x);
 }
 
 TEST(OwenScrambleTest, IsABijectionOfTheTopBits) {

@@ -38,8 +38,7 @@ MCRT_STATISTICAL_CHECK(phong_lobe_m1_matches_its_pdf_on_cdf_cells, k_sampler_alp
                                    "phong_lobe_m1_matches_its_pdf_on_cdf_cells");
 }
 MCRT_STATISTICAL_CHECK(phong_lobe_m10_matches_its_pdf_on_cdf_cells, k_sampler_alpha) {
-  return phong_lobe_cdf_p_value<10>(sample_phong_lobe, phong_lobe_pdf, seed,
-                                    k_phong_cdf_stream + 1,
+  return phong_lobe_cdf_p_value<10>(sample_phong_lobe, phong_lobe_pdf, seed, k_phong_cdf_stream + 1,
                                     "phong_lobe_m10_matches_its_pdf_on_cdf_cells");
 }
 MCRT_STATISTICAL_CHECK(phong_lobe_m100_matches_its_pdf_on_cdf_cells, k_sampler_alpha) {
@@ -62,9 +61,8 @@ MCRT_STATISTICAL_CHECK(phong_lobe_m10000_matches_its_pdf_on_cdf_cells, k_sampler
 
 // rho_d 0.5, rho_s 0.3, m 10, wo at 30 degrees: a broad lobe mostly above the surface.
 MCRT_STATISTICAL_CHECK(phong_material_matches_its_pdf, k_sampler_alpha) {
-  return phong_material_p_value(sample_phong, phong_pdf, Phong{0.5, 0.3, 10.0},
-                                30.0 * k_pi / 180.0, seed, k_phong_material_stream,
-                                "phong_material_matches_its_pdf");
+  return phong_material_p_value(sample_phong, phong_pdf, Phong{0.5, 0.3, 10.0}, 30.0 * k_pi / 180.0,
+                                seed, k_phong_material_stream, "phong_material_matches_its_pdf");
 }
 // rho_d 0.2, rho_s 0.7, m 100, wo at 75 degrees: a sharp lobe with ~1/4 of it below the
 // surface, which the sampler returns and the sphere cells count.

@@ -64,8 +64,8 @@ std::optional<Vec2> lobe_cdf_parameters(const Vec3& w) {
 /// The density of (phi, t) is p(w) dw / (dphi dt) = p(w) / ((M + 1) cos^M(alpha)).
 template <int M>
 Binning<Vec3> lobe_cdf_binning() {
-  return {{"lobe (phi, cos(alpha)^(m+1))", "phi (rad)", "cos(alpha)^(m+1)", 0.0, k_two_pi, 0.0,
-           1.0, 21, 11, 1.0},
+  return {{"lobe (phi, cos(alpha)^(m+1))", "phi (rad)", "cos(alpha)^(m+1)", 0.0, k_two_pi, 0.0, 1.0,
+           21, 11, 1.0},
           &detail::lobe_cdf_point<M>,
           &detail::lobe_cdf_parameters<M>};
 }

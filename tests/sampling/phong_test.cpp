@@ -105,7 +105,7 @@ TEST(PhongTest, LobePdfIntegratesToOneOverTheSphere) {
     };
     const double total = Quadrature::integrate(over_phi, 0.0, k_lobe_v_max, 10, 1e-12);
     EXPECT_NEAR(total, 1.0, 1e-10) << "m " << m;
-    for (int i = 1; i <= 100; ++i)  // from cos(alpha) = -0.01: at 0 the rotation's round-off
+    for (int i = 1; i <= 100; ++i)   // from cos(alpha) = -0.01: at 0 the rotation's round-off
       for (int j = 0; j < 8; ++j) {  // may land either side of the horizon
         const double c = -i / 100.0;
         const double s = std::sqrt((1.0 - c) * (1.0 + c));
@@ -212,8 +212,8 @@ TEST(PhongTest, MaterialPdfIntegratesToOne) {
   const Vec3 n = phong_test_normal();
   const AxisBasis basis(n, Vec3(1, 0, 0));
   const Vec3 wo = basis.to_world({std::sin(0.7), 0.0, std::cos(0.7)});
-  for (const Phong& material : {Phong{0.5, 0.3, 10.0}, Phong{0.0, 1.0, 10.0},
-                                Phong{0.6, 0.0, 10.0}, Phong{0.0, 0.0, 10.0}}) {
+  for (const Phong& material : {Phong{0.5, 0.3, 10.0}, Phong{0.0, 1.0, 10.0}, Phong{0.6, 0.0, 10.0},
+                                Phong{0.0, 0.0, 10.0}}) {
     const auto pdf = [&](const Vec3& local) {
       return phong_pdf(material, basis.to_world(local), n, wo);
     };
@@ -232,13 +232,12 @@ TEST(PhongTest, AlbedoVarianceClosedFormAtNormalIncidence) {
     const double y_per_c = rho_s * (m + 2.0) / (m + 1.0);
     const auto moment = [&](int k) {
       return Quadrature::integrate(
-          [&](double c) { return (m + 1.0) * std::pow(c, m) * std::pow(y_per_c * c, k); }, 0.0,
-          1.0, 15, 1e-14);
+          [&](double c) { return (m + 1.0) * std::pow(c, m) * std::pow(y_per_c * c, k); }, 0.0, 1.0,
+          15, 1e-14);
     };
     const double mean = moment(1);
     EXPECT_NEAR(mean, rho_s, 1e-12);
-    EXPECT_NEAR(moment(2) - mean * mean, phong_lobe_albedo_variance_at_normal(rho_s, m),
-                1e-12);
+    EXPECT_NEAR(moment(2) - mean * mean, phong_lobe_albedo_variance_at_normal(rho_s, m), 1e-12);
     EXPECT_LE(phong_lobe_albedo_variance_at_normal(rho_s, m),
               phong_lobe_albedo_variance_bound(rho_s, rho_s, m));
   }

@@ -108,7 +108,8 @@ double uniformity_p_value(MakePoints make, std::uint32_t i, unsigned j) {
     cells[c] = {c % k_cells, c / k_cells, 0.0, double(k_keys) / (k_cells * k_cells)};
   for (std::uint64_t key = 0; key < k_keys; ++key) {
     const auto points = make(key);
-    cells[cell_of(points(i, j + 1), k_cells) * k_cells + cell_of(points(i, j), k_cells)].observed += 1;
+    cells[cell_of(points(i, j + 1), k_cells) * k_cells + cell_of(points(i, j), k_cells)].observed +=
+        1;
   }
   return chi_square_test(std::move(cells), 0).p_value;
 }
@@ -121,18 +122,53 @@ TEST(PointSetsTest, EachRandomisedPointIsUniform) {
   constexpr std::uint32_t n = 48;  // not a power of two: the plain case must work too
   for (const std::uint32_t i : {0u, 7u, 47u})
     for (const unsigned j : {0u, 4u}) {
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return IndependentPoints{n, k}; }, i, j), alpha);
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return JitteredPoints{n, 6, k}; }, i, j), alpha);
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return LatinHypercubePoints{n, k}; }, i, j), alpha);
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return SobolPoints{n, k, SobolScramble::owen}; }, i, j), alpha);
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return SobolPoints{n, k, SobolScramble::xor_shift}; }, i, j), alpha);
-      EXPECT_GT(uniformity_p_value([](std::uint64_t k) { return HaltonPoints{n, k}; }, i, j), alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return IndependentPoints{n, k};
+                    },
+                    i, j),
+                alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return JitteredPoints{n, 6, k};
+                    },
+                    i, j),
+                alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return LatinHypercubePoints{n, k};
+                    },
+                    i, j),
+                alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return SobolPoints{n, k, SobolScramble::owen};
+                    },
+                    i, j),
+                alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return SobolPoints{n, k, SobolScramble::xor_shift};
+                    },
+                    i, j),
+                alpha);
+      EXPECT_GT(uniformity_p_value(
+                    [](std::uint64_t k) {
+                      return HaltonPoints{n, k};
+                    },
+                    i, j),
+                alpha);
     }
 }
 
 TEST(PointSetsTest, TheUnscrambledNetIsNotUniform) {
   // The check above must be able to fail: the plain net puts point 0 at the origin always.
-  EXPECT_LT(uniformity_p_value([](std::uint64_t) { return SobolPoints{48, 0, SobolScramble::none}; }, 0, 0), 1e-12);
+  EXPECT_LT(uniformity_p_value(
+                [](std::uint64_t) {
+                  return SobolPoints{48, 0, SobolScramble::none};
+                },
+                0, 0),
+            1e-12);
 }
 
 // The quarter disk's indicator on [0,1)^2, whose integral is pi/4: a discontinuous
@@ -162,12 +198,42 @@ TEST(PointSetsTest, EveryRandomisedEstimateIsUnbiased) {
   constexpr double k_z = 4.6;
   constexpr std::uint32_t n = 64;
   constexpr int r = 4000;
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return IndependentPoints{n, k}; }, n, r)), k_z);
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return JitteredPoints{n, 2, k}; }, n, r)), k_z);
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return LatinHypercubePoints{n, k}; }, n, r)), k_z);
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return SobolPoints{n, k, SobolScramble::owen}; }, n, r)), k_z);
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return SobolPoints{n, k, SobolScramble::xor_shift}; }, n, r)), k_z);
-  EXPECT_LT(std::abs(unbiasedness_z([](std::uint64_t k) { return HaltonPoints{n, k}; }, n, r)), k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return IndependentPoints{n, k};
+                },
+                n, r)),
+            k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return JitteredPoints{n, 2, k};
+                },
+                n, r)),
+            k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return LatinHypercubePoints{n, k};
+                },
+                n, r)),
+            k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return SobolPoints{n, k, SobolScramble::owen};
+                },
+                n, r)),
+            k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return SobolPoints{n, k, SobolScramble::xor_shift};
+                },
+                n, r)),
+            k_z);
+  EXPECT_LT(std::abs(unbiasedness_z(
+                [](std::uint64_t k) {
+                  return HaltonPoints{n, k};
+                },
+                n, r)),
+            k_z);
 }
 
 TEST(PointSetsTest, ThePlainNetIsBiased) {

@@ -84,8 +84,8 @@ MCRT_STATISTICAL_CHECK(hemisphere_samplers_keep_their_pdf_in_world_frames, k_sam
     };
     results[2 * i] = chi_square_sampler_test(uniform, uniform_hemisphere_pdf_at, binning, seed,
                                              k_samples, stream++);
-    results[2 * i + 1] = chi_square_sampler_test(cosine, cosine_hemisphere_pdf_at, binning,
-                                                 seed, k_samples, stream++);
+    results[2 * i + 1] = chi_square_sampler_test(cosine, cosine_hemisphere_pdf_at, binning, seed,
+                                                 k_samples, stream++);
   }
   std::array<double, results.size()> p{};
   std::size_t worst = 0;

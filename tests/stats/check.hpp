@@ -26,8 +26,8 @@ inline constexpr std::uint64_t k_suite_seed = 20261122;
 
 struct StatisticalCheck {
   std::string name;
-  double alpha;                                      ///< designed false-failure rate
-  std::function<double(std::uint64_t seed)> p_value; ///< runs the check, returns its p-value
+  double alpha;                                       ///< designed false-failure rate
+  std::function<double(std::uint64_t seed)> p_value;  ///< runs the check, returns its p-value
   /// The design is "at most alpha" (a Sidak combination of correlated statistics, which is
   /// conservative): the calibration then asks only that no rate be above its level and that
   /// the p-values be no smaller than uniform ones, not that they be uniform.
@@ -46,14 +46,14 @@ struct CheckRegistrar {
 
 }  // namespace mcrt::testing
 
-#define MCRT_STATISTICAL_CHECK(name, alpha)                                               \
-  static double name(std::uint64_t seed);                                                 \
-  static const ::mcrt::testing::CheckRegistrar name##_registrar{#name, alpha, &name};   \
+#define MCRT_STATISTICAL_CHECK(name, alpha)                                           \
+  static double name(std::uint64_t seed);                                             \
+  static const ::mcrt::testing::CheckRegistrar name##_registrar{#name, alpha, &name}; \
   static double name([[maybe_unused]] std::uint64_t seed)
 
 /// The same for a check whose false-failure rate is at most alpha by design (StatisticalCheck's
 /// at_most).
-#define MCRT_STATISTICAL_CHECK_AT_MOST(name, alpha)                                           \
-  static double name(std::uint64_t seed);                                                     \
+#define MCRT_STATISTICAL_CHECK_AT_MOST(name, alpha)                                         \
+  static double name(std::uint64_t seed);                                                   \
   static const ::mcrt::testing::CheckRegistrar name##_registrar{#name, alpha, &name, true}; \
   static double name([[maybe_unused]] std::uint64_t seed)

@@ -38,8 +38,7 @@ ChiSquareResult chi_square_test(std::vector<CellCount> cells, std::uint64_t outs
     result.p_value = 0.0;
     return result;
   };
-  if (outside > 0)
-    return fail_at_once(std::to_string(outside) + " samples outside the domain");
+  if (outside > 0) return fail_at_once(std::to_string(outside) + " samples outside the domain");
   for (const CellCount& c : result.cells)
     if (c.expected < k_zero_expected && c.observed > 0.0)
       return fail_at_once(std::to_string(static_cast<long long>(c.observed)) +
@@ -96,8 +95,8 @@ fs::path write_chi_square_report(const fs::path& dir, const std::string& name,
     largest = std::max(largest, std::abs(residual));
     csv << c.u_index << ',' << c.v_index << ',' << grid.u_low(c.u_index) << ','
         << grid.u_low(c.u_index) + grid.u_width() << ',' << grid.v_low(c.v_index) << ','
-        << grid.v_low(c.v_index) + grid.v_width() << ',' << c.observed << ',' << c.expected
-        << ',' << residual << '\n';
+        << grid.v_low(c.v_index) + grid.v_width() << ',' << c.observed << ',' << c.expected << ','
+        << residual << '\n';
   }
   const fs::path csv_path = dir / (name + ".csv");
   write_file_atomic(csv_path, csv.str());

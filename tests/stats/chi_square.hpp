@@ -40,13 +40,13 @@ struct CellCount {
 
 /// The outcome of a chi-square goodness-of-fit test.
 struct ChiSquareResult {
-  std::vector<CellCount> cells;  ///< every cell of the grid, before pooling
-  std::uint64_t outside = 0;     ///< samples that fell outside the domain
-  double statistic = 0.0;        ///< Pearson's X^2 over the pooled cells
-  double dof = 0.0;              ///< pooled cells - 1
-  double p_value = 1.0;          ///< P(chi^2(dof) > X^2); 0 after an immediate failure
-  int pooled_cells = 0;          ///< cells with E_c < k_min_expected merged into one
-  std::string immediate_failure; ///< why p = 0 without a statistic, or empty
+  std::vector<CellCount> cells;   ///< every cell of the grid, before pooling
+  std::uint64_t outside = 0;      ///< samples that fell outside the domain
+  double statistic = 0.0;         ///< Pearson's X^2 over the pooled cells
+  double dof = 0.0;               ///< pooled cells - 1
+  double p_value = 1.0;           ///< P(chi^2(dof) > X^2); 0 after an immediate failure
+  int pooled_cells = 0;           ///< cells with E_c < k_min_expected merged into one
+  std::string immediate_failure;  ///< why p = 0 without a statistic, or empty
 
   /// One line: "X^2 = 231.4, dof = 230, p = 0.46 (3 cells pooled)" or the immediate failure.
   std::string describe() const;
@@ -93,7 +93,8 @@ double pdf_integral(const Pdf& pdf, const Binning<Point>& binning) {
 /// Counts `points` in the cells of `binning` and tests the counts against the cell
 /// probabilities `probability` (cell_probabilities of the pdf).
 template <class Point>
-ChiSquareResult chi_square_points_test(const std::vector<Point>& points, const std::vector<double>& probability,
+ChiSquareResult chi_square_points_test(const std::vector<Point>& points,
+                                       const std::vector<double>& probability,
                                        const Binning<Point>& binning) {
   std::vector<CellCount> cells(probability.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -135,10 +136,10 @@ std::filesystem::path write_chi_square_report(const std::filesystem::path& dir,
 
 /// How to run a sampler's chi-square test.
 struct SamplerTest {
-  std::string name;                 ///< names the report files
+  std::string name;                ///< names the report files
   std::uint64_t samples = 100000;  ///< points drawn
-  std::uint64_t stream = 0;         ///< generator stream (with the seed)
-  double alpha = 1e-4;              ///< below this p-value the test fails and reports
+  std::uint64_t stream = 0;        ///< generator stream (with the seed)
+  double alpha = 1e-4;             ///< below this p-value the test fails and reports
 };
 
 /// Reports a failed test: writes its CSV and plot under failure_report_root()/test.name/

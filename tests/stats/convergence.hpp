@@ -14,9 +14,9 @@ namespace mcrt::testing {
 /// A fitted slope with its confidence interval.
 struct SlopeEstimate {
   double slope = 0.0;
-  double standard_error = 0.0;     ///< from the residuals of the fit
-  double dof = 0.0;                ///< points - 2
-  ConfidenceInterval confidence;   ///< slope -+ t_{dof, (1+level)/2} standard_error
+  double standard_error = 0.0;    ///< from the residuals of the fit
+  double dof = 0.0;               ///< points - 2
+  ConfidenceInterval confidence;  ///< slope -+ t_{dof, (1+level)/2} standard_error
   double level = 0.0;
 };
 

@@ -41,8 +41,8 @@ double variance_test_p_value(double sample_variance, std::uint64_t n, double exp
   return std::min(1.0, 2.0 * std::min(lower, upper));
 }
 
-double variance_z_test_p_value(double sample_variance, std::uint64_t n,
-                               double expected_variance, double fourth_central_moment) {
+double variance_z_test_p_value(double sample_variance, std::uint64_t n, double expected_variance,
+                               double fourth_central_moment) {
   const auto count = static_cast<double>(n);
   const double sigma4 = expected_variance * expected_variance;
   const double variance_of_s2 =
@@ -94,8 +94,8 @@ double sidak_p_value(std::span<const double> p_values) {
   return sidak_p_value(smallest, static_cast<int>(p_values.size()));
 }
 
-ConfidenceInterval binomial_confidence_interval(std::uint64_t successes,
-                                              std::uint64_t trials, double level) {
+ConfidenceInterval binomial_confidence_interval(std::uint64_t successes, std::uint64_t trials,
+                                                double level) {
   using bm::binomial_distribution;
   const double tail = (1.0 - level) / 2.0;
   const auto n = static_cast<double>(trials), k = static_cast<double>(successes);

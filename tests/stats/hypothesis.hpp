@@ -15,8 +15,7 @@ double z_test_p_value(double estimate, double expected, double standard_error);
 
 /// Two-sided one-sample t-test of a sample mean against `expected`, with n - 1 degrees of
 /// freedom.
-double t_test_p_value(double sample_mean, double sample_variance, std::uint64_t n,
-                      double expected);
+double t_test_p_value(double sample_mean, double sample_variance, std::uint64_t n, double expected);
 
 /// Two-sided chi-square test of a sample variance s^2 of n NORMAL values against the
 /// closed-form variance sigma^2: (n - 1) s^2 / sigma^2 ~ chi^2(n - 1), exact at any n. For
@@ -28,8 +27,8 @@ double variance_test_p_value(double sample_variance, std::uint64_t n, double exp
 ///   Var[s^2] = (mu4 - sigma^4 (n - 3) / (n - 1)) / n,
 /// and s^2, a mean of n terms, is normal for large n (thousands: its skewness falls as
 /// 1/sqrt(n)), so rejecting at p < alpha has false-failure rate alpha.
-double variance_z_test_p_value(double sample_variance, std::uint64_t n,
-                               double expected_variance, double fourth_central_moment);
+double variance_z_test_p_value(double sample_variance, std::uint64_t n, double expected_variance,
+                               double fourth_central_moment);
 
 /// The same test when mu4 is not known in closed form: it is taken as kurtosis x sigma^4, the
 /// kurtosis m4 / m2^2 estimated from the values themselves. The kurtosis is scale-free, so the
@@ -66,8 +65,8 @@ struct ConfidenceInterval {
 
 /// Exact (Clopper-Pearson) two-sided confidence interval at `level` (e.g. 0.99) for a binomial
 /// rate, from `successes` out of `trials`. It covers the true rate with probability >= level.
-ConfidenceInterval binomial_confidence_interval(std::uint64_t successes,
-                                              std::uint64_t trials, double level);
+ConfidenceInterval binomial_confidence_interval(std::uint64_t successes, std::uint64_t trials,
+                                                double level);
 
 /// Two-sided exact binomial test of `successes` out of `trials` against `rate`:
 /// p = min(1, 2 min(P(X <= k), P(X >= k))) with X ~ Binomial(trials, rate).

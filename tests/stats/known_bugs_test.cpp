@@ -62,8 +62,8 @@ TEST_F(KnownBugsTest, DiskSamplerWithRadiusUIsRejected) {
 }
 
 TEST_F(KnownBugsTest, HemisphereSamplerWhosePdfClaimsOneOverPiIsRejected) {
-  EXPECT_GE(hemisphere_sampler_p_value(sample_uniform_hemisphere, uniform_hemisphere_pdf_at,
-                                       k_seed, k_uniform_hemisphere_stream, "right"),
+  EXPECT_GE(hemisphere_sampler_p_value(sample_uniform_hemisphere, uniform_hemisphere_pdf_at, k_seed,
+                                       k_uniform_hemisphere_stream, "right"),
             k_sampler_alpha);
   EXPECT_LT(hemisphere_sampler_p_value(sample_uniform_hemisphere, hemisphere_pdf_one_over_pi,
                                        k_seed, k_uniform_hemisphere_stream, "wrong"),
@@ -71,8 +71,8 @@ TEST_F(KnownBugsTest, HemisphereSamplerWhosePdfClaimsOneOverPiIsRejected) {
 }
 
 TEST_F(KnownBugsTest, CosineSamplerWithAnExtraFactorTwoIsRejected) {
-  EXPECT_GE(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_hemisphere_pdf_at,
-                                       k_seed, k_cosine_hemisphere_stream, "right"),
+  EXPECT_GE(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_hemisphere_pdf_at, k_seed,
+                                       k_cosine_hemisphere_stream, "right"),
             k_sampler_alpha);
   EXPECT_LT(hemisphere_sampler_p_value(sample_cosine_hemisphere, cosine_pdf_times_two, k_seed,
                                        k_cosine_hemisphere_stream, "wrong"),
@@ -107,8 +107,8 @@ TEST_F(KnownBugsTest, PhongMaterialPdfMixedHalfAndHalfIsRejected) {
   EXPECT_GE(phong_material_p_value(sample_phong, phong_pdf, material, theta_o, k_seed,
                                    k_phong_material_stream, "right"),
             k_sampler_alpha);
-  EXPECT_LT(phong_material_p_value(sample_phong, phong_pdf_mixed_half_and_half, material,
-                                   theta_o, k_seed, k_phong_material_stream, "wrong"),
+  EXPECT_LT(phong_material_p_value(sample_phong, phong_pdf_mixed_half_and_half, material, theta_o,
+                                   k_seed, k_phong_material_stream, "wrong"),
             k_sampler_alpha);
 }
 
@@ -144,12 +144,13 @@ HeatMapSides heat_map_sides(const std::filesystem::path& png_path, bool across) 
 // innermost ring (r^2 < 1/11 holds 30% of them, not 9%) and too few in the outermost.
 TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
   const Binning<Vec2> binning = sampler_disk_binning();
-  const ChiSquareResult r = chi_square_sampler_test(disk_with_radius_u, disk_pdf, binning,
-                                                    k_seed, k_sampler_samples, k_disk_stream);
+  const ChiSquareResult r = chi_square_sampler_test(disk_with_radius_u, disk_pdf, binning, k_seed,
+                                                    k_sampler_samples, k_disk_stream);
   double inner_observed = 0.0, inner_expected = 0.0, outer_observed = 0.0, outer_expected = 0.0;
   for (const CellCount& c : r.cells) {
     if (c.u_index == 0) inner_observed += c.observed, inner_expected += c.expected;
-    if (c.u_index == binning.u_cells - 1) outer_observed += c.observed, outer_expected += c.expected;
+    if (c.u_index == binning.u_cells - 1)
+      outer_observed += c.observed, outer_expected += c.expected;
   }
   // sqrt(1/11) = 0.3015 of the samples; 1e5 samples put the fraction within 0.005 (3.5 sigma).
   EXPECT_NEAR(inner_observed / k_sampler_samples, std::sqrt(1.0 / 11.0), 0.005);
@@ -161,7 +162,8 @@ TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
   // What a student sees: the heat map (r^2 across, phi up) is red (too many) at the left, the
   // inner rings, and blue (too few) at the right, the outer ones.
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed: no heat map to look at";
-  const HeatMapSides sides = heat_map_sides(csv.parent_path() / "known_bug_disk_r_equals_u.png", true);
+  const HeatMapSides sides =
+      heat_map_sides(csv.parent_path() / "known_bug_disk_r_equals_u.png", true);
   EXPECT_GT(sides.red_first_half, 10 * sides.red_second_half);
   EXPECT_GT(sides.blue_second_half, 10 * sides.blue_first_half);
 }
@@ -172,13 +174,14 @@ TEST_F(KnownBugsTest, FailureReportPointsAtTheWrongRadius) {
 TEST_F(KnownBugsTest, FailureReportOfTheHemispherePointsAtThePole) {
   const Binning<Vec3> binning = sampler_hemisphere_binning();
   const ChiSquareResult r =
-      chi_square_sampler_test(cosine_hemisphere_with_radius_u, cosine_hemisphere_pdf_at, binning, k_seed,
-                              k_sampler_samples, k_cosine_hemisphere_stream);
+      chi_square_sampler_test(cosine_hemisphere_with_radius_u, cosine_hemisphere_pdf_at, binning,
+                              k_seed, k_sampler_samples, k_cosine_hemisphere_stream);
   EXPECT_LT(r.p_value, k_sampler_alpha);
   const auto csv = write_chi_square_report(failure_report_root() / "known_bug_cosine_r_equals_u",
                                            "known_bug_cosine_r_equals_u", r, binning);
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed: no heat map to look at";
-  const HeatMapSides sides = heat_map_sides(csv.parent_path() / "known_bug_cosine_r_equals_u.png", false);
+  const HeatMapSides sides =
+      heat_map_sides(csv.parent_path() / "known_bug_cosine_r_equals_u.png", false);
   EXPECT_GT(sides.red_second_half, 10 * sides.red_first_half);  // red at the top: the pole
   EXPECT_GT(sides.blue_first_half, 10 * sides.red_first_half);  // the lower half blue, not red
 }
@@ -221,8 +224,8 @@ SlopeEstimate trapezoid_slope(const Rule& rule) {
 
 TEST_F(KnownBugsTest, TrapezoidWithFullEndWeightsIsRejected) {
   constexpr double k_slope_tolerance = 0.1;
-  const SlopeEstimate right =
-      trapezoid_slope([](const Gaussian1D& f, std::uint64_t n) { return trapezoid(f, f.domain, n); });
+  const SlopeEstimate right = trapezoid_slope(
+      [](const Gaussian1D& f, std::uint64_t n) { return trapezoid(f, f.domain, n); });
   const SlopeEstimate wrong = trapezoid_slope(trapezoid_with_full_end_weights);
   EXPECT_NEAR(right.slope, -2.0, k_slope_tolerance);
   EXPECT_GT(std::abs(wrong.slope + 2.0), k_slope_tolerance) << "slope " << wrong.slope;

@@ -14,9 +14,8 @@ RunningStats summarize(std::span<const double> values) {
 
 double trials_p_value(std::span<const double> estimates, double mean, double variance) {
   const RunningStats stats = summarize(estimates);
-  const std::array<double, 2> p{
-      t_test_p_value(stats.mean(), stats.variance(), stats.count(), mean),
-      variance_test_p_value(stats.variance(), stats.count(), variance)};
+  const std::array<double, 2> p{t_test_p_value(stats.mean(), stats.variance(), stats.count(), mean),
+                                variance_test_p_value(stats.variance(), stats.count(), variance)};
   return sidak_p_value(p);
 }
 

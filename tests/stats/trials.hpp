@@ -17,8 +17,8 @@ namespace mcrt::testing {
 /// Runs `trials` independent trials estimate(rng) in parallel; trial t draws from
 /// Rng(seed, t), so the results do not depend on the threads.
 template <class Estimator>
-std::vector<double> run_trials(const Estimator& estimate, std::uint64_t trials,
-                               std::uint64_t seed, int threads = 1) {
+std::vector<double> run_trials(const Estimator& estimate, std::uint64_t trials, std::uint64_t seed,
+                               int threads = 1) {
   std::vector<double> estimates(trials);
   parallel_for(trials, threads, [&](std::size_t t) {
     Rng rng(seed, t);
@@ -41,8 +41,7 @@ double trials_p_value(std::span<const double> estimates, double mean, double var
 /// against `expected` (for estimators whose single draws are far from normal, such as one
 /// path of a path tracer: only the mean is tested, which the central limit theorem covers).
 template <class Draw>
-double mean_p_value(const Draw& draw, std::uint64_t count, std::uint64_t seed,
-                    double expected) {
+double mean_p_value(const Draw& draw, std::uint64_t count, std::uint64_t seed, double expected) {
   RunningStats stats;
   for (std::uint64_t i = 0; i < count; ++i) {
     Rng rng(seed, i);
@@ -55,4 +54,3 @@ double mean_p_value(const Draw& draw, std::uint64_t count, std::uint64_t seed,
 RunningStats summarize(std::span<const double> values);
 
 }  // namespace mcrt::testing
-

@@ -46,7 +46,7 @@ MCRT_STATISTICAL_CHECK(consecutive_streams_are_independent, 1e-4) {
   std::array<double, k_draws> p{};
   for (int k = 0; k < k_draws; ++k)
     p[k] = mcrt::testing::variance_test_p_value(group_means[k].variance(), k_groups,
-                                              1.0 / (12.0 * k_group_size));
+                                                1.0 / (12.0 * k_group_size));
   return mcrt::testing::sidak_p_value(p);
 }
 

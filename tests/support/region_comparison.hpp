@@ -62,8 +62,7 @@ struct PairedMoments {
 };
 template <class Estimate, class Reference>
 PairedMoments paired_pixel_moments(const Camera& camera, int width, int height, int samples,
-                                   std::uint64_t seed, Estimate&& estimate,
-                                   Reference&& reference) {
+                                   std::uint64_t seed, Estimate&& estimate, Reference&& reference) {
   const auto pixels = static_cast<std::size_t>(width * height);
   PairedMoments m{std::vector<ColorMoments>(pixels), std::vector<ColorMoments>(pixels)};
   for (int s = 0; s < samples; ++s) {
@@ -82,9 +81,9 @@ PairedMoments paired_pixel_moments(const Camera& camera, int width, int height, 
 
 /// The worst region of a comparison, for a failure's message.
 struct RegionVerdict {
-  double p_value = 1.0;       ///< Sidak-combined over every region and channel
-  std::size_t worst = 0;      ///< the region of the smallest p-value (comparison_regions order)
-  double worst_z = 0.0;       ///< its z (a's mean above b's: positive)
+  double p_value = 1.0;   ///< Sidak-combined over every region and channel
+  std::size_t worst = 0;  ///< the region of the smallest p-value (comparison_regions order)
+  double worst_z = 0.0;   ///< its z (a's mean above b's: positive)
 };
 
 /// The Sidak-combined p-value of a against b (per-pixel moments of two renders of one image).

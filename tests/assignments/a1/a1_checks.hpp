@@ -67,12 +67,14 @@ Spread spread_of_runs(Run&& run, double sigma2) {
   const bool all_equal = std::all_of(x.begin(), x.end(), [&](double v) { return v == x[0]; });
   const double s2 = all_equal ? 0.0 : squares / (k_spread_runs - 1);
   if (!std::isfinite(s2)) return {0.0, s2, x[0]};
-  return {variance_test_p_value(s2, static_cast<std::uint64_t>(k_spread_runs), sigma2), s2 / sigma2, x[0]};
+  return {variance_test_p_value(s2, static_cast<std::uint64_t>(k_spread_runs), sigma2), s2 / sigma2,
+          x[0]};
 }
 
 /// Says why a spread failed (`ratio`: s^2 / sigma^2 averaged over the seeds; `closed_form`:
 /// sigma^2 as the handout writes it), or "" when `rejected` (a majority of seeds) is false.
-inline std::string diagnose_spread(bool rejected, double ratio, double first, const std::string& closed_form) {
+inline std::string diagnose_spread(bool rejected, double ratio, double first,
+                                   const std::string& closed_form) {
   if (!rejected) return "";
   if (ratio == 0.0)
     return diagnosis(fmt::format(
@@ -104,7 +106,9 @@ struct SeedOutcome {
 inline constexpr std::uint64_t k_disk_points = 200000;  ///< sd of 4M/N: 0.0037
 
 /// sigma^2 of 4M/N: 16 eta (1 - eta) / N with eta = pi/4.
-inline double disk_variance(std::uint64_t n) { return 16.0 * k_disk_hit_probability * (1.0 - k_disk_hit_probability) / static_cast<double>(n); }
+inline double disk_variance(std::uint64_t n) {
+  return 16.0 * k_disk_hit_probability * (1.0 - k_disk_hit_probability) / static_cast<double>(n);
+}
 
 /// a1.1 at one seed: 4M/N z-tested against pi with the closed-form sd 4 sqrt(p(1-p)/N) (the
 /// estimate in `estimate`), and the spread of k_spread_runs runs.
@@ -113,8 +117,9 @@ SeedOutcome disk_outcome(P&& producer, std::uint64_t seed, double& estimate) {
   estimate = producer.a1_disk(k_disk_points, seed, 11);
   SeedOutcome o;
   o.p_mean = z_test_p_value(estimate, k_pi, disk_area_theory_std(k_disk_points));
-  o.spread = spread_of_runs([&](std::uint64_t stream) { return producer.a1_disk(k_spread_points, seed, stream); },
-                            disk_variance(k_spread_points));
+  o.spread = spread_of_runs(
+      [&](std::uint64_t stream) { return producer.a1_disk(k_spread_points, seed, stream); },
+      disk_variance(k_spread_points));
   return o;
 }
 
@@ -150,14 +155,19 @@ TaskResult check_disk_estimator(P&& producer) {
   const double mean = sum / k_seeds;
   std::string d = diagnose_mean_ratio(mean, k_pi);
   if (near(mean, 4.0 / std::sqrt(2.0), 0.01))
-    d = diagnosis("your estimate is 4/sqrt(2) = 2.83: is y drawn equal to x (the test 2 x^2 <= 1)?");
+    d = diagnosis(
+        "your estimate is 4/sqrt(2) = 2.83: is y drawn equal to x (the test 2 x^2 <= 1)?");
   else if (near(mean, k_pi / 4.0, 0.01))
-    d = diagnosis("your estimate is about pi/4: you forgot the factor 4 (the area of the square [-1,1]^2)");
+    d = diagnosis(
+        "your estimate is about pi/4: you forgot the factor 4 (the area of the square [-1,1]^2)");
   if (d.empty() && !majority_rejects(p_mean))
-    d = diagnose_spread(majority_rejects(p_spread), ratios / k_seeds, first, "16 eta (1 - eta) / N, eta = pi/4");
-  return {v.passed(), fmt::format("disk estimate, mean over 3 seeds {:.5f} (pi = {:.5f}); spread over {} runs {:.3g}x "
-                                  "16 eta (1 - eta) / N; {}\n{}",
-                                  mean, k_pi, k_spread_runs, ratios / k_seeds, v.describe(), v.passed() ? "" : d)};
+    d = diagnose_spread(majority_rejects(p_spread), ratios / k_seeds, first,
+                        "16 eta (1 - eta) / N, eta = pi/4");
+  return {v.passed(),
+          fmt::format(
+              "disk estimate, mean over 3 seeds {:.5f} (pi = {:.5f}); spread over {} runs {:.3g}x "
+              "16 eta (1 - eta) / N; {}\n{}",
+              mean, k_pi, k_spread_runs, ratios / k_seeds, v.describe(), v.passed() ? "" : d)};
 }
 
 inline constexpr std::uint64_t k_ball_points = 100000;
@@ -175,8 +185,9 @@ SeedOutcome ball_outcome(P&& producer, int k, std::uint64_t seed, double& volume
   volume = producer.a1_ball(k, k_ball_points, seed, 12);
   SeedOutcome o;
   o.p_mean = z_test_p_value(volume, unit_ball_volume(k), ball_volume_theory_std(k, k_ball_points));
-  o.spread = spread_of_runs([&](std::uint64_t stream) { return producer.a1_ball(k, k_spread_points, seed, stream); },
-                            ball_variance(k, k_spread_points));
+  o.spread = spread_of_runs(
+      [&](std::uint64_t stream) { return producer.a1_ball(k, k_spread_points, seed, stream); },
+      ball_variance(k, k_spread_points));
   return o;
 }
 
@@ -186,7 +197,8 @@ SeedOutcome ball_outcome(P&& producer, int k, std::uint64_t seed, double& volume
 /// estimate to `volume_sums`; each dimension's outcome to `outcomes` if given.
 template <class P>
 double balls_p_value(P&& producer, const std::vector<int>& dims, std::uint64_t seed,
-                     std::vector<double>& volume_sums, std::vector<SeedOutcome>* outcomes = nullptr) {
+                     std::vector<double>& volume_sums,
+                     std::vector<SeedOutcome>* outcomes = nullptr) {
   volume_sums.resize(dims.size(), 0.0);
   std::vector<double> p;
   for (std::size_t i = 0; i < dims.size(); ++i) {
@@ -227,9 +239,10 @@ TaskResult check_ball_estimator(P&& producer, const std::vector<int>& dims) {
     if (d.empty() && !majority_rejects(p_mean))
       d = diagnose_spread(majority_rejects(p_spread), ratios / k_seeds, by_seed[0][i].spread.first,
                           "4^k p (1 - p) / N, p = V_k / 2^k");
-    result.message += fmt::format("k = {}: mean {:.5f}, V_k = {:.5f}; spread over {} runs {:.3g}x 4^k p (1 - p) / N\n{}",
-                                  k, mean, unit_ball_volume(k), k_spread_runs, ratios / k_seeds,
-                                  v.passed() || d.empty() ? "" : d + "\n");
+    result.message += fmt::format(
+        "k = {}: mean {:.5f}, V_k = {:.5f}; spread over {} runs {:.3g}x 4^k p (1 - p) / N\n{}", k,
+        mean, unit_ball_volume(k), k_spread_runs, ratios / k_seeds,
+        v.passed() || d.empty() ? "" : d + "\n");
   }
   result.message += "all dimensions, mean and spread at once (Sidak): " + v.describe() + "\n";
   return result;
@@ -239,18 +252,24 @@ inline constexpr std::uint64_t k_basic_points = 10000;
 
 /// a1.3's F_N of x^2 on [1, 4]: I = 21, and the closed-form sd sqrt((vol J - I^2) / N) with
 /// vol J - I^2 = 172.8.
-inline double basic_estimator_theory_sd() { return std::sqrt(172.8 / static_cast<double>(k_basic_points)); }
+inline double basic_estimator_theory_sd() {
+  return std::sqrt(172.8 / static_cast<double>(k_basic_points));
+}
 
 /// a1.3 at one seed: F_N z-tested against I = 21 (the estimate and its standard error in
 /// `e`), and the spread of k_spread_runs runs against (vol J - I^2) / N.
 template <class P>
 SeedOutcome basic_estimator_outcome(P&& producer, std::uint64_t seed, EstimateAndError& e) {
-  e = producer.a1_monte_carlo(A1Integrand::square, 0.0, Segment{1.0, 4.0}, k_basic_points, seed, 13);
+  e = producer.a1_monte_carlo(A1Integrand::square, 0.0, Segment{1.0, 4.0}, k_basic_points, seed,
+                              13);
   SeedOutcome o;
   o.p_mean = z_test_p_value(e.estimate, 21.0, basic_estimator_theory_sd());
   o.spread = spread_of_runs(
       [&](std::uint64_t stream) {
-        return producer.a1_monte_carlo(A1Integrand::square, 0.0, Segment{1.0, 4.0}, k_spread_points, seed, stream).estimate;
+        return producer
+            .a1_monte_carlo(A1Integrand::square, 0.0, Segment{1.0, 4.0}, k_spread_points, seed,
+                            stream)
+            .estimate;
       },
       172.8 / static_cast<double>(k_spread_points));
   return o;
@@ -292,10 +311,14 @@ TaskResult check_basic_estimator(P&& producer) {
   const bool passed = v.passed() && se_ok;
   std::string d = diagnose_mean_ratio(mean, integral);
   if (d.empty() && !majority_rejects(p_mean))
-    d = diagnose_spread(majority_rejects(p_spread), ratios / k_seeds, first, "(vol J - I^2) / N = 172.8 / N");
-  return {passed, fmt::format("F_N of x^2 on [1, 4]: mean {:.5f} (I = 21); spread over {} runs {:.3g}x (vol J - I^2) / N; "
-                              "{}\n{}{}",
-                              mean, k_spread_runs, ratios / k_seeds, v.describe(), se_note, v.passed() ? "" : d)};
+    d = diagnose_spread(majority_rejects(p_spread), ratios / k_seeds, first,
+                        "(vol J - I^2) / N = 172.8 / N");
+  return {
+      passed,
+      fmt::format(
+          "F_N of x^2 on [1, 4]: mean {:.5f} (I = 21); spread over {} runs {:.3g}x (vol J - I^2) / N; "
+          "{}\n{}{}",
+          mean, k_spread_runs, ratios / k_seeds, v.describe(), se_note, v.passed() ? "" : d)};
 }
 
 /// a1.4: the trapezoid rule on exp(-x^2) over [0, 1]: its error must fall as h^2 (ratio 4
@@ -305,7 +328,9 @@ TaskResult check_basic_estimator(P&& producer) {
 template <class P>
 TaskResult check_trapezoid(P&& producer) {
   const Gaussian1D f;
-  const auto rule = [&](std::uint64_t n) { return producer.a1_trapezoid(A1Integrand::gaussian, 0.0, f.domain, n); };
+  const auto rule = [&](std::uint64_t n) {
+    return producer.a1_trapezoid(A1Integrand::gaussian, 0.0, f.domain, n);
+  };
   const double integral = f.reference();
   const double fprime_b = -2.0 * std::exp(-1.0), fprime_a = 0.0;
   TaskResult result{true, ""};
@@ -316,12 +341,17 @@ TaskResult check_trapezoid(P&& producer) {
     const double next_error = rule(2 * n - 1) - integral;
     const bool ok = near(error, leading, 0.02);
     result.passed = result.passed && ok;
-    result.message += fmt::format("n = {}: T_n - I = {:.3e}, expected about {:.3e}; ratio to n = {}: {:.2f}\n",
-                                  n, error, leading, 2 * n - 1, error / next_error);
+    result.message +=
+        fmt::format("n = {}: T_n - I = {:.3e}, expected about {:.3e}; ratio to n = {}: {:.2f}\n", n,
+                    error, leading, 2 * n - 1, error / next_error);
     if (!ok && near(error / next_error, 2.0, 0.1))
-      result.message += diagnosis("your error falls as h, not h^2: do the two end points weigh h/2?") + "\n";
+      result.message +=
+          diagnosis("your error falls as h, not h^2: do the two end points weigh h/2?") + "\n";
     else if (!ok && near(error / next_error, 4.0, 0.1))
-      result.message += diagnosis("the error falls as h^2 but its size is wrong: is h = (b - a)/(n - 1) (n points make n - 1 intervals)?") + "\n";
+      result.message +=
+          diagnosis(
+              "the error falls as h^2 but its size is wrong: is h = (b - a)/(n - 1) (n points make n - 1 intervals)?") +
+          "\n";
   }
   return result;
 }

@@ -46,15 +46,15 @@ struct A1Producer {
     return ball(k, n, rng);
   }
   /// count_in_ball for each (k, n) in turn, all from one Rng(seed, stream).
-  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
-                                            std::uint64_t stream) const {
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls,
+                                            std::uint64_t seed, std::uint64_t stream) const {
     Rng rng(seed, stream);
     std::vector<std::uint64_t> out;
     for (const auto& [k, n] : calls) out.push_back(count(static_cast<int>(k), n, rng));
     return out;
   }
-  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
-                                  std::uint64_t stream) const {
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
+                                  std::uint64_t seed, std::uint64_t stream) const {
     Rng rng(seed, stream);
     return with_a1_integrand(f, param, [&](const auto& g) {
       const auto e = basic(g, s, n, rng);
@@ -62,12 +62,14 @@ struct A1Producer {
     });
   }
   double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) const {
-    return with_a1_integrand(f, param, [&](const auto& g) { return static_cast<double>(rule(g, s, n)); });
+    return with_a1_integrand(f, param,
+                             [&](const auto& g) { return static_cast<double>(rule(g, s, n)); });
   }
 };
 
 template <class Disk, class Ball, class Count, class Basic, class Rule>
-A1Producer<Disk, Ball, Count, Basic, Rule> a1_producer(Disk disk, Ball ball, Count count, Basic basic, Rule rule) {
+A1Producer<Disk, Ball, Count, Basic, Rule> a1_producer(Disk disk, Ball ball, Count count,
+                                                       Basic basic, Rule rule) {
   return {disk, ball, count, basic, rule};
 }
 

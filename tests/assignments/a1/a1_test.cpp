@@ -19,7 +19,8 @@ TEST(A1, Task1DiskEstimateIsUnbiased) {
 
 TEST(A1, Task1DiskEstimateIsAMultipleOfFourOverN) {
   const double a = subject().a1_disk(1000, 1, 1);
-  EXPECT_DOUBLE_EQ(std::round(a * 1000.0 / 4.0), a * 1000.0 / 4.0) << "4 M / N with N = 1000 is a multiple of 0.004";
+  EXPECT_DOUBLE_EQ(std::round(a * 1000.0 / 4.0), a * 1000.0 / 4.0)
+      << "4 M / N with N = 1000 is a multiple of 0.004";
 }
 
 TEST(A1, Task2BallVolumesAreUnbiased) {
@@ -39,7 +40,8 @@ TEST(A1, Task3BasicEstimatorIsUnbiasedWithItsStandardError) {
 }
 
 TEST(A1, Task3BasicEstimatorIsExactForAConstant) {
-  const EstimateAndError e = subject().a1_monte_carlo(A1Integrand::constant, 2.5, Segment{-1.0, 3.0}, 100, 3, 3);
+  const EstimateAndError e =
+      subject().a1_monte_carlo(A1Integrand::constant, 2.5, Segment{-1.0, 3.0}, 100, 3, 3);
   EXPECT_NEAR(e.estimate, 10.0, 1e-12) << "(b - a) * 2.5 with b - a = 4";
   EXPECT_NEAR(e.standard_error, 0.0, 1e-12);
 }
@@ -51,7 +53,8 @@ TEST(A1, Task4TrapezoidErrorFallsAsHSquared) {
 
 TEST(A1, Task4TrapezoidIsExactForALine) {
   for (std::uint64_t n : {2u, 3u, 10u})  // the line 3x + 1
-    EXPECT_NEAR(subject().a1_trapezoid(A1Integrand::line, 0.0, Segment{-1.0, 2.0}, n), 7.5, 1e-12) << "n = " << n;
+    EXPECT_NEAR(subject().a1_trapezoid(A1Integrand::line, 0.0, Segment{-1.0, 2.0}, n), 7.5, 1e-12)
+        << "n = " << n;
 }
 
 }  // namespace

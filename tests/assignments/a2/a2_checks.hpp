@@ -38,7 +38,8 @@ inline std::optional<Vec2> cone_parameters(const Vec3& w) {
 /// a2.5's cone, 21 phi by 11 cos(theta) cells of equal solid angle (odd counts, as the
 /// hemisphere's: sampler_hemisphere_binning).
 inline Binning<Vec3> sampler_cone_binning() {
-  return {{"cone (phi, cos theta)", "phi (rad)", "cos(theta)", 0.0, k_two_pi, k_a2_cone_cos_theta_max, 1.0, 21, 11, 1.0},
+  return {{"cone (phi, cos theta)", "phi (rad)", "cos(theta)", 0.0, k_two_pi,
+           k_a2_cone_cos_theta_max, 1.0, 21, 11, 1.0},
           &testing::detail::hemisphere_point,
           &detail::cone_parameters};
 }
@@ -90,36 +91,45 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
   const bool disk = kind == SamplerKind::unit_disk;
   const std::vector<double> ratio = band_ratios(r, disk ? grid.u_cells : grid.v_cells, disk);
   if (kind == SamplerKind::uniform_cone && r.outside > 0)
-    return diagnosis(fmt::format("{} directions fell outside the cone: cos(theta) must stay within [cos(theta_max), 1] "
-                                 "(u0 cos(theta_max), say, runs from 0 to cos(theta_max): below the cone)", r.outside));
+    return diagnosis(fmt::format(
+        "{} directions fell outside the cone: cos(theta) must stay within [cos(theta_max), 1] "
+        "(u0 cos(theta_max), say, runs from 0 to cos(theta_max): below the cone)",
+        r.outside));
   if (r.outside > 0)
-    return diagnosis(fmt::format("{} samples fell outside the domain (not unit length, below the horizon, or outside the disk)", r.outside));
+    return diagnosis(fmt::format(
+        "{} samples fell outside the domain (not unit length, below the horizon, or outside the disk)",
+        r.outside));
   switch (kind) {
     case SamplerKind::uniform_hemisphere:
       if (bands_follow(ratio, 0.0, 1.0, [](double c) { return 2.0 * c; }))
-        return diagnosis("observed/expected ~ 2 cos(theta): your samples look cosine-distributed, not uniform");
+        return diagnosis(
+            "observed/expected ~ 2 cos(theta): your samples look cosine-distributed, not uniform");
       if (bands_match(ratio, 0.0, 1.0, uniform_in_angle_band_mean))
-        return diagnosis("observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are "
-                         "uniform in the angle theta (theta = pi/2 u0), not in solid angle. The area of a zone of the "
-                         "hemisphere is linear in cos(theta): uniform in solid angle means cos(theta) uniform");
+        return diagnosis(
+            "observed/expected ~ 2 / (pi sin(theta)), in every band of cos(theta): your directions are "
+            "uniform in the angle theta (theta = pi/2 u0), not in solid angle. The area of a zone of the "
+            "hemisphere is linear in cos(theta): uniform in solid angle means cos(theta) uniform");
       if (ratio.back() > 1.5 && ratio.front() < 0.5)
         return diagnosis("too many samples near the pole: is cos(theta) drawn as sqrt(u)?");
       break;
     case SamplerKind::cosine_hemisphere:
       if (bands_follow(ratio, 0.0, 1.0, [](double c) { return 0.5 / c; }))
-        return diagnosis("observed/expected ~ 1 / (2 cos(theta)): your samples look uniform on the hemisphere, not cosine-weighted");
+        return diagnosis(
+            "observed/expected ~ 1 / (2 cos(theta)): your samples look uniform on the hemisphere, not cosine-weighted");
       // r = u0: observed/expected = 1 / (2 sqrt(1 - cos^2)), 0.5 at the horizon, 2.3 in the top band
       if (ratio.front() > 0.4 && ratio.front() < 0.65 && ratio.back() > 1.5)
-        return diagnosis("half the expected samples near the horizon and too many near the pole: is the disk point "
-                         "at r = u0 instead of r = sqrt(u0) before you lift it to the hemisphere?");
+        return diagnosis(
+            "half the expected samples near the horizon and too many near the pole: is the disk point "
+            "at r = u0 instead of r = sqrt(u0) before you lift it to the hemisphere?");
       break;
     case SamplerKind::uniform_sphere:
       if (ratio.front() < 0.05 && ratio.back() > 1.5)
         return diagnosis("no samples below the equator: is z drawn in [0, 1] instead of [-1, 1]?");
       if (bands_match(ratio, -1.0, 1.0, uniform_in_angle_band_mean))
-        return diagnosis("observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in "
-                         "the angle theta (theta = pi u0), not in solid angle, and crowd both poles. The area of a zone "
-                         "of the sphere is linear in z: uniform in solid angle means z uniform");
+        return diagnosis(
+            "observed/expected ~ 2 / (pi sin(theta)), in every band of z: your directions are uniform in "
+            "the angle theta (theta = pi u0), not in solid angle, and crowd both poles. The area of a zone "
+            "of the sphere is linear in z: uniform in solid angle means z uniform");
       break;
     case SamplerKind::unit_disk:
       if (ratio.front() > 1.5 && ratio.back() < 0.8)
@@ -128,8 +138,9 @@ inline std::string diagnose_sampler(SamplerKind kind, const ChiSquareResult& r, 
     case SamplerKind::uniform_cone:
       // theta = u0 theta_max: the density per steradian grows as 1 / sin(theta) towards the axis
       if (ratio.back() > 1.3 && ratio.front() < 0.95)
-        return diagnosis("too many directions near the axis: is theta drawn uniform in angle (theta = u0 theta_max)? "
-                         "Uniform in solid angle means uniform in cos(theta)");
+        return diagnosis(
+            "too many directions near the axis: is theta drawn uniform in angle (theta = u0 theta_max)? "
+            "Uniform in solid angle means uniform in cos(theta)");
       break;
   }
   return "";
@@ -173,10 +184,12 @@ std::vector<double> bulk_cell_probabilities(PdfBatch&& pdf, const Binning<Point>
       for (int i = 0; i < binning.u_cells; ++i) {
         const double u0 = binning.u_low(i), v0 = binning.v_low(j);
         for (double v : nodes(v0, v0 + binning.v_width()))
-          for (double u : nodes(u0, u0 + binning.u_width())) first.push_back(binning.point_at(u, v));
+          for (double u : nodes(u0, u0 + binning.u_width()))
+            first.push_back(binning.point_at(u, v));
       }
     const std::vector<double> values = pdf(first);
-    for (std::size_t i = 0; i < first.size(); ++i) known[Key{first[i]}] = i < values.size() ? values[i] : 0.0;
+    for (std::size_t i = 0; i < first.size(); ++i)
+      known[Key{first[i]}] = i < values.size() ? values[i] : 0.0;
   }
   for (;;) {
     std::vector<Point> missing;
@@ -190,7 +203,8 @@ std::vector<double> bulk_cell_probabilities(PdfBatch&& pdf, const Binning<Point>
     std::vector<double> probability = cell_probabilities(lookup, binning);
     if (missing.empty()) return probability;
     const std::vector<double> values = pdf(missing);
-    for (std::size_t i = 0; i < missing.size(); ++i) known[Key{missing[i]}] = i < values.size() ? values[i] : 0.0;
+    for (std::size_t i = 0; i < missing.size(); ++i)
+      known[Key{missing[i]}] = i < values.size() ? values[i] : 0.0;
   }
 }
 
@@ -239,9 +253,11 @@ TaskResult check_sampler(SampleBatch&& samples, PdfBatch&& pdf, const Binning<Po
     if (std::abs(total - 1.0) >= 1e-6)
       diagnosis_text = diagnosis(fmt::format(
           "your pdf integrates to {:.3f}, not 1, and this test compares your samples with it: fix the pdf "
-          "first (its own test says how), then run this test again", total));
-    message += fmt::format("\nthe heat map of (observed - expected) / sqrt(expected) is in {}/{}/\n{}",
-                           failure_report_root().string(), name, diagnosis_text);
+          "first (its own test says how), then run this test again",
+          total));
+    message +=
+        fmt::format("\nthe heat map of (observed - expected) / sqrt(expected) is in {}/{}/\n{}",
+                    failure_report_root().string(), name, diagnosis_text);
   }
   return {v.passed(), message};
 }
@@ -280,16 +296,19 @@ auto pdf_of(S& subject, SamplerKind kind) {
 
 /// The pdf integrates to 1 over the binning's domain.
 template <class Point, class PdfBatch>
-TaskResult check_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning, const std::string& name) {
+TaskResult check_pdf_integral(PdfBatch&& pdf, const Binning<Point>& binning,
+                              const std::string& name) {
   const double total = bulk_pdf_integral(pdf, binning);
   const bool ok = std::abs(total - 1.0) < 1e-6;
   std::string message = fmt::format("{} integrates to {:.6f} over its domain", name, total);
   if (!ok) {
     message += '\n';  // appended alone: "\n" + a temporary trips a false -Wrestrict in g++ 12
-    const char* hint = near(total, 2.0, 0.01)                 ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)"
-                       : near(total, k_two_pi, 0.01)     ? " (is the 2 pi of the full turn in phi missing?)"
-                                                           : "";
-    message += diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total, hint));
+    const char* hint = near(total, 2.0, 0.01) ? " (is it off by a factor of 2: 1/pi vs 1/(2 pi)?)"
+                       : near(total, k_two_pi, 0.01)
+                           ? " (is the 2 pi of the full turn in phi missing?)"
+                           : "";
+    message +=
+        diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large{}", total, hint));
   }
   return {ok, message};
 }

@@ -42,9 +42,10 @@ TEST(A2, Task2CosineHemispherePdfIntegratesToOne) {
 }
 
 TEST(A2, Task3UniformSphereFollowsItsPdf) {
-  const TaskResult r = check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_sphere),
-                                     pdf_of<Vec3>(subject(), SamplerKind::uniform_sphere), sphere_binning(21, 21),
-                                     SamplerKind::uniform_sphere, "a2_uniform_sphere");
+  const TaskResult r =
+      check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_sphere),
+                    pdf_of<Vec3>(subject(), SamplerKind::uniform_sphere), sphere_binning(21, 21),
+                    SamplerKind::uniform_sphere, "a2_uniform_sphere");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
@@ -55,28 +56,30 @@ TEST(A2, Task3UniformSpherePdfIntegratesToOne) {
 }
 
 TEST(A2, Task4UnitDiskFollowsItsPdf) {
-  const TaskResult r = check_sampler(samples_of<Vec2>(subject(), SamplerKind::unit_disk),
-                                     pdf_of<Vec2>(subject(), SamplerKind::unit_disk), sampler_disk_binning(),
-                                     SamplerKind::unit_disk, "a2_unit_disk");
+  const TaskResult r =
+      check_sampler(samples_of<Vec2>(subject(), SamplerKind::unit_disk),
+                    pdf_of<Vec2>(subject(), SamplerKind::unit_disk), sampler_disk_binning(),
+                    SamplerKind::unit_disk, "a2_unit_disk");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task4UnitDiskPdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(pdf_of<Vec2>(subject(), SamplerKind::unit_disk), sampler_disk_binning(),
-                                          "uniform_disk_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec2>(subject(), SamplerKind::unit_disk),
+                                          sampler_disk_binning(), "uniform_disk_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task5UniformConeFollowsItsPdf) {
-  const TaskResult r = check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_cone),
-                                     pdf_of<Vec3>(subject(), SamplerKind::uniform_cone), sampler_cone_binning(),
-                                     SamplerKind::uniform_cone, "a2_uniform_cone");
+  const TaskResult r =
+      check_sampler(samples_of<Vec3>(subject(), SamplerKind::uniform_cone),
+                    pdf_of<Vec3>(subject(), SamplerKind::uniform_cone), sampler_cone_binning(),
+                    SamplerKind::uniform_cone, "a2_uniform_cone");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A2, Task5UniformConePdfIntegratesToOne) {
-  const TaskResult r = check_pdf_integral(pdf_of<Vec3>(subject(), SamplerKind::uniform_cone), sampler_cone_binning(),
-                                          "uniform_cone_pdf");
+  const TaskResult r = check_pdf_integral(pdf_of<Vec3>(subject(), SamplerKind::uniform_cone),
+                                          sampler_cone_binning(), "uniform_cone_pdf");
   EXPECT_TRUE(r.passed) << r.message;
 }
 
@@ -90,8 +93,9 @@ TEST(A2, Task5UniformConePdfIsZeroOutsideTheCone) {
   }
   const std::vector<double> p = subject().pdf_values(SamplerKind::uniform_cone, outside);
   for (std::size_t i = 0; i < outside.size(); ++i)
-    EXPECT_EQ(p[i], 0.0) << "uniform_cone_pdf at cos(theta) = " << outside[i].z << " (outside the cone of cos(theta_max) = "
-                         << k_a2_cone_cos_theta_max << ") must be 0";
+    EXPECT_EQ(p[i], 0.0) << "uniform_cone_pdf at cos(theta) = " << outside[i].z
+                         << " (outside the cone of cos(theta_max) = " << k_a2_cone_cos_theta_max
+                         << ") must be 0";
 }
 
 // Directions are unit vectors: the chi-square bins by angle and would not see a length error.

@@ -26,7 +26,8 @@ inline constexpr double k_warp_ratio_saturation = 4.0;
 /// Linear RGB of observed / expected = ratio: white at 1, towards red above, towards blue
 /// below, by log(ratio) / log(saturation) so that 2x too many and 2x too few look alike.
 inline Color ratio_colour(double ratio) {
-  const double t = std::clamp(std::log(std::max(ratio, 1e-12)) / std::log(k_warp_ratio_saturation), -1.0, 1.0);
+  const double t =
+      std::clamp(std::log(std::max(ratio, 1e-12)) / std::log(k_warp_ratio_saturation), -1.0, 1.0);
   return t >= 0.0 ? Color(1.0, 1.0 - t, 1.0 - t) : Color(1.0 + t, 1.0 + t, 1.0);
 }
 
@@ -54,14 +55,15 @@ struct WarpResult {
 /// probabilities of `pdf` (a bulk pdf) in `binning`: at a grading seed (1009, 2029, 3037) and
 /// 1e5 samples, the p-value is the one a2_test.cpp computes at that seed.
 template <class Point, class SampleBatch, class PdfBatch>
-WarpResult<Point> run_warp(SampleBatch&& sample, PdfBatch&& pdf, const Binning<Point>& binning, std::uint64_t seed,
-                           std::uint64_t samples) {
+WarpResult<Point> run_warp(SampleBatch&& sample, PdfBatch&& pdf, const Binning<Point>& binning,
+                           std::uint64_t seed, std::uint64_t samples) {
   Rng rng(seed, 41);
   std::vector<Vec2> u(samples);
   for (Vec2& x : u) x = rng.uniform2();
   WarpResult<Point> result;
   result.points = sample(u);
-  result.chi_square = chi_square_points_test(result.points, bulk_cell_probabilities(pdf, binning), binning);
+  result.chi_square =
+      chi_square_points_test(result.points, bulk_cell_probabilities(pdf, binning), binning);
   return result;
 }
 
@@ -72,8 +74,8 @@ inline Image ratio_heat_map(const ChiSquareResult& r, const Grid& grid, int cell
   Image image(grid.u_cells * cell_pixels, grid.v_cells * cell_pixels);
   for (const CellCount& c : r.cells) {
     const Color colour = c.expected > k_zero_expected ? ratio_colour(c.observed / c.expected)
-                         : c.observed > 0.0         ? k_warp_impossible_cell
-                                                    : k_warp_empty_cell;
+                         : c.observed > 0.0           ? k_warp_impossible_cell
+                                                      : k_warp_empty_cell;
     const int x0 = c.u_index * cell_pixels, y0 = (grid.v_cells - 1 - c.v_index) * cell_pixels;
     for (int y = y0; y < y0 + cell_pixels; ++y)
       for (int x = x0; x < x0 + cell_pixels; ++x) image.at(x, y) = colour;
@@ -82,8 +84,10 @@ inline Image ratio_heat_map(const ChiSquareResult& r, const Grid& grid, int cell
 }
 
 /// The pixel of the heat map at the centre of cell (u_index, v_index).
-inline std::pair<int, int> heat_map_pixel(const Grid& grid, int cell_pixels, int u_index, int v_index) {
-  return {u_index * cell_pixels + cell_pixels / 2, (grid.v_cells - 1 - v_index) * cell_pixels + cell_pixels / 2};
+inline std::pair<int, int> heat_map_pixel(const Grid& grid, int cell_pixels, int u_index,
+                                          int v_index) {
+  return {u_index * cell_pixels + cell_pixels / 2,
+          (grid.v_cells - 1 - v_index) * cell_pixels + cell_pixels / 2};
 }
 
 /// The point cloud: a disk's points as they are (x across, y up, on [-1, 1]^2); directions at
@@ -92,7 +96,8 @@ inline std::pair<int, int> heat_map_pixel(const Grid& grid, int cell_pixels, int
 /// for n points in it, n0 twice the mean count of the pixels the domain covers: grey where
 /// the density is as average, white where it crowds, black where no point falls.
 template <class Point>
-Image point_cloud(const std::vector<Point>& points, const Binning<Point>& binning, int width, int height) {
+Image point_cloud(const std::vector<Point>& points, const Binning<Point>& binning, int width,
+                  int height) {
   std::vector<double> count(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   double covered = static_cast<double>(count.size());
   for (const Point& p : points) {
@@ -110,11 +115,13 @@ Image point_cloud(const std::vector<Point>& points, const Binning<Point>& binnin
     if (!(x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0)) continue;
     const int i = std::min(static_cast<int>(x * width), width - 1);
     const int j = std::min(static_cast<int>((1.0 - y) * height), height - 1);  // row 0 at the top
-    count[static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)] += 1.0;
+    count[static_cast<std::size_t>(j) * static_cast<std::size_t>(width) +
+          static_cast<std::size_t>(i)] += 1.0;
   }
   const double n0 = 2.0 * static_cast<double>(std::max<std::size_t>(points.size(), 1)) / covered;
   Image image(width, height);
-  for (std::size_t k = 0; k < count.size(); ++k) image.pixels[k] = Color(1.0 - std::exp(-count[k] / n0));
+  for (std::size_t k = 0; k < count.size(); ++k)
+    image.pixels[k] = Color(1.0 - std::exp(-count[k] / n0));
   return image;
 }
 

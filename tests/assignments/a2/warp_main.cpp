@@ -26,17 +26,18 @@ using namespace mcrt::testing::assignment;
 
 namespace {
 
-const Chapter k_chapter{"a2_warp",
-                        "Assignment a2's warp tests: for each of your samplers, the point cloud and the heat map of "
-                        "observed / expected counts over the chi-square test's cells (white: as expected; red: too many "
-                        "points; blue: too few), and the test's p-value."};
+const Chapter k_chapter{
+    "a2_warp",
+    "Assignment a2's warp tests: for each of your samplers, the point cloud and the heat map of "
+    "observed / expected counts over the chi-square test's cells (white: as expected; red: too many "
+    "points; blue: too few), and the test's p-value."};
 
 struct Options {
   CommonOptions common;
   std::uint64_t samples = k_sampler_samples;  // points per sampler, as the graded test draws
 };
 
-constexpr int k_cell_pixels = 24;                     // one chi-square cell of the heat map
+constexpr int k_cell_pixels = 24;                         // one chi-square cell of the heat map
 constexpr int k_cloud_width = 504, k_cloud_height = 264;  // the (phi, cos theta) rectangle
 constexpr int k_disk_size = 400;
 
@@ -62,15 +63,19 @@ auto densities(F f) {
 
 /// One sampler's warp test: writes its two images, prints its line.
 template <class Point, class SampleBatch, class PdfBatch>
-void warp_one(const Options& o, const std::string& task, const std::string& name, SampleBatch&& sample, PdfBatch&& pdf,
-              const Binning<Point>& binning, int cloud_width, int cloud_height) {
+void warp_one(const Options& o, const std::string& task, const std::string& name,
+              SampleBatch&& sample, PdfBatch&& pdf, const Binning<Point>& binning, int cloud_width,
+              int cloud_height) {
   try {
     const WarpResult<Point> w = run_warp(sample, pdf, binning, o.common.seed, o.samples);
-    write_png(o.common.dir / (name + "_points.png"), point_cloud(w.points, binning, cloud_width, cloud_height));
-    write_png(o.common.dir / (name + "_ratio.png"), ratio_heat_map(w.chi_square, binning, k_cell_pixels));
+    write_png(o.common.dir / (name + "_points.png"),
+              point_cloud(w.points, binning, cloud_width, cloud_height));
+    write_png(o.common.dir / (name + "_ratio.png"),
+              ratio_heat_map(w.chi_square, binning, k_cell_pixels));
     if (!o.common.quiet)
       fmt::print("{:5} {:20} p = {:<10.3g} {}  {}\n", task, name, w.chi_square.p_value,
-                 w.chi_square.p_value < k_seed_alpha ? "REJECTED" : "ok      ", w.chi_square.describe());
+                 w.chi_square.p_value < k_seed_alpha ? "REJECTED" : "ok      ",
+                 w.chi_square.describe());
   } catch (const std::logic_error& e) {  // a stub of the kit: "not implemented: a2.N ..."
     if (!o.common.quiet) fmt::print("{:5} {:20} skipped: {}\n", task, name, e.what());
   }
@@ -78,18 +83,19 @@ void warp_one(const Options& o, const std::string& task, const std::string& name
 
 void run(const Options& o) {
   if (!o.common.quiet)
-    fmt::print("a2_warp  seed {}  {} points per sampler; the test rejects at p < {} (a grading seed fails it)\n",
-               o.common.seed, o.samples, k_seed_alpha);
+    fmt::print(
+        "a2_warp  seed {}  {} points per sampler; the test rejects at p < {} (a grading seed fails it)\n",
+        o.common.seed, o.samples, k_seed_alpha);
   const double cos_max = k_a2_cone_cos_theta_max;
   warp_one<Vec3>(o, "a2.1", "uniform_hemisphere", directions(sample_uniform_hemisphere),
-                 densities([](const Vec3&) { return uniform_hemisphere_pdf(); }), sampler_hemisphere_binning(),
-                 k_cloud_width, k_cloud_height);
+                 densities([](const Vec3&) { return uniform_hemisphere_pdf(); }),
+                 sampler_hemisphere_binning(), k_cloud_width, k_cloud_height);
   warp_one<Vec3>(o, "a2.2", "cosine_hemisphere", directions(sample_cosine_hemisphere),
-                 densities([](const Vec3& w) { return cosine_hemisphere_pdf(w.z); }), sampler_hemisphere_binning(),
-                 k_cloud_width, k_cloud_height);
+                 densities([](const Vec3& w) { return cosine_hemisphere_pdf(w.z); }),
+                 sampler_hemisphere_binning(), k_cloud_width, k_cloud_height);
   warp_one<Vec3>(o, "a2.3", "uniform_sphere", directions(sample_uniform_sphere),
-                 densities([](const Vec3&) { return uniform_sphere_pdf(); }), sphere_binning(21, 21), k_cloud_width,
-                 k_cloud_width / 2);
+                 densities([](const Vec3&) { return uniform_sphere_pdf(); }),
+                 sphere_binning(21, 21), k_cloud_width, k_cloud_width / 2);
   warp_one<Vec2>(
       o, "a2.4", "unit_disk",
       [](const std::vector<Vec2>& u) {
@@ -98,11 +104,14 @@ void run(const Options& o) {
         for (const Vec2& x : u) out.push_back(sample_uniform_disk(x));
         return out;
       },
-      densities([](const Vec2&) { return uniform_disk_pdf(); }), sampler_disk_binning(), k_disk_size, k_disk_size);
-  warp_one<Vec3>(o, "a2.5", "uniform_cone", directions([cos_max](Vec2 u) { return sample_uniform_cone(u, cos_max); }),
-                 densities([cos_max](const Vec3& w) { return uniform_cone_pdf(w.z, cos_max); }), sampler_cone_binning(),
-                 k_cloud_width, k_cloud_height);
-  if (!o.common.quiet) fmt::print("wrote {}/<sampler>_points.png and <sampler>_ratio.png\n", o.common.out.string());
+      densities([](const Vec2&) { return uniform_disk_pdf(); }), sampler_disk_binning(),
+      k_disk_size, k_disk_size);
+  warp_one<Vec3>(o, "a2.5", "uniform_cone",
+                 directions([cos_max](Vec2 u) { return sample_uniform_cone(u, cos_max); }),
+                 densities([cos_max](const Vec3& w) { return uniform_cone_pdf(w.z, cos_max); }),
+                 sampler_cone_binning(), k_cloud_width, k_cloud_height);
+  if (!o.common.quiet)
+    fmt::print("wrote {}/<sampler>_points.png and <sampler>_ratio.png\n", o.common.out.string());
 }
 
 }  // namespace
@@ -110,7 +119,7 @@ void run(const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  add_number_option(app, "--samples", o.samples, "points per sampler (the graded test draws 100000)", 1000,
-                    10'000'000);
+  add_number_option(app, "--samples", o.samples,
+                    "points per sampler (the graded test draws 100000)", 1000, 10'000'000);
   return app.run(argc, argv, [&] { run(o); });
 }

@@ -31,13 +31,17 @@ TaskResult check_ray_counts(P&& producer) {
     int n, k;
     std::uint64_t rays;
   };
-  for (const auto& [n, k, expected] : std::vector<Case>{{1, 0, 1}, {1, 4, 5}, {2, 3, 15}, {3, 2, 13}, {4, 1, 5}}) {
-    const std::uint64_t rays =
-        producer.recursive_single(0.5, 1.0, Vec3(0.0), Vec3(0.0, 0.0, 1.0), n, k, 7, static_cast<std::uint64_t>(10 * n + k)).rays;
+  for (const auto& [n, k, expected] :
+       std::vector<Case>{{1, 0, 1}, {1, 4, 5}, {2, 3, 15}, {3, 2, 13}, {4, 1, 5}}) {
+    const std::uint64_t rays = producer
+                                   .recursive_single(0.5, 1.0, Vec3(0.0), Vec3(0.0, 0.0, 1.0), n, k,
+                                                     7, static_cast<std::uint64_t>(10 * n + k))
+                                   .rays;
     const bool ok = rays == expected;
     result.passed = result.passed && ok;
     result.message += fmt::format("N = {}, k = {}: {} rays, expected {}\n", n, k, rays, expected);
-    if (!ok) result.message += diagnose_ray_count(rays, static_cast<std::uint64_t>(n), k, expected) + "\n";
+    if (!ok)
+      result.message += diagnose_ray_count(rays, static_cast<std::uint64_t>(n), k, expected) + "\n";
   }
   return result;
 }
@@ -50,7 +54,8 @@ double recursive_furnace_p_value(P&& producer, std::uint64_t seed, RunningStats&
   constexpr double a = 0.5;
   constexpr int n_branches = 2, k = 3, samples = 4000;
   const FurnaceMoments m = furnace_moments(a, n_branches, k);
-  const std::vector<double> values = producer.recursive_furnace(a, n_branches, k, samples, seed, 31);
+  const std::vector<double> values =
+      producer.recursive_furnace(a, n_branches, k, samples, seed, 31);
   stats = RunningStats{};
   for (double L : values) stats.add(L);
   const double p_mean = t_test_p_value(stats.mean(), stats.variance(), stats.count(), m.mean);
@@ -81,14 +86,21 @@ TaskResult check_recursive_furnace(P&& producer) {
     else if (near(mean, furnace_moments(a, n_branches, k + 1).mean, 0.01))
       d = diagnosis("your mean is that of depth k + 1: does your recursion stop one bounce late?");
     else if (near(mean, furnace_moments(a * n_branches, 1, k).mean, 0.02))
-      d = diagnosis("each level weighs N a instead of a: is the sum over the N branches divided by N?");
+      d = diagnosis(
+          "each level weighs N a instead of a: is the sum over the N branches divided by N?");
     else if (near(mean, m.mean, 0.01) && variance > 1.2 * m.variance)
-      d = diagnosis(fmt::format("the mean is right but the variance is {:.2f}x the closed form: do the N branches share one direction (each needs its own)?", variance / m.variance));
+      d = diagnosis(fmt::format(
+          "the mean is right but the variance is {:.2f}x the closed form: do the N branches share one direction (each needs its own)?",
+          variance / m.variance));
     else if (near(mean, m.mean, 0.01))
-      d = diagnosis(fmt::format("the mean is right but the variance is {:.2f}x the closed form", variance / m.variance));
+      d = diagnosis(fmt::format("the mean is right but the variance is {:.2f}x the closed form",
+                                variance / m.variance));
   }
-  return {v.passed(), fmt::format("furnace N = 2, k = 3, a = 0.5: mean {:.5f} (expected {:.5f}), variance {:.5f} (expected {:.5f}); {}\n{}",
-                                  mean, m.mean, variance, m.variance, v.describe(), d)};
+  return {
+      v.passed(),
+      fmt::format(
+          "furnace N = 2, k = 3, a = 0.5: mean {:.5f} (expected {:.5f}), variance {:.5f} (expected {:.5f}); {}\n{}",
+          mean, m.mean, variance, m.variance, v.describe(), d)};
 }
 
 /// One case of a3.2's tests: N, k and the rays 1 + N + ... + N^k, written out (computed apart,
@@ -103,33 +115,49 @@ inline constexpr std::uint64_t k_most_rays = std::numeric_limits<std::uint64_t>:
 
 /// a3.2's exact cases: N = 1 (no closed form), small cases, and sums up to 2^63 - 1 (N = 2,
 /// k = 62), all below the saturation.
-inline const std::vector<PredictionCase> k_a3_prediction_cases{
-    {1, 0, 1},          {1, 4, 5},      {1, 1000, 1001},           {2, 3, 15},
-    {3, 2, 13},         {4, 1, 5},      {7, 5, 19608},             {10, 9, 1111111111},
-    {2, 62, 9223372036854775807ULL},    {3, 39, 6078832729528464400ULL}};
+inline const std::vector<PredictionCase> k_a3_prediction_cases{{1, 0, 1},
+                                                               {1, 4, 5},
+                                                               {1, 1000, 1001},
+                                                               {2, 3, 15},
+                                                               {3, 2, 13},
+                                                               {4, 1, 5},
+                                                               {7, 5, 19608},
+                                                               {10, 9, 1111111111},
+                                                               {2, 62, 9223372036854775807ULL},
+                                                               {3, 39, 6078832729528464400ULL}};
 
 /// Cases whose rays reach 2^64 - 1 (N = 2, k = 63: exactly) or pass it: the prediction
 /// saturates there.
-inline const std::vector<PredictionCase> k_a3_saturation_cases{
-    {2, 63, k_most_rays}, {2, 64, k_most_rays}, {1000, 10, k_most_rays}, {65536, 64, k_most_rays}, {3, 1000, k_most_rays}};
+inline const std::vector<PredictionCase> k_a3_saturation_cases{{2, 63, k_most_rays},
+                                                               {2, 64, k_most_rays},
+                                                               {1000, 10, k_most_rays},
+                                                               {65536, 64, k_most_rays},
+                                                               {3, 1000, k_most_rays}};
 
 /// Names the classic mistakes of a ray-count prediction (N branches, depth k, `expected` rays),
 /// by comparing in doubles (exact below 2^53, where every mistake shows as well).
-inline std::string diagnose_prediction(std::uint64_t observed, std::uint64_t n, int k, std::uint64_t expected) {
+inline std::string diagnose_prediction(std::uint64_t observed, std::uint64_t n, int k,
+                                       std::uint64_t expected) {
   const double got = static_cast<double>(observed), want = static_cast<double>(expected);
   const double last = std::pow(static_cast<double>(n), k), next = last * static_cast<double>(n);
   if (observed == expected) return "";
   if (n == 1)
-    return diagnosis(fmt::format("for N = 1 a sample traces k + 1 = {} rays (the closed form (N^(k+1) - 1) / (N - 1) "
-                                 "divides by zero there)", k + 1));
+    return diagnosis(fmt::format(
+        "for N = 1 a sample traces k + 1 = {} rays (the closed form (N^(k+1) - 1) / (N - 1) "
+        "divides by zero there)",
+        k + 1));
   if (want < 0x1p53 && got == want + next)
-    return diagnosis("your prediction is that of depth k + 1: the levels are j = 0 (the camera ray) to k, k + 1 of them");
+    return diagnosis(
+        "your prediction is that of depth k + 1: the levels are j = 0 (the camera ray) to k, k + 1 of them");
   if (want < 0x1p53 && k > 0 && got == want - last)
-    return diagnosis("your prediction is that of depth k - 1: the sum runs over j = 0..k, the camera ray and k bounces");
+    return diagnosis(
+        "your prediction is that of depth k - 1: the sum runs over j = 0..k, the camera ray and k bounces");
   if (want < 0x1p53 && got == last)
-    return diagnosis("your prediction is N^k, the last level only: a sample traces every level, 1 + N + ... + N^k");
+    return diagnosis(
+        "your prediction is N^k, the last level only: a sample traces every level, 1 + N + ... + N^k");
   if (want < 0x1p53 && got == next)
-    return diagnosis("your prediction is N^(k+1): the geometric sum is (N^(k+1) - 1) / (N - 1), not its numerator");
+    return diagnosis(
+        "your prediction is N^(k+1): the geometric sum is (N^(k+1) - 1) / (N - 1), not its numerator");
   return diagnosis(fmt::format("{} instead of 1 + N + ... + N^k = {}", observed, expected));
 }
 
@@ -150,8 +178,11 @@ TaskResult check_predicted_rays(P&& producer, const std::vector<PredictionCase>&
     const PredictionCase& c = cases[i];
     const bool ok = predicted[i] == c.rays;
     result.passed = result.passed && ok;
-    result.message += fmt::format("N = {}, k = {}: predicted {}, expected {}\n", c.n, c.k, predicted[i], c.rays);
-    if (!ok) result.message += diagnose_prediction(predicted[i], static_cast<std::uint64_t>(c.n), c.k, c.rays) + "\n";
+    result.message +=
+        fmt::format("N = {}, k = {}: predicted {}, expected {}\n", c.n, c.k, predicted[i], c.rays);
+    if (!ok)
+      result.message +=
+          diagnose_prediction(predicted[i], static_cast<std::uint64_t>(c.n), c.k, c.rays) + "\n";
   }
   return result;
 }
@@ -162,8 +193,11 @@ template <class P>
 TaskResult check_prediction_saturates(P&& producer) {
   TaskResult r = check_predicted_rays(producer, k_a3_saturation_cases);
   if (!r.passed)
-    r.message += diagnosis("past 2^64 - 1 rays your prediction must stay at 2^64 - 1 (std::numeric_limits<std::uint64_t>::max()): "
-                           "one that overflows wraps round to a small number, and chapter 04 would start a run it must refuse") + "\n";
+    r.message +=
+        diagnosis(
+            "past 2^64 - 1 rays your prediction must stay at 2^64 - 1 (std::numeric_limits<std::uint64_t>::max()): "
+            "one that overflows wraps round to a small number, and chapter 04 would start a run it must refuse") +
+        "\n";
   return r;
 }
 
@@ -177,15 +211,22 @@ TaskResult check_prediction_counts_your_recursion(P&& producer) {
   for (std::size_t i = 0; i < cases.size() && i < predicted.size(); ++i) {
     const PredictionCase& c = cases[i];
     const std::uint64_t traced =
-        producer.recursive_single(0.5, 1.0, Vec3(0.0), Vec3(0.0, 0.0, 1.0), c.n, c.k, 11, static_cast<std::uint64_t>(100 + i)).rays;
+        producer
+            .recursive_single(0.5, 1.0, Vec3(0.0), Vec3(0.0, 0.0, 1.0), c.n, c.k, 11,
+                              static_cast<std::uint64_t>(100 + i))
+            .rays;
     const bool ok = predicted[i] == traced;
     result.passed = result.passed && ok;
-    result.message += fmt::format("N = {}, k = {}: predicted {}, your recursion traced {} (expected {})\n", c.n, c.k,
-                                  predicted[i], traced, c.rays);
+    result.message +=
+        fmt::format("N = {}, k = {}: predicted {}, your recursion traced {} (expected {})\n", c.n,
+                    c.k, predicted[i], traced, c.rays);
     if (!ok)
-      result.message += diagnosis(predicted[i] == c.rays
-                                      ? "your prediction is right and your recursion is not: see a3.1's ray-count test"
-                                      : "your prediction and your recursion disagree: count the rays of each level") + "\n";
+      result.message +=
+          diagnosis(
+              predicted[i] == c.rays
+                  ? "your prediction is right and your recursion is not: see a3.1's ray-count test"
+                  : "your prediction and your recursion disagree: count the rays of each level") +
+          "\n";
   }
   return result;
 }

@@ -21,19 +21,20 @@ struct A3Producer {
 
   /// One call from `origin` along `direction` in the furnace (albedo, emission), N branches,
   /// depth k, from Rng(seed, stream): its channel-mean radiance and its rays.
-  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
-                              std::uint64_t seed, std::uint64_t stream) const {
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n,
+                              int k, std::uint64_t seed, std::uint64_t stream) const {
     const Scene furnace = make_furnace(albedo, emission);
     Rng rng(seed, stream);
     RayCount count;
-    const double L = average(radiance(furnace, Ray{origin, direction}, 0, RecursiveSettings{n, k}, rng, count));
+    const double L =
+        average(radiance(furnace, Ray{origin, direction}, 0, RecursiveSettings{n, k}, rng, count));
     return {L, count.rays};
   }
 
   /// `samples` calls from the furnace's centre (albedo, Le = 1) in uniformly random directions,
   /// call i from the stream (block, i) of seed: their channel-mean radiance.
-  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
-                                        std::uint64_t block) const {
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples,
+                                        std::uint64_t seed, std::uint64_t block) const {
     const Scene furnace = make_furnace(albedo, 1.0);
     std::vector<double> values;
     values.reserve(static_cast<std::size_t>(samples));

@@ -23,11 +23,13 @@ TEST(A3, Task1FurnaceMeanAndVarianceMatchTheClosedForms) {
 TEST(A3, Task1DepthZeroReturnsTheEmission) {
   const PathSample p = subject().recursive_single(0.7, 2.5, Vec3(0.0), {0.0, 0.6, 0.8}, 8, 0, 5, 5);
   EXPECT_DOUBLE_EQ(p.radiance, 2.5) << "at max_depth k = 0 the recursion returns the emission only";
-  EXPECT_EQ(p.rays, 1u) << "at max_depth k = 0 one ray is traced: does the recursion stop at depth == k?";
+  EXPECT_EQ(p.rays, 1u)
+      << "at max_depth k = 0 one ray is traced: does the recursion stop at depth == k?";
 }
 
 TEST(A3, Task1EscapingRayBringsNoLight) {
-  const PathSample p = subject().recursive_single(0.7, 2.5, {0.0, 0.0, 1e9}, {0.0, 0.0, 1.0}, 2, 2, 5, 6);
+  const PathSample p =
+      subject().recursive_single(0.7, 2.5, {0.0, 0.0, 1e9}, {0.0, 0.0, 1.0}, 2, 2, 5, 6);
   EXPECT_EQ(p.radiance, 0.0) << "a ray that leaves the scene brings no light";
 }
 

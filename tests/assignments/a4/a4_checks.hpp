@@ -33,15 +33,19 @@ std::string diagnose_bounce_weight(Furnace&& furnace, double a) {
   for (double L : furnace(a, 1, 4000, 99, 77)) w.add(L - 1.0);
   const double mean = w.mean() / a;  // in units of a
   if (near(mean, 2.0, 0.05) && w.variance() < 1e-12)
-    return diagnosis("the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
+    return diagnosis(
+        "the per-bounce weight averages 2a instead of a and never varies: is the cosine missing?");
   if (near(mean, 2.0, 0.05))
-    return diagnosis("the per-bounce weight averages 2a instead of a: is your pdf off by a factor of 2 (1/(4 pi) vs 1/(2 pi))?");
+    return diagnosis(
+        "the per-bounce weight averages 2a instead of a: is your pdf off by a factor of 2 (1/(4 pi) vs 1/(2 pi))?");
   if (near(mean, 4.0 / 3.0, 0.04))
-    return diagnosis("the per-bounce weight averages 4a/3: are directions cosine-distributed but divided by the uniform pdf 1/(2 pi)?");
+    return diagnosis(
+        "the per-bounce weight averages 4a/3: are directions cosine-distributed but divided by the uniform pdf 1/(2 pi)?");
   if (near(mean, 0.5, 0.05))
     return diagnosis("the per-bounce weight averages a/2: is a factor 2 missing (2 pi vs pi)?");
   if (!near(mean, 1.0, 0.05))
-    return diagnosis(fmt::format("the per-bounce weight averages {:.2f}a instead of a = f_r cos / p", mean));
+    return diagnosis(
+        fmt::format("the per-bounce weight averages {:.2f}a instead of a = f_r cos / p", mean));
   return "";
 }
 
@@ -52,7 +56,8 @@ template <class Furnace>
 double path_furnace_p_value(Furnace&& furnace, std::uint64_t seed, double& mean) {
   constexpr double a = 0.5;
   constexpr int k = 3, n = 20000;
-  const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(a, 1.0, k);
+  const double expected = furnace_radiance(a, 1.0, k),
+               variance = furnace_radiance_variance(a, 1.0, k);
   const std::vector<double> values = furnace(a, k, n, seed, 51);
   RunningStats s;
   for (double x : values) s.add(x);
@@ -84,8 +89,8 @@ TaskResult check_path_furnace(Furnace&& furnace) {
       d = diagnosis("your mean is that of k - 1 bounces: does your loop stop one bounce early?");
     if (d.empty()) d = diagnose_mean_ratio(mean, expected);
   }
-  return {v.passed(), fmt::format("furnace a = 0.5, k = 3: mean {:.5f} (expected {:.5f}); {}\n{}", mean,
-                                  expected, v.describe(), d)};
+  return {v.passed(), fmt::format("furnace a = 0.5, k = 3: mean {:.5f} (expected {:.5f}); {}\n{}",
+                                  mean, expected, v.describe(), d)};
 }
 
 /// Region by region against a reference: the sky scene at 16 x 16 pixels, k = 4, cut into
@@ -108,17 +113,21 @@ double reference_regions_p_value(Sky&& sky, std::uint64_t seed, int& worst, doub
     return incident_radiance(scene, ray, 0, RecursiveSettings{1, k}, rng, count);
   };
   // A reference of its own per seed: the three verdicts stay independent.
-  const Stats reference = region_stats<size, region>(camera, reference_tracer, 1024, seed ^ 0x5eedULL);
+  const Stats reference =
+      region_stats<size, region>(camera, reference_tracer, 1024, seed ^ 0x5eedULL);
   const Stats student = stats_by_region<size, region>(sky(k, spp, seed), spp);
   double p_min = 1.0;
   for (int r = 0; r < regions * regions; ++r) {
-    const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
-    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
+    const RunningStats &s = student[static_cast<std::size_t>(r)],
+                       &t = reference[static_cast<std::size_t>(r)];
+    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) +
+                                t.variance() / static_cast<double>(t.count()));
     const double p = z_test_p_value(s.mean(), t.mean(), se);
     if (z != nullptr) z->push_back(region_z(s.mean(), t.mean(), se));
     if (!(p >= p_min)) {
       p_min = p;
-      if (std::abs(s.mean() - t.mean()) / se > worst_z) worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
+      if (std::abs(s.mean() - t.mean()) / se > worst_z)
+        worst_z = std::abs(s.mean() - t.mean()) / se, worst = r;
     }
   }
   return sidak_p_value(p_min, regions * regions);
@@ -148,10 +157,16 @@ RegionResult check_reference_regions(Sky&& sky) {
   });
   RegionResult result;
   result.map = map;
-  static_cast<TaskResult&>(result) = {v.passed(), fmt::format("sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
-                                  v.passed() ? "" : fmt::format("\nthe worst region (pixels {}, {}) is {:.1f} standard errors from the reference at one seed",
-                                                                map.column_labels[static_cast<std::size_t>(worst % regions)],
-                                                                map.row_labels[static_cast<std::size_t>(worst / regions)], worst_z))};
+  static_cast<TaskResult&>(result) = {
+      v.passed(),
+      fmt::format(
+          "sky scene 16 x 16, k = 4, regions of 4 x 4 pixels: {}{}", v.describe(),
+          v.passed()
+              ? ""
+              : fmt::format(
+                    "\nthe worst region (pixels {}, {}) is {:.1f} standard errors from the reference at one seed",
+                    map.column_labels[static_cast<std::size_t>(worst % regions)],
+                    map.row_labels[static_cast<std::size_t>(worst / regions)], worst_z))};
   return result;
 }
 
@@ -166,7 +181,9 @@ auto furnace_of(Radiance radiance) {
 
 template <class Radiance>
 auto sky_of(Radiance radiance) {
-  return [radiance](int k, int spp, std::uint64_t seed) { return sky_values(radiance, 16, k, spp, seed); };
+  return [radiance](int k, int spp, std::uint64_t seed) {
+    return sky_values(radiance, 16, k, spp, seed);
+  };
 }
 
 /// The same producers from a Subject (its a4 requests).
@@ -179,7 +196,8 @@ auto furnace_of_subject(S& subject) {
 
 template <class S>
 auto sky_of_subject(S& subject) {
-  return [&subject](int k, int spp, std::uint64_t seed) { return subject.path_sky(16, k, spp, seed); };
+  return
+      [&subject](int k, int spp, std::uint64_t seed) { return subject.path_sky(16, k, spp, seed); };
 }
 
 // a4.2, the pixel's estimate. The checks judge bulk answers: `exact(spp, seed)` (pixel_exact_values),
@@ -210,42 +228,53 @@ TaskResult check_pixel_exact(Exact&& exact) {
     RunningStats means, errors;
     for (int y = 0; y < camera.height(); ++y)
       for (int x = 0; x < camera.width(); ++x) {
-        const std::size_t pixel = static_cast<std::size_t>(pixel_stream(x, y, camera.width())), i = 4 * pixel;
+        const std::size_t pixel = static_cast<std::size_t>(pixel_stream(x, y, camera.width())),
+                          i = 4 * pixel;
         const PixelEstimate want = expected_pixel_estimate(spp_index, pixel);
         const Color mean(values[i], values[i + 1], values[i + 2]);
         const double se = values[i + 3];
         const Color centre = direction_radiance(camera.generate_ray(x, y, Vec2(0.5)));
         zero_spread = zero_spread && se == 0.0;
-        centre_means = centre_means && std::abs(average(mean) - average(centre)) <= tolerance * std::abs(average(centre));
+        centre_means = centre_means && std::abs(average(mean) - average(centre)) <=
+                                           tolerance * std::abs(average(centre));
         const bool ok = std::abs(se - want.standard_error) <= tolerance * want.standard_error &&
                         std::abs(mean.r - want.mean.r) <= tolerance * std::abs(want.mean.r) &&
                         std::abs(mean.g - want.mean.g) <= tolerance * std::abs(want.mean.g) &&
                         std::abs(mean.b - want.mean.b) <= tolerance * std::abs(want.mean.b);
         if (!ok && first_miss.empty())
-          first_miss = fmt::format("pixel ({}, {}) at spp = {}: mean ({:.6g}, {:.6g}, {:.6g}), standard error {:.6g}; "
-                                   "expected ({:.6g}, {:.6g}, {:.6g}), {:.6g}",
-                                   x, y, spp, mean.r, mean.g, mean.b, se, want.mean.r, want.mean.g, want.mean.b,
-                                   want.standard_error);
+          first_miss = fmt::format(
+              "pixel ({}, {}) at spp = {}: mean ({:.6g}, {:.6g}, {:.6g}), standard error {:.6g}; "
+              "expected ({:.6g}, {:.6g}, {:.6g}), {:.6g}",
+              x, y, spp, mean.r, mean.g, mean.b, se, want.mean.r, want.mean.g, want.mean.b,
+              want.standard_error);
         means.add(average(mean) / average(want.mean));
         errors.add(se / want.standard_error);
       }
     mean_ratio = means.mean();
     se_ratio = errors.mean();
   }
-  if (first_miss.empty()) return {true, "every pixel's mean and standard error match the checker's, spp = 2 and 16"};
+  if (first_miss.empty())
+    return {true, "every pixel's mean and standard error match the checker's, spp = 2 and 16"};
   std::string d;
   if (zero_spread && centre_means)
-    d = diagnosis("every pixel's mean is the radiance at its centre and the standard error is 0: is u always (0.5, 0.5) (no jitter)?");
+    d = diagnosis(
+        "every pixel's mean is the radiance at its centre and the standard error is 0: is u always (0.5, 0.5) (no jitter)?");
   else if (near(mean_ratio, 16.0, 1e-6))
-    d = diagnosis("your mean is spp times the expected one: do you return the sum of the samples instead of their mean?");
+    d = diagnosis(
+        "your mean is spp times the expected one: do you return the sum of the samples instead of their mean?");
   else if (near(mean_ratio, 1.0, 1e-6) && near(se_ratio, 4.0, 1e-6))
-    d = diagnosis("your standard error is sqrt(spp) times too large: is it sigma = sqrt(s^2), without the 1/spp of Var[mean] = sigma^2/spp?");
+    d = diagnosis(
+        "your standard error is sqrt(spp) times too large: is it sigma = sqrt(s^2), without the 1/spp of Var[mean] = sigma^2/spp?");
   else if (near(mean_ratio, 1.0, 1e-6) && near(se_ratio, std::sqrt(15.0 / 16.0), 1e-6))
-    d = diagnosis("your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide the squared deviations by spp instead of spp - 1 (the biased variance)?");
+    d = diagnosis(
+        "your standard error is sqrt((spp - 1)/spp) times the expected one: do you divide the squared deviations by spp instead of spp - 1 (the biased variance)?");
   else if (near(mean_ratio, 1.0, 1e-6))
-    d = diagnosis(fmt::format("your means match but your standard errors are {:.3f} times the expected sqrt(s^2 / spp), s^2 of the channel mean average(L)", se_ratio));
+    d = diagnosis(fmt::format(
+        "your means match but your standard errors are {:.3f} times the expected sqrt(s^2 / spp), s^2 of the channel mean average(L)",
+        se_ratio));
   else
-    d = diagnosis("your means differ from the mean of the samples: take u = rng.uniform2() for each sample, in order, then trace camera.generate_ray(x, y, u)");
+    d = diagnosis(
+        "your means differ from the mean of the samples: take u = rng.uniform2() for each sample, in order, then trace camera.generate_ray(x, y, u)");
   return {false, fmt::format("the first pixel that differs: {}\n{}", first_miss, d)};
 }
 
@@ -264,10 +293,12 @@ inline Vec2 image_position(const Camera& camera, const Vec3& direction) {
 /// `centred` says whether every ray went through the pixel's centre.
 template <class Rays>
 double jitter_p_value(Rays&& rays, std::uint64_t seed, bool& centred) {
-  constexpr int x = 5, y = 2, cells = 16, n = cells * cells * 40;  // 40 a cell: Cochran's 5 with room
+  constexpr int x = 5, y = 2, cells = 16,
+                n = cells * cells * 40;  // 40 a cell: Cochran's 5 with room
   const Camera camera = pixel_camera();
   std::vector<CellCount> counts(static_cast<std::size_t>(cells * cells));
-  for (int c = 0; c < cells * cells; ++c) counts[static_cast<std::size_t>(c)] = {c % cells, c / cells, 0.0, n / double(cells * cells)};
+  for (int c = 0; c < cells * cells; ++c)
+    counts[static_cast<std::size_t>(c)] = {c % cells, c / cells, 0.0, n / double(cells * cells)};
   std::uint64_t outside = 0;
   centred = true;
   const std::vector<Vec3> directions = rays(x, y, n, seed, 7);
@@ -279,7 +310,8 @@ double jitter_p_value(Rays&& rays, std::uint64_t seed, bool& centred) {
       ++outside;
       continue;
     }
-    const int i = std::clamp(static_cast<int>(p.x * cells), 0, cells - 1), j = std::clamp(static_cast<int>(p.y * cells), 0, cells - 1);
+    const int i = std::clamp(static_cast<int>(p.x * cells), 0, cells - 1),
+              j = std::clamp(static_cast<int>(p.y * cells), 0, cells - 1);
     counts[static_cast<std::size_t>(j * cells + i)].observed += 1.0;
   }
   if (directions.size() != static_cast<std::size_t>(n)) return 0.0;
@@ -290,12 +322,17 @@ double jitter_p_value(Rays&& rays, std::uint64_t seed, bool& centred) {
 template <class Rays>
 TaskResult check_pixel_jitter(Rays&& rays) {
   bool centred = false;
-  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) { return jitter_p_value(rays, seed, centred); });
+  const SeedVerdict v =
+      at_grading_seeds([&](std::uint64_t seed) { return jitter_p_value(rays, seed, centred); });
   std::string d;
   if (!v.passed())
-    d = centred ? diagnosis("every ray goes through the pixel's centre: is u always (0.5, 0.5) (no jitter)?")
-                : diagnosis("the rays do not cover the pixel uniformly: u must be uniform in [0,1)^2, a new rng.uniform2() for each sample");
-  return {v.passed(), fmt::format("pixel (5, 2), 10240 rays in 16 x 16 cells of the pixel: {}\n{}", v.describe(), d)};
+    d = centred
+            ? diagnosis(
+                  "every ray goes through the pixel's centre: is u always (0.5, 0.5) (no jitter)?")
+            : diagnosis(
+                  "the rays do not cover the pixel uniformly: u must be uniform in [0,1)^2, a new rng.uniform2() for each sample");
+  return {v.passed(), fmt::format("pixel (5, 2), 10240 rays in 16 x 16 cells of the pixel: {}\n{}",
+                                  v.describe(), d)};
 }
 
 /// The calibrated standard error at one seed: a 32 x 32 furnace render (a = 0.5, k = 3, 512
@@ -311,7 +348,8 @@ double calibration_p_value(Furnace&& furnace, std::uint64_t seed, double& z_vari
   const double truth = furnace_radiance(a, 1.0, k);
   const std::vector<double> values = furnace(a, k, size, spp, seed);
   std::vector<double> z;
-  for (std::size_t i = 0; i + 1 < values.size(); i += 2) z.push_back((values[i] - truth) / values[i + 1]);
+  for (std::size_t i = 0; i + 1 < values.size(); i += 2)
+    z.push_back((values[i] - truth) / values[i + 1]);
   RunningStats s;
   for (double v : z) s.add(v);
   z_variance = s.variance();
@@ -323,26 +361,34 @@ double calibration_p_value(Furnace&& furnace, std::uint64_t seed, double& z_vari
 template <class Furnace>
 TaskResult check_pixel_calibration(Furnace&& furnace) {
   double z_variance = 0.0;
-  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) { return calibration_p_value(furnace, seed, z_variance); });
+  const SeedVerdict v = at_grading_seeds(
+      [&](std::uint64_t seed) { return calibration_p_value(furnace, seed, z_variance); });
   std::string d;
   if (!v.passed()) {
     constexpr double spp = 512.0;
     if (near(z_variance, 1.0 / spp, 0.3))
-      d = diagnosis("the z-scores vary spp times too little: is your standard error sigma instead of sigma / sqrt(spp)?");
+      d = diagnosis(
+          "the z-scores vary spp times too little: is your standard error sigma instead of sigma / sqrt(spp)?");
     else if (z_variance > 100.0)
-      d = diagnosis("the z-scores are far from 0: is your mean the furnace's mean (the mean of the samples, not their sum)?");
+      d = diagnosis(
+          "the z-scores are far from 0: is your mean the furnace's mean (the mean of the samples, not their sum)?");
     else
-      d = diagnosis(fmt::format("the z-scores (mean - truth) / se have variance {:.3f}, not 1: your standard error is off by about a factor {:.2f}",
-                                z_variance, std::sqrt(z_variance)));
+      d = diagnosis(fmt::format(
+          "the z-scores (mean - truth) / se have variance {:.3f}, not 1: your standard error is off by about a factor {:.2f}",
+          z_variance, std::sqrt(z_variance)));
   }
-  return {v.passed(), fmt::format("furnace a = 0.5, k = 3, 32 x 32 pixels of 512 paths: variance of the z-scores {:.3f} at the last seed; {}\n{}",
-                                  z_variance, v.describe(), d)};
+  return {
+      v.passed(),
+      fmt::format(
+          "furnace a = 0.5, k = 3, 32 x 32 pixels of 512 paths: variance of the z-scores {:.3f} at the last seed; {}\n{}",
+          z_variance, v.describe(), d)};
 }
 
 /// a4.2's producers for an estimate_pixel run in this process (a known-wrong one).
 template <class Estimate>
 auto pixel_exact_of(Estimate estimate) {
-  return [estimate](int spp, std::uint64_t seed) { return pixel_exact_values(estimate, spp, seed); };
+  return
+      [estimate](int spp, std::uint64_t seed) { return pixel_exact_values(estimate, spp, seed); };
 }
 template <class Estimate>
 auto pixel_rays_of(Estimate estimate) {

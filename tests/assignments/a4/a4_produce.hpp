@@ -53,8 +53,10 @@ std::vector<double> furnace_values(Radiance&& radiance, double albedo, int depth
 /// The mean channel radiance of `estimate` per region x region block of a Size x Size image:
 /// spp samples per pixel, sample s of pixel p drawn from the stream (p, s).
 template <int Size, int Region, class Estimate>
-std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
-    const Camera& camera, Estimate&& estimate, int spp, std::uint64_t seed) {
+std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(const Camera& camera,
+                                                                         Estimate&& estimate,
+                                                                         int spp,
+                                                                         std::uint64_t seed) {
   constexpr int regions = Size / Region;
   std::array<RunningStats, regions * regions> stats;
   RayCount count;
@@ -73,15 +75,16 @@ std::array<RunningStats, (Size / Region) * (Size / Region)> region_stats(
 /// Region statistics of per-sample values listed in region_stats's order (rows, pixels,
 /// samples), added in that order so that they equal region_stats's; a missing value is NaN.
 template <int Size, int Region>
-std::array<RunningStats, (Size / Region) * (Size / Region)> stats_by_region(const std::vector<double>& values, int spp) {
+std::array<RunningStats, (Size / Region) * (Size / Region)> stats_by_region(
+    const std::vector<double>& values, int spp) {
   constexpr int regions = Size / Region;
   std::array<RunningStats, regions * regions> stats;
   std::size_t i = 0;
   for (int y = 0; y < Size; ++y)
     for (int x = 0; x < Size; ++x)
       for (int s = 0; s < spp; ++s, ++i)
-        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(i < values.size() ? values[i]
-                                                                                                   : std::nan(""));
+        stats[static_cast<std::size_t>((y / Region) * regions + x / Region)].add(
+            i < values.size() ? values[i] : std::nan(""));
   return stats;
 }
 
@@ -98,7 +101,8 @@ std::vector<double> every_pixel_sample(const Scene& scene, int size, int spp, st
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
       for (int s = 0; s < spp; ++s) {
-        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x), static_cast<std::uint64_t>(s)));
+        Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * size + x),
+                                   static_cast<std::uint64_t>(s)));
         const Ray ray = camera.generate_ray(x, y, rng.uniform2());
         values.push_back(average(radiance(scene, ray, rng, count)));
       }
@@ -118,8 +122,8 @@ std::vector<double> sky_values(Radiance&& radiance, int size, int k, int spp, st
 /// drawn from Rng(seed, stream): its channel-mean radiance and its rays.
 
 template <class Radiance>
-PathSample furnace_path(Radiance&& radiance, double albedo, double emission, Vec3 direction, int depth,
-                        std::uint64_t seed, std::uint64_t stream) {
+PathSample furnace_path(Radiance&& radiance, double albedo, double emission, Vec3 direction,
+                        int depth, std::uint64_t seed, std::uint64_t stream) {
   const Scene furnace = make_furnace(albedo, emission);
   Rng rng(seed, stream);
   RayCount count;
@@ -145,7 +149,9 @@ inline Color direction_radiance(const Ray& ray) {
 }
 
 /// The stream of pixel (x, y) of a width-wide image in a4.2's requests.
-inline std::uint64_t pixel_stream(int x, int y, int width) { return static_cast<std::uint64_t>(y * width + x); }
+inline std::uint64_t pixel_stream(int x, int y, int width) {
+  return static_cast<std::uint64_t>(y * width + x);
+}
 
 /// Every pixel of pixel_camera() estimated with direction_radiance at spp samples, pixel
 /// (x, y) from Rng(seed, pixel_stream): four numbers a pixel (mean r, g, b, standard error),
@@ -157,8 +163,8 @@ std::vector<double> pixel_exact_values(Estimate&& estimate, int spp, std::uint64
   for (int y = 0; y < camera.height(); ++y)
     for (int x = 0; x < camera.width(); ++x) {
       Rng rng(seed, pixel_stream(x, y, camera.width()));
-      const PixelEstimate e =
-          estimate(camera, x, y, spp, [](const Ray& ray, Rng&) { return direction_radiance(ray); }, rng);
+      const PixelEstimate e = estimate(
+          camera, x, y, spp, [](const Ray& ray, Rng&) { return direction_radiance(ray); }, rng);
       for (double v : {e.mean.r, e.mean.g, e.mean.b, e.standard_error}) out.push_back(v);
     }
   return out;
@@ -167,18 +173,19 @@ std::vector<double> pixel_exact_values(Estimate&& estimate, int spp, std::uint64
 /// The directions of the rays estimate() traces for pixel (x, y) of pixel_camera() at spp
 /// samples from Rng(seed, stream), in the order it traces them (a radiance that records them).
 template <class Estimate>
-std::vector<Vec3> pixel_ray_directions(Estimate&& estimate, int x, int y, int spp, std::uint64_t seed,
-                                       std::uint64_t stream) {
+std::vector<Vec3> pixel_ray_directions(Estimate&& estimate, int x, int y, int spp,
+                                       std::uint64_t seed, std::uint64_t stream) {
   const Camera camera = pixel_camera();
   std::vector<Vec3> directions;
   directions.reserve(static_cast<std::size_t>(spp));
   Rng rng(seed, stream);
-  estimate(camera, x, y, spp,
-           [&directions](const Ray& ray, Rng&) {
-             directions.push_back(ray.direction);
-             return Color(0.0);
-           },
-           rng);
+  estimate(
+      camera, x, y, spp,
+      [&directions](const Ray& ray, Rng&) {
+        directions.push_back(ray.direction);
+        return Color(0.0);
+      },
+      rng);
   return directions;
 }
 
@@ -200,8 +207,8 @@ inline double furnace_path_law(double albedo, int depth, Rng& rng) {
 /// estimated from spp samples, pixel (x, y) from Rng(seed, pixel_stream): two numbers a pixel
 /// (the channel-mean mean, the standard error).
 template <class Estimate>
-std::vector<double> pixel_furnace_values(Estimate&& estimate, double albedo, int depth, int size, int spp,
-                                         std::uint64_t seed) {
+std::vector<double> pixel_furnace_values(Estimate&& estimate, double albedo, int depth, int size,
+                                         int spp, std::uint64_t seed) {
   const Scene furnace = make_furnace(albedo, 1.0);
   const Camera camera(furnace.camera, size, size);
   std::vector<double> out;
@@ -209,7 +216,8 @@ std::vector<double> pixel_furnace_values(Estimate&& estimate, double albedo, int
     for (int x = 0; x < size; ++x) {
       Rng rng(seed, pixel_stream(x, y, size));
       const PixelEstimate e = estimate(
-          camera, x, y, spp, [&](const Ray&, Rng& r) { return Color(furnace_path_law(albedo, depth, r)); }, rng);
+          camera, x, y, spp,
+          [&](const Ray&, Rng& r) { return Color(furnace_path_law(albedo, depth, r)); }, rng);
       out.push_back(average(e.mean));
       out.push_back(e.standard_error);
     }

@@ -58,7 +58,8 @@ inline double furnace_roulette_mean_before_emission(double a, int d, double q) {
 /// The roulette furnace of check_roulette_furnace at one seed: its p-value (adding the mean
 /// radiance and mean rays to the sums given).
 template <class P>
-double roulette_furnace_p_value(P&& producer, std::uint64_t seed, double& mean_sum, double& rays_sum) {
+double roulette_furnace_p_value(P&& producer, std::uint64_t seed, double& mean_sum,
+                                double& rays_sum) {
   constexpr double a = 0.5, q = 0.7;
   constexpr int d = 2, n = 20000;
   const Roulette roulette{d, RoulettePolicy::fixed, q, 0.05};
@@ -88,7 +89,8 @@ template <class P>
 TaskResult check_roulette_furnace(P&& producer) {
   constexpr double a = 0.5, q = 0.7;
   constexpr int d = 2;
-  const double expected = furnace_radiance_untruncated(a, 1.0), rays = furnace_roulette_mean_rays(d, q);
+  const double expected = furnace_radiance_untruncated(a, 1.0),
+               rays = furnace_roulette_mean_rays(d, q);
   double mean_sum = 0.0, rays_sum = 0.0;
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
     return roulette_furnace_p_value(producer, seed, mean_sum, rays_sum);
@@ -98,23 +100,32 @@ TaskResult check_roulette_furnace(P&& producer) {
   if (!v.passed()) {
     const double r = mean / expected;
     if (near(mean, furnace_roulette_mean_without_division(a, d, q), 0.01))
-      d_text = diagnosis(fmt::format("your mean is {:.3f}x the expected value, that of roulette whose survivors keep "
-                                     "their weight: is the survivor's weight divided by q?", r));
+      d_text = diagnosis(fmt::format(
+          "your mean is {:.3f}x the expected value, that of roulette whose survivors keep "
+          "their weight: is the survivor's weight divided by q?",
+          r));
     else if (near(mean, furnace_roulette_mean_before_emission(a, d, q), 0.01))
-      d_text = diagnosis(fmt::format("your mean is {:.3f}x the expected value: a path stopped at x_j loses Le(x_j): "
-                                     "add the emission before the roulette", r));
+      d_text = diagnosis(fmt::format(
+          "your mean is {:.3f}x the expected value: a path stopped at x_j loses Le(x_j): "
+          "add the emission before the roulette",
+          r));
     else if (near(mean, expected, 0.01) && near(mean_rays, 1.0 / (1.0 - q), 0.02))
-      d_text = diagnosis(fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: "
-                                     "does the roulette start at vertex min_depth, not at 0?", mean_rays, rays));
+      d_text = diagnosis(
+          fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: "
+                      "does the roulette start at vertex min_depth, not at 0?",
+                      mean_rays, rays));
     else if (near(mean, expected, 0.01) && !near(mean_rays, rays, 0.02))
-      d_text = diagnosis(fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: does "
-                                     "a path go on with probability q (u < q), from vertex min_depth on?", mean_rays, rays));
+      d_text = diagnosis(
+          fmt::format("paths trace {:.2f} rays on average instead of d + 1/(1 - q) = {:.2f}: does "
+                      "a path go on with probability q (u < q), from vertex min_depth on?",
+                      mean_rays, rays));
     else
       d_text = diagnose_mean_ratio(mean, expected);
   }
-  return {v.passed(), fmt::format("furnace a = 0.5, fixed q = 0.7 after d = 2: mean {:.5f} (expected {:.5f}), "
-                                  "rays {:.3f} (expected {:.3f}); {}\n{}",
-                                  mean, expected, mean_rays, rays, v.describe(), d_text)};
+  return {v.passed(),
+          fmt::format("furnace a = 0.5, fixed q = 0.7 after d = 2: mean {:.5f} (expected {:.5f}), "
+                      "rays {:.3f} (expected {:.3f}); {}\n{}",
+                      mean, expected, mean_rays, rays, v.describe(), d_text)};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -143,28 +154,41 @@ TaskResult check_cosine_furnace_is_exact(P&& producer) {
   int wrong = 0, early = 0;
   double first_wrong = 0.0;
   for (const FurnacePath& p : producer.a5_paths(importance_estimator(k, cosine), a, 2000, 7, 79))
-    if (!exact_furnace_path(p.radiance, a, k, 1e-9, early) && wrong++ == 0) first_wrong = p.radiance;
+    if (!exact_furnace_path(p.radiance, a, k, 1e-9, early) && wrong++ == 0)
+      first_wrong = p.radiance;
   if (wrong == 0)
-    return {true, fmt::format("furnace a = 0.5, k = 3, cosine pdf: all 2000 paths return {:.6f}", expected)};
+    return {true, fmt::format("furnace a = 0.5, k = 3, cosine pdf: all 2000 paths return {:.6f}",
+                              expected)};
   const RunningStats w = furnace_bounce_weights(producer, cosine, a);
   std::string d;
   const double spread = std::sqrt(w.variance());
   if (!std::isfinite(w.mean()))
     d = diagnosis("the weight is not finite (NaN or inf): a division by a pdf of 0?");
   else if (spread < 1e-9 && near(w.mean(), k_inv_pi, 0.01))
-    d = diagnosis("the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi (p = cos(theta)/pi)?");
+    d = diagnosis(
+        "the per-bounce weight is a/pi instead of a, at every bounce: is the cosine pdf missing its 1/pi (p = cos(theta)/pi)?");
   else if (spread < 1e-9 && near(w.mean(), k_pi, 0.01))
-    d = diagnosis("the per-bounce weight is pi a instead of a: is the cosine pdf cos(theta) pi instead of cos(theta)/pi?");
+    d = diagnosis(
+        "the per-bounce weight is pi a instead of a: is the cosine pdf cos(theta) pi instead of cos(theta)/pi?");
   else if (spread < 1e-9)
-    d = diagnosis(fmt::format("the per-bounce weight is {:.3f}a at every bounce instead of a = f_r cos / p", w.mean()));
+    d = diagnosis(
+        fmt::format("the per-bounce weight is {:.3f}a at every bounce instead of a = f_r cos / p",
+                    w.mean()));
   else if (near(w.mean(), 4.0 / 3.0, 0.05))
-    d = diagnosis("the per-bounce weight averages 4a/3 and varies: cosine directions divided by the uniform pdf 1/(2 pi)?");
+    d = diagnosis(
+        "the per-bounce weight averages 4a/3 and varies: cosine directions divided by the uniform pdf 1/(2 pi)?");
   else
-    d = diagnosis(fmt::format("the per-bounce weight averages {:.3f}a with spread {:.3f}a; with the cosine pdf it is a, "
-                              "always: are the direction drawn and the pdf divided by the same (sample_hemisphere, "
-                              "hemisphere_pdf of the same pdf)?", w.mean(), spread));
-  return {false, fmt::format("furnace a = 0.5, k = 3, cosine pdf: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = "
-                             "{:.6f} (the first: {:.6f})\n{}", wrong, expected, first_wrong, d)};
+    d = diagnosis(fmt::format(
+        "the per-bounce weight averages {:.3f}a with spread {:.3f}a; with the cosine pdf it is a, "
+        "always: are the direction drawn and the pdf divided by the same (sample_hemisphere, "
+        "hemisphere_pdf of the same pdf)?",
+        w.mean(), spread));
+  return {
+      false,
+      fmt::format(
+          "furnace a = 0.5, k = 3, cosine pdf: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = "
+          "{:.6f} (the first: {:.6f})\n{}",
+          wrong, expected, first_wrong, d)};
 }
 
 /// Any pdf gives the same mean; the variance is the pdf's (importance_path_tracer.hpp). The
@@ -173,10 +197,12 @@ TaskResult check_cosine_furnace_is_exact(P&& producer) {
 /// Only the mean for cos^m, m >= 2: its weight w ~ 1/cos^(m-1) has an infinite fourth moment,
 /// so the sample variance has no standard error to test it with.
 template <class P>
-double importance_furnace_p_value(P&& producer, const HemispherePdf& pdf, std::uint64_t seed, double& mean_sum) {
+double importance_furnace_p_value(P&& producer, const HemispherePdf& pdf, std::uint64_t seed,
+                                  double& mean_sum) {
   constexpr double a = 0.5;
   constexpr int k = 3, n = 20000;
-  const double expected = furnace_radiance(a, 1.0, k), variance = furnace_radiance_variance(pdf, a, 1.0, k);
+  const double expected = furnace_radiance(a, 1.0, k),
+               variance = furnace_radiance_variance(pdf, a, 1.0, k);
   std::vector<double> values;
   RunningStats s;
   for (const FurnacePath& p : producer.a5_paths(importance_estimator(k, pdf), a, n, seed, 62)) {
@@ -201,15 +227,19 @@ TaskResult check_importance_furnace(P&& producer, const HemispherePdf& pdf) {
   if (!v.passed()) {
     const RunningStats w = furnace_bounce_weights(producer, pdf, 0.5);
     if (!near(w.mean(), 1.0, 0.05))
-      d = diagnosis(fmt::format("with the {} pdf the per-bounce weight averages {:.3f}a instead of a: is f_r cos / p "
-                                "divided by the pdf of the direction drawn (hemisphere_pdf(pdf, cos theta))?",
-                                pdf_name(pdf), w.mean()));
+      d = diagnosis(fmt::format(
+          "with the {} pdf the per-bounce weight averages {:.3f}a instead of a: is f_r cos / p "
+          "divided by the pdf of the direction drawn (hemisphere_pdf(pdf, cos theta))?",
+          pdf_name(pdf), w.mean()));
     else
-      d = diagnosis(fmt::format("the mean is right but not the variance with the {} pdf: are the directions drawn "
-                                "from that pdf (sample_hemisphere(pdf, u))?", pdf_name(pdf)));
+      d = diagnosis(fmt::format(
+          "the mean is right but not the variance with the {} pdf: are the directions drawn "
+          "from that pdf (sample_hemisphere(pdf, u))?",
+          pdf_name(pdf)));
   }
-  return {v.passed(), fmt::format("furnace a = 0.5, k = 3, {} pdf: mean {:.5f} (expected {:.5f}); {}\n{}", pdf_name(pdf),
-                                  mean, expected, v.describe(), d)};
+  return {v.passed(),
+          fmt::format("furnace a = 0.5, k = 3, {} pdf: mean {:.5f} (expected {:.5f}); {}\n{}",
+                      pdf_name(pdf), mean, expected, v.describe(), d)};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -237,30 +267,42 @@ TaskResult check_nee_furnace_is_exact(P&& producer) {
   if (!std::isfinite(all.mean()))
     d = diagnosis("your result is not finite (NaN or inf): a division by a pdf of 0?");
   else if (std::abs(all.mean() - furnace_radiance(a, 1.0, k + 1)) < 1e-6 && spread < 1e-6)
-    d = diagnosis(fmt::format("every path returns Le (1 + a + ... + a^(k+1)) = {:.6f}, one light sample too many: is the "
-                              "path cut at depth k only after the light sample of its last vertex? That sample's light "
-                              "travels k + 1 segments: check the depth before sampling the light",
-                              furnace_radiance(a, 1.0, k + 1)));
+    d = diagnosis(fmt::format(
+        "every path returns Le (1 + a + ... + a^(k+1)) = {:.6f}, one light sample too many: is the "
+        "path cut at depth k only after the light sample of its last vertex? That sample's light "
+        "travels k + 1 segments: check the depth before sampling the light",
+        furnace_radiance(a, 1.0, k + 1)));
   else if (direct > 1.6 && direct < 2.4 && spread > 1e-3)
     // p_w = p_A r^2 for p_A r^2 / cos(theta_y): each sample 1 / cos(theta_y) too large, and
     // cos(theta_y) is cosine-distributed here, so the direct light averages E[1/cos] = 2 with
     // an infinite variance (emission counted twice gives exactly 2x, no spread)
-    d = diagnosis(fmt::format("direct light is {:.2f}x and varies wildly from path to path, as 1 / cos(theta_y) does "
-                              "(its mean here is 2); every light sample here should give exactly a Le: is cos(theta_y), "
-                              "the cosine at the light, left out of p_w = p_A r^2 / cos(theta_y)?", direct));
+    d = diagnosis(fmt::format(
+        "direct light is {:.2f}x and varies wildly from path to path, as 1 / cos(theta_y) does "
+        "(its mean here is 2); every light sample here should give exactly a Le: is cos(theta_y), "
+        "the cosine at the light, left out of p_w = p_A r^2 / cos(theta_y)?",
+        direct));
   else if (near(direct, 2.0, 0.01) && spread < 1e-6)
-    d = diagnosis("direct light is 2x: is emission counted by both the light sample and the BSDF ray? (after the camera "
-                  "ray, only the shadow ray adds Le)");
+    d = diagnosis(
+        "direct light is 2x: is emission counted by both the light sample and the BSDF ray? (after the camera "
+        "ray, only the shadow ray adds Le)");
   else if (near(direct, 0.0, 1e-3) || direct < 0.1)
-    d = diagnosis(fmt::format("direct light is {:.2f}x: almost no shadow ray reaches the light: does it stop short of the "
-                              "light point (the light itself must not block it)?", direct));
+    d = diagnosis(fmt::format(
+        "direct light is {:.2f}x: almost no shadow ray reaches the light: does it stop short of the "
+        "light point (the light itself must not block it)?",
+        direct));
   else if (spread > 1e-3 && !near(direct, 1.0, 0.05))
-    d = diagnosis(fmt::format("direct light is {:.2f}x and varies from path to path; every light sample here should give "
-                              "exactly a Le: is p_A converted to solid angle, p_w = p_A r^2 / cos(theta_y)?", direct));
+    d = diagnosis(fmt::format(
+        "direct light is {:.2f}x and varies from path to path; every light sample here should give "
+        "exactly a Le: is p_A converted to solid angle, p_w = p_A r^2 / cos(theta_y)?",
+        direct));
   else
     d = diagnose_mean_ratio(all.mean(), expected);
-  return {false, fmt::format("furnace a = 0.5, k = 3: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = {:.6f} "
-                             "(mean {:.6f}, spread {:.3g})\n{}", wrong, expected, all.mean(), spread, d)};
+  return {
+      false,
+      fmt::format(
+          "furnace a = 0.5, k = 3: {} of 2000 paths differ from Le (1 + a + a^2 + a^3) = {:.6f} "
+          "(mean {:.6f}, spread {:.3g})\n{}",
+          wrong, expected, all.mean(), spread, d)};
 }
 
 /// Region by region against a4's path tracer: the Cornell box (its lamp at 3x its area, same
@@ -272,8 +314,8 @@ TaskResult check_nee_furnace_is_exact(P&& producer) {
 /// One seed of check_nee_regions: the Sidak-combined p-value of the 16 regions (and the worst
 /// region: its index, z and ratio of means, when it is worse than `worst_z`).
 template <class P>
-double nee_regions_p_value(P&& producer, std::uint64_t seed, int& worst, double& worst_z, double& worst_ratio,
-                           int lamp_parts = 1) {
+double nee_regions_p_value(P&& producer, std::uint64_t seed, int& worst, double& worst_z,
+                           double& worst_ratio, int lamp_parts = 1) {
   constexpr int size = 16, region = 4, regions = size / region, k = 3;
   const Scene scene = make_cornell_box(3.0, lamp_parts);
   const Camera camera(scene.camera, size, size);
@@ -281,15 +323,18 @@ double nee_regions_p_value(P&& producer, std::uint64_t seed, int& worst, double&
   const auto collect = [&](auto&& estimate, int spp, std::uint64_t at_seed) {
     return region_stats<size, region>(camera, estimate, spp, at_seed);
   };
-  const Stats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_path_radiance(scene, ray, k, rng, count);
-  }, 1024, seed ^ 0xa5a5ULL);
-  const Stats student = stats_by_region<size, region>(producer.a5_regions(nee_estimator(nee_depth_cut(k)), lamp_parts,
-                                                                          size, 64, seed), 64);
+  const Stats reference =
+      collect([&](const Ray& ray, Rng& rng,
+                  RayCount& count) { return estimate_path_radiance(scene, ray, k, rng, count); },
+              1024, seed ^ 0xa5a5ULL);
+  const Stats student = stats_by_region<size, region>(
+      producer.a5_regions(nee_estimator(nee_depth_cut(k)), lamp_parts, size, 64, seed), 64);
   double p_min = 1.0;
   for (int r = 0; r < regions * regions; ++r) {
-    const RunningStats &s = student[static_cast<std::size_t>(r)], &t = reference[static_cast<std::size_t>(r)];
-    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) + t.variance() / static_cast<double>(t.count()));
+    const RunningStats &s = student[static_cast<std::size_t>(r)],
+                       &t = reference[static_cast<std::size_t>(r)];
+    const double se = std::sqrt(s.variance() / static_cast<double>(s.count()) +
+                                t.variance() / static_cast<double>(t.count()));
     const double p = z_test_p_value(s.mean(), t.mean(), se);
     if (!(p >= p_min)) {
       p_min = p;
@@ -311,7 +356,8 @@ TaskResult nee_regions_verdict(P&& producer, int lamp_parts, const std::string& 
   const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
     return nee_regions_p_value(producer, seed, worst, worst_z, worst_ratio, lamp_parts);
   });
-  std::string message = fmt::format("{} 16 x 16, k = 3, regions of 4 x 4 pixels: {}", scene, v.describe());
+  std::string message =
+      fmt::format("{} 16 x 16, k = 3, regions of 4 x 4 pixels: {}", scene, v.describe());
   if (v.passed()) return {true, message};
   const int column = worst % regions, row = worst / regions;
   // A wrong 1/N_lights is invisible with one light: if the one-light box fails too, the bug is
@@ -319,22 +365,27 @@ TaskResult nee_regions_verdict(P&& producer, int lamp_parts, const std::string& 
   const auto one_light_fails = [&] {
     int w = 0;
     double z = 0.0, ratio = 1.0;
-    return !at_grading_seeds([&](std::uint64_t seed) { return nee_regions_p_value(producer, seed, w, z, ratio, 1); })
-                .passed();
+    return !at_grading_seeds([&](std::uint64_t seed) {
+              return nee_regions_p_value(producer, seed, w, z, ratio, 1);
+            }).passed();
   };
   if (lamp_parts > 1 && one_light_fails()) {
-    message += fmt::format("\nregion (column {}, row {}) is {:.2f}x the path tracer\n", column, row, worst_ratio);
-    message += diagnosis("the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here: "
-                         "fix what the NEE furnace and the one-light region test say first");
+    message += fmt::format("\nregion (column {}, row {}) is {:.2f}x the path tracer\n", column, row,
+                           worst_ratio);
+    message += diagnosis(
+        "the box with one light fails too, so the light pick's 1/N_lights is not what is wrong here: "
+        "fix what the NEE furnace and the one-light region test say first");
   } else if (lamp_parts > 1 && (worst_ratio < 0.75 || worst_ratio > 1.3)) {
     message += '\n';  // apart: "\n" + a temporary trips a false -Wrestrict in g++ 12
-    message += diagnosis(fmt::format("region (column {}, row {}) is {:.2f}x the path tracer: with {} lights, does "
-                                             "the light sample's pdf include the 1/N_lights of picking one, once "
-                                             "(p_w = (p_A / N) r^2 / cos(theta_y))?",
-                                             column, row, worst_ratio, lamp_parts));
+    message += diagnosis(
+        fmt::format("region (column {}, row {}) is {:.2f}x the path tracer: with {} lights, does "
+                    "the light sample's pdf include the 1/N_lights of picking one, once "
+                    "(p_w = (p_A / N) r^2 / cos(theta_y))?",
+                    column, row, worst_ratio, lamp_parts));
   } else {
-    message += fmt::format("\nregion (column {}, row {}) is {:.1f} standard errors from the path tracer ({:.2f}x its mean)",
-                           column, row, worst_z, worst_ratio);
+    message += fmt::format(
+        "\nregion (column {}, row {}) is {:.1f} standard errors from the path tracer ({:.2f}x its mean)",
+        column, row, worst_z, worst_ratio);
   }
   return {false, message};
 }
@@ -376,9 +427,10 @@ double nee_beyond_cap_p_value(P&& producer, std::uint64_t seed, double& ratio) {
     }
     return stats;
   };
-  const RunningStats reference = collect([&](const Ray& ray, Rng& rng, RayCount& count) {
-    return estimate_path_radiance(scene, ray, 1, rng, count);
-  }, seed ^ 0x5a5aULL);
+  const RunningStats reference =
+      collect([&](const Ray& ray, Rng& rng,
+                  RayCount& count) { return estimate_path_radiance(scene, ray, 1, rng, count); },
+              seed ^ 0x5a5aULL);
   RunningStats student;
   for (double x : producer.a5_wall(nee_estimator(nee_depth_cut(1)), n, seed)) student.add(x);
   ratio = student.mean() / reference.mean();
@@ -389,25 +441,28 @@ double nee_beyond_cap_p_value(P&& producer, std::uint64_t seed, double& ratio) {
 template <class P>
 TaskResult check_nee_light_beyond_cap(P&& producer) {
   double ratio = 1.0;
-  const SeedVerdict v = at_grading_seeds([&](std::uint64_t seed) {
-    return nee_beyond_cap_p_value(producer, seed, ratio);
-  });
+  const SeedVerdict v = at_grading_seeds(
+      [&](std::uint64_t seed) { return nee_beyond_cap_p_value(producer, seed, ratio); });
   std::string d;
   // The furnace's paths are exact: if they are wrong, the bug is there to see in every scene
   // (emission at every vertex, a missing cos(theta_y)), not in how the cap is sampled.
   const bool furnace_wrong = !v.passed() && !check_nee_furnace_is_exact(producer).passed;
   if (furnace_wrong)
-    d = diagnosis("the NEE furnace's exact paths are wrong too, so the cap of the sphere light is not what is wrong "
-                  "here: fix what the furnace test says first");
+    d = diagnosis(
+        "the NEE furnace's exact paths are wrong too, so the cap of the sphere light is not what is wrong "
+        "here: fix what the furnace test says first");
   else if (!v.passed() && ratio < 0.1)
-    d = diagnosis("almost no light reaches this wall through your shadow rays, though the light is in plain view: "
-                  "do you sample only the cap of the sphere light? That cap is all of it the room can see, not all "
-                  "a point above the ceiling can see: sample_emitter(scene, e, x, u) aims at the part x can see "
-                  "(give it the point the shadow ray starts from)");
+    d = diagnosis(
+        "almost no light reaches this wall through your shadow rays, though the light is in plain view: "
+        "do you sample only the cap of the sphere light? That cap is all of it the room can see, not all "
+        "a point above the ceiling can see: sample_emitter(scene, e, x, u) aims at the part x can see "
+        "(give it the point the shadow ray starts from)");
   else if (!v.passed())
     d = diagnose_mean_ratio(ratio, 1.0);
-  return {v.passed(), fmt::format("cornell-spheres, the left wall above the ceiling, depth 1, your NEE against "
-                                  "a4's path tracer ({:.2f}x its mean): {}\n{}", ratio, v.describe(), d)};
+  return {v.passed(),
+          fmt::format("cornell-spheres, the left wall above the ceiling, depth 1, your NEE against "
+                      "a4's path tracer ({:.2f}x its mean): {}\n{}",
+                      ratio, v.describe(), d)};
 }
 
 }  // namespace mcrt::testing::assignment

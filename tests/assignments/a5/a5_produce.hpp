@@ -38,8 +38,14 @@ inline A5Estimator importance_estimator(int max_depth, const HemispherePdf& pdf)
 }
 
 inline A5Estimator nee_estimator(const PathEnd& end) {
-  return {A5Estimator::nee, end.roulette.min_depth, static_cast<int>(end.roulette.policy), end.roulette.q,
-          end.roulette.floor, end.max_depth, 0, 0};
+  return {A5Estimator::nee,
+          end.roulette.min_depth,
+          static_cast<int>(end.roulette.policy),
+          end.roulette.q,
+          end.roulette.floor,
+          end.max_depth,
+          0,
+          0};
 }
 
 inline Roulette roulette_of(const A5Estimator& e) {
@@ -67,12 +73,14 @@ struct A5Producer {
   ImportanceFn importance;
   NeeFn nee;
 
-  Color run(const A5Estimator& e, const Scene& scene, const Ray& ray, Rng& rng, RayCount& count) const {
+  Color run(const A5Estimator& e, const Scene& scene, const Ray& ray, Rng& rng,
+            RayCount& count) const {
     switch (e.kind) {
       case A5Estimator::roulette: return roulette(scene, ray, roulette_of(e), rng, count);
       case A5Estimator::importance:
         return importance(scene, ray, e.max_depth,
-                          HemispherePdf{static_cast<HemispherePdf::Kind>(e.pdf_kind), e.pdf_m}, rng, count);
+                          HemispherePdf{static_cast<HemispherePdf::Kind>(e.pdf_kind), e.pdf_m}, rng,
+                          count);
       case A5Estimator::nee: {
         PathEnd end;
         end.roulette = roulette_of(e);
@@ -87,12 +95,14 @@ struct A5Producer {
   std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
                                     std::uint64_t block) const {
     return a5_furnace_paths(make_furnace(albedo, 1.0), n, seed, block,
-                            [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) { return run(e, s, r, rng, c); });
+                            [&](const Scene& s, const Ray& r, Rng& rng, RayCount& c) {
+                              return run(e, s, r, rng, c);
+                            });
   }
 
   /// One furnace path from the centre along `direction`, from Rng(seed, stream).
-  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
-                       std::uint64_t stream) const {
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction,
+                       std::uint64_t seed, std::uint64_t stream) const {
     const Scene furnace = make_furnace(albedo, emission);
     Rng rng(seed, stream);
     RayCount count;
@@ -102,7 +112,8 @@ struct A5Producer {
 
   /// Every sample of the Cornell box (its lamp at 3x its area, in `lamp_parts` strips) at
   /// size x size pixels, spp per pixel, in region_stats's order.
-  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed) const {
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp,
+                                 std::uint64_t seed) const {
     return every_pixel_sample(make_cornell_box(3.0, lamp_parts), size, spp, seed,
                               [&](const Scene& scene, const Ray& ray, Rng& rng, RayCount& count) {
                                 return run(e, scene, ray, rng, count);

@@ -18,9 +18,11 @@ TEST(A5, Task1RouletteFurnaceMatchesTheClosedForms) {
 TEST(A5, Task1NoRouletteBeforeMinDepth) {
   // q = 0 after d = 4: every path stops at vertex 4, after its Le(x_4) is added.
   const Roulette roulette{4, RoulettePolicy::fixed, 0.0, 0.05};
-  const PathSample p = subject().a5_single(roulette_estimator(roulette), 0.5, 1.0, {0.0, 0.0, 1.0}, 5, 5);
+  const PathSample p =
+      subject().a5_single(roulette_estimator(roulette), 0.5, 1.0, {0.0, 0.0, 1.0}, 5, 5);
   const double L = p.radiance;
-  EXPECT_EQ(p.rays, 5u) << "min_depth d = 4, q = 0: vertices 0..4 always go on to their Le, then the path stops";
+  EXPECT_EQ(p.rays, 5u)
+      << "min_depth d = 4, q = 0: vertices 0..4 always go on to their Le, then the path stops";
   EXPECT_GT(L, 1.0) << "Le(x_0) = 1 and the later vertices' emission";
 }
 

@@ -51,7 +51,9 @@ auto lobe_samples_of(S& subject, double m) {
 }
 template <class S>
 auto lobe_pdf_of(S& subject, double m, Vec3 reflected = {0.0, 0.0, 1.0}) {
-  return [&subject, m, reflected](const std::vector<Vec3>& points) { return subject.a6_lobe_pdf(m, reflected, points); };
+  return [&subject, m, reflected](const std::vector<Vec3>& points) {
+    return subject.a6_lobe_pdf(m, reflected, points);
+  };
 }
 
 /// What the samples' shape says: below the horizon, half the azimuths, the exponent off by one.
@@ -64,8 +66,14 @@ inline std::string diagnose_lobe_samples(const std::vector<Vec3>& points, double
     negative_y += w.y < 0.0;
     not_unit += !(std::abs(glm::length(w) - 1.0) < 1e-9);
   }
-  if (not_unit > 0) return diagnosis(fmt::format("{} directions are not unit vectors: is sin(alpha) = sqrt(1 - cos^2(alpha))?", not_unit));
-  if (below > 0) return diagnosis(fmt::format("{} directions are below the lobe's horizon (z < 0 round +z): is cos(alpha) in [0, 1]?", below));
+  if (not_unit > 0)
+    return diagnosis(
+        fmt::format("{} directions are not unit vectors: is sin(alpha) = sqrt(1 - cos^2(alpha))?",
+                    not_unit));
+  if (below > 0)
+    return diagnosis(fmt::format(
+        "{} directions are below the lobe's horizon (z < 0 round +z): is cos(alpha) in [0, 1]?",
+        below));
   const double n = static_cast<double>(points.size());
   // phi in [0, pi) puts no sample at y < 0; a uniform phi puts half there (sd 0.5 / sqrt(n))
   if (static_cast<double>(negative_y) < 0.25 * n)
@@ -73,14 +81,18 @@ inline std::string diagnose_lobe_samples(const std::vector<Vec3>& points, double
   // E[cos alpha] = (m + 1) / (m + 2) for the lobe, m / (m + 1) for c = u^(1/m)
   const double se = std::sqrt(cos_alpha.variance() / n);
   const double right = (m + 1.0) / (m + 2.0), off_by_one = m / (m + 1.0);
-  if (std::abs(cos_alpha.mean() - off_by_one) < 4.0 * se && std::abs(cos_alpha.mean() - right) > 8.0 * se)
-    return diagnosis(fmt::format("the mean cos(alpha) is {:.4f}, that of cos(alpha) = u^(1/m) ({:.4f}), not {:.4f}: the "
-                                 "density of c = cos(alpha) is (m + 1) c^m, so its CDF is c^(m + 1): invert that",
-                                 cos_alpha.mean(), off_by_one, right));
+  if (std::abs(cos_alpha.mean() - off_by_one) < 4.0 * se &&
+      std::abs(cos_alpha.mean() - right) > 8.0 * se)
+    return diagnosis(fmt::format(
+        "the mean cos(alpha) is {:.4f}, that of cos(alpha) = u^(1/m) ({:.4f}), not {:.4f}: the "
+        "density of c = cos(alpha) is (m + 1) c^m, so its CDF is c^(m + 1): invert that",
+        cos_alpha.mean(), off_by_one, right));
   if (cos_alpha.mean() < right - 8.0 * se)
-    return diagnosis(fmt::format("the lobe is too wide (mean cos(alpha) {:.4f}, expected {:.4f})", cos_alpha.mean(), right));
+    return diagnosis(fmt::format("the lobe is too wide (mean cos(alpha) {:.4f}, expected {:.4f})",
+                                 cos_alpha.mean(), right));
   if (cos_alpha.mean() > right + 8.0 * se)
-    return diagnosis(fmt::format("the lobe is too narrow (mean cos(alpha) {:.4f}, expected {:.4f})", cos_alpha.mean(), right));
+    return diagnosis(fmt::format("the lobe is too narrow (mean cos(alpha) {:.4f}, expected {:.4f})",
+                                 cos_alpha.mean(), right));
   return "";
 }
 
@@ -119,9 +131,11 @@ TaskResult check_lobe_sampler(S&& subject, double m = k_a6_lobe_m) {
     if (std::abs(total - 1.0) >= 1e-6)
       diagnosis_text = diagnosis(fmt::format(
           "your pdf integrates to {:.3f}, not 1, and this test compares your samples with it: fix the pdf first "
-          "(its own test says how), then run this test again", total));
-    message += fmt::format("\nthe heat map of (observed - expected) / sqrt(expected) is in {}/{}/\n{}",
-                           failure_report_root().string(), name, diagnosis_text);
+          "(its own test says how), then run this test again",
+          total));
+    message +=
+        fmt::format("\nthe heat map of (observed - expected) / sqrt(expected) is in {}/{}/\n{}",
+                    failure_report_root().string(), name, diagnosis_text);
   }
   return {v.passed(), message};
 }
@@ -131,14 +145,18 @@ template <class S>
 TaskResult check_lobe_pdf_integral(S&& subject, double m = k_a6_lobe_m) {
   const double total = bulk_pdf_integral(lobe_pdf_of(subject, m), sampler_hemisphere_binning());
   const bool ok = std::abs(total - 1.0) < 1e-6;
-  std::string message = fmt::format("phong_lobe_pdf at m = {} integrates to {:.6f} over the hemisphere round r", m, total);
+  std::string message =
+      fmt::format("phong_lobe_pdf at m = {} integrates to {:.6f} over the hemisphere round r", m,
+                  total);
   if (!ok) {
     message += '\n';
     if (near(total, (m + 2.0) / (m + 1.0), 1e-4))
-      message += diagnosis("your pdf is (m + 2)/(m + 1) too large: (m + 2)/(2 pi) normalises the BRDF (with its "
-                           "cos(theta_i)); the lobe's pdf is (m + 1)/(2 pi) cos^m(alpha)");
+      message += diagnosis(
+          "your pdf is (m + 2)/(m + 1) too large: (m + 2)/(2 pi) normalises the BRDF (with its "
+          "cos(theta_i)); the lobe's pdf is (m + 1)/(2 pi) cos^m(alpha)");
     else if (near(total, 2.0 * k_pi / (m + 1.0), 1e-4))
-      message += diagnosis("your pdf integrates to 2 pi/(m + 1): the factor (m + 1)/(2 pi) is missing");
+      message +=
+          diagnosis("your pdf integrates to 2 pi/(m + 1): the factor (m + 1)/(2 pi) is missing");
     else
       message += diagnosis(fmt::format("a pdf integrates to 1: yours is {:.3f}x too large", total));
   }
@@ -167,13 +185,17 @@ TaskResult check_lobe_pdf_round_mirror(S&& subject, double m = k_a6_lobe_m) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double g = i < got.size() ? got[i] : std::nan("");
     if (!(std::abs(g - expected[i]) <= 1e-9 * expected[i] + 1e-300)) {
-      std::string message = fmt::format("phong_lobe_pdf round r = ({:.3f}, {:.3f}, {:.3f}) at w = ({:.3f}, {:.3f}, {:.3f}): "
-                                        "{:.6g}, expected {:.6g}", r.x, r.y, r.z, points[i].x, points[i].y, points[i].z,
-                                        g, expected[i]);
-      const double from_z = points[i].z > 0.0 ? (m + 1.0) / (2.0 * k_pi) * std::pow(points[i].z, m) : 0.0;
+      std::string message = fmt::format(
+          "phong_lobe_pdf round r = ({:.3f}, {:.3f}, {:.3f}) at w = ({:.3f}, {:.3f}, {:.3f}): "
+          "{:.6g}, expected {:.6g}",
+          r.x, r.y, r.z, points[i].x, points[i].y, points[i].z, g, expected[i]);
+      const double from_z =
+          points[i].z > 0.0 ? (m + 1.0) / (2.0 * k_pi) * std::pow(points[i].z, m) : 0.0;
       if (std::abs(g - from_z) <= 1e-9 * from_z + 1e-300)
-        message += '\n' + diagnosis("your pdf uses w.z, the angle to the normal: the lobe is round the mirror "
-                                    "direction, cos(alpha) = w . reflected");
+        message +=
+            '\n' + diagnosis(
+                       "your pdf uses w.z, the angle to the normal: the lobe is round the mirror "
+                       "direction, cos(alpha) = w . reflected");
       return {false, message};
     }
   }
@@ -190,19 +212,25 @@ TaskResult check_sharp_lobe_digits(S&& subject) {
   const std::vector<Vec2> u{{1.0 - 1e-9, 0.3}, {0.999999, 0.7}, {0.9, 0.1}, {0.5, 0.55}};
   const std::vector<Vec3> w = subject.a6_lobe_samples(m, u);
   for (std::size_t i = 0; i < u.size(); ++i) {
-    const long double one_minus_cos = -std::expm1(std::log(static_cast<long double>(u[i].x)) / (m + 1.0L));
+    const long double one_minus_cos =
+        -std::expm1(std::log(static_cast<long double>(u[i].x)) / (m + 1.0L));
     const long double sin_alpha = std::sqrt(one_minus_cos * (2.0L - one_minus_cos));
     const double got = i < w.size() ? std::sqrt(w[i].x * w[i].x + w[i].y * w[i].y) : std::nan("");
     const double length = i < w.size() ? glm::length(w[i]) : std::nan("");
     if (!(std::abs(length - 1.0) < 1e-12))
-      return {false, fmt::format("m = 1e4, u = ({}, {}): the direction has length {:.15g}, not 1", u[i].x, u[i].y, length)};
-    const double relative = std::abs(got - static_cast<double>(sin_alpha)) / static_cast<double>(sin_alpha);
+      return {false, fmt::format("m = 1e4, u = ({}, {}): the direction has length {:.15g}, not 1",
+                                 u[i].x, u[i].y, length)};
+    const double relative =
+        std::abs(got - static_cast<double>(sin_alpha)) / static_cast<double>(sin_alpha);
     if (!(relative < 1e-6))
-      return {false, fmt::format("m = 1e4, u0 = {:.9f}: sin(alpha) = {:.10g}, exact {:.10g} (relative error {:.2g})\n{}",
-                                 u[i].x, got, static_cast<double>(sin_alpha), relative,
-                                 diagnosis("sin(alpha) lost its digits: 1 - cos^2(alpha) cancels when cos(alpha) "
-                                           "is within 1e-13 of 1; compute 1 - cos(alpha) directly "
-                                           "(-expm1(log(u0) / (m + 1))) and sin = sqrt((1 - c)(1 + c))"))};
+      return {
+          false,
+          fmt::format(
+              "m = 1e4, u0 = {:.9f}: sin(alpha) = {:.10g}, exact {:.10g} (relative error {:.2g})\n{}",
+              u[i].x, got, static_cast<double>(sin_alpha), relative,
+              diagnosis("sin(alpha) lost its digits: 1 - cos^2(alpha) cancels when cos(alpha) "
+                        "is within 1e-13 of 1; compute 1 - cos(alpha) directly "
+                        "(-expm1(log(u0) / (m + 1))) and sin = sqrt((1 - c)(1 + c))"))};
   }
   return {true, "sin(alpha) within 1e-6 of exact at m = 1e4, u0 up to 1 - 1e-9"};
 }
@@ -234,7 +262,8 @@ TaskResult check_heuristic(S&& subject, A6Heuristic h) {
   for (const WeightCase& c : k_weight_cases) pairs.emplace_back(c.p_s, c.p_o);
   Rng rng(6, 2);
   for (int i = 0; i < 200; ++i) {
-    const double a = std::pow(10.0, 12.0 * rng.uniform() - 6.0), b = std::pow(10.0, 12.0 * rng.uniform() - 6.0);
+    const double a = std::pow(10.0, 12.0 * rng.uniform() - 6.0),
+                 b = std::pow(10.0, 12.0 * rng.uniform() - 6.0);
     pairs.emplace_back(a, b);
     pairs.emplace_back(b, a);
   }
@@ -249,28 +278,41 @@ TaskResult check_heuristic(S&& subject, A6Heuristic h) {
   }
   // 1e-12: the two weights' round-off is a few ulps each
   if (!(worst <= 1e-12))
-    return {false, fmt::format("{}: w({:.3g}, {:.3g}) + w({:.3g}, {:.3g}) = {:.6g}, not 1\n{}", name, pairs[worst_i].x,
-                               pairs[worst_i].y, pairs[worst_i].y, pairs[worst_i].x, at(worst_i) + at(worst_i + 1),
-                               diagnosis("the weights of one direction must sum to 1 (w_s + w_o = 1), or MIS is "
-                                         "biased: divide p_s (or p_s^2) by the sum over both strategies"))};
+    return {false,
+            fmt::format("{}: w({:.3g}, {:.3g}) + w({:.3g}, {:.3g}) = {:.6g}, not 1\n{}", name,
+                        pairs[worst_i].x, pairs[worst_i].y, pairs[worst_i].y, pairs[worst_i].x,
+                        at(worst_i) + at(worst_i + 1),
+                        diagnosis(
+                            "the weights of one direction must sum to 1 (w_s + w_o = 1), or MIS is "
+                            "biased: divide p_s (or p_s^2) by the sum over both strategies"))};
   for (std::size_t i = 0; i < k_weight_cases.size(); ++i) {
     const WeightCase& c = k_weight_cases[i];
     const double expected = h == A6Heuristic::power ? c.power : c.balance;
     if (!(std::abs(at(i) - expected) <= 1e-15 * expected)) {
-      std::string message = fmt::format("{}(p_s = {}, p_o = {}) = {:.17g}, expected {:.17g}", name, c.p_s, c.p_o, at(i), expected);
+      std::string message = fmt::format("{}(p_s = {}, p_o = {}) = {:.17g}, expected {:.17g}", name,
+                                        c.p_s, c.p_o, at(i), expected);
       if (std::isnan(at(i)))
-        message += '\n' + diagnosis("a weight is NaN: when both pdfs are 0 (a direction neither strategy can draw) "
-                                    "the weight is 0: guard the division");
+        message +=
+            '\n' +
+            diagnosis(
+                "a weight is NaN: when both pdfs are 0 (a direction neither strategy can draw) "
+                "the weight is 0: guard the division");
       else if (h == A6Heuristic::power && std::abs(at(i) - c.balance) <= 1e-15 * c.balance)
-        message += '\n' + diagnosis("your power heuristic gives the balance heuristic's weights: square both pdfs "
-                                    "(p_s^2 / (p_s^2 + p_o^2))");
+        message +=
+            '\n' +
+            diagnosis(
+                "your power heuristic gives the balance heuristic's weights: square both pdfs "
+                "(p_s^2 / (p_s^2 + p_o^2))");
       else if (h == A6Heuristic::balance && std::abs(at(i) - c.power) <= 1e-15 * c.power)
-        message += '\n' + diagnosis("your balance heuristic gives the power heuristic's weights: the balance "
-                                    "heuristic is p_s / (p_s + p_o), the pdfs not squared");
+        message +=
+            '\n' + diagnosis(
+                       "your balance heuristic gives the power heuristic's weights: the balance "
+                       "heuristic is p_s / (p_s + p_o), the pdfs not squared");
       return {false, message};
     }
   }
-  return {true, fmt::format("{}: the table's {} exact weights, and 200 pairs sum to 1", name, k_weight_cases.size())};
+  return {true, fmt::format("{}: the table's {} exact weights, and 200 pairs sum to 1", name,
+                            k_weight_cases.size())};
 }
 
 // ---------------------------------------------------------------- a6.3 MIS on the plates
@@ -324,8 +366,8 @@ inline std::vector<RunningStats> a6_region_stats(const std::vector<double>& valu
 
 /// The regions where one strategy wins by far (measured, 16384 spp): light sampling on the
 /// rough plate with the smallest light, BSDF sampling on the sharpest plate with the largest.
-inline constexpr std::size_t k_a6_light_region = 0;   // plate 0 (m = 10), light 0 (r = 0.03)
-inline constexpr std::size_t k_a6_bsdf_region = 15;   // plate 3 (m = 1e4), light 3 (r = 0.9)
+inline constexpr std::size_t k_a6_light_region = 0;  // plate 0 (m = 10), light 0 (r = 0.03)
+inline constexpr std::size_t k_a6_bsdf_region = 15;  // plate 3 (m = 1e4), light 3 (r = 0.9)
 
 /// The ratio of a region's mean to the reference's.
 inline double region_ratio(const std::vector<RunningStats>& s, std::size_t r) {
@@ -336,43 +378,53 @@ inline double region_ratio(const std::vector<RunningStats>& s, std::size_t r) {
 inline std::string diagnose_mis_regions(const std::vector<RunningStats>& s) {
   const double light = region_ratio(s, k_a6_light_region), bsdf = region_ratio(s, k_a6_bsdf_region);
   double low = 1.0, high = 1.0;
-  for (std::size_t r = 0; r < s.size(); ++r) low = std::min(low, region_ratio(s, r)), high = std::max(high, region_ratio(s, r));
+  for (std::size_t r = 0; r < s.size(); ++r)
+    low = std::min(low, region_ratio(s, r)), high = std::max(high, region_ratio(s, r));
   const auto text = [&](const char* what) {
-    return diagnosis(fmt::format("{} (where light sampling wins: {:.2f}x the reference; where BSDF sampling wins: {:.2f}x)",
-                                 what, light, bsdf));
+    return diagnosis(fmt::format(
+        "{} (where light sampling wins: {:.2f}x the reference; where BSDF sampling wins: {:.2f}x)",
+        what, light, bsdf));
   };
-  if (!std::isfinite(light) || !std::isfinite(bsdf)) return diagnosis("a region's mean is not finite: a division by a pdf of 0?");
+  if (!std::isfinite(light) || !std::isfinite(bsdf))
+    return diagnosis("a region's mean is not finite: a division by a pdf of 0?");
   // Measured with the known-wrong variants of diagnosis_test.cpp (64 spp, the first failing
   // seed): a BSDF sample weighted by w(p_l, p_b) gives 1.14-1.42x and 0.02x, one added with
   // weight 1 1.14-1.42x and 1.00x, a light sample added with weight 1 1.01x and 1.92x, p_l per
   // unit area 150x and 1.01x. Region 0's mean has a standard error of about 1.3%: 1.08 is six.
   if (light > 1.08 && bsdf < 0.5)
-    return text("the BSDF sample is weighted as if it were the light sample: its weight is w(p_b, p_l), not w(p_l, p_b)");
+    return text(
+        "the BSDF sample is weighted as if it were the light sample: its weight is w(p_b, p_l), not w(p_l, p_b)");
   if (light < 0.5 && bsdf > 1.08)
-    return text("the light sample is weighted as if it were the BSDF sample: its weight is w(p_l, p_b), not w(p_b, p_l)");
+    return text(
+        "the light sample is weighted as if it were the BSDF sample: its weight is w(p_l, p_b), not w(p_b, p_l)");
   if (high > 8.0 || low < 0.05)
-    return text("some regions are off by a large factor: are both pdfs of a weight in the same measure? p_l must be "
-                "per steradian (p_A r^2 / cos(theta_y), with the 1/N of picking the light), as p_b is; a p_A per unit "
-                "area is ~r^2 / cos(theta_y) times smaller");
+    return text(
+        "some regions are off by a large factor: are both pdfs of a weight in the same measure? p_l must be "
+        "per steradian (p_A r^2 / cos(theta_y), with the 1/N of picking the light), as p_b is; a p_A per unit "
+        "area is ~r^2 / cos(theta_y) times smaller");
   if (light > 1.08 && near(bsdf, 1.0, 0.05))
-    return text("light is counted twice where light sampling wins: the BSDF sample that hits a light is added with "
-                "weight 1; weight it by w_b = w(p_b, p_l), so that w_l + w_b = 1");
+    return text(
+        "light is counted twice where light sampling wins: the BSDF sample that hits a light is added with "
+        "weight 1; weight it by w_b = w(p_b, p_l), so that w_l + w_b = 1");
   if (near(light, 1.0, 0.05) && bsdf > 1.08)
-    return text("light is counted twice where BSDF sampling wins: the light sample is added with weight 1; weight it "
-                "by w_l = w(p_l, p_b), so that w_l + w_b = 1");
-  return text("the weights of a direction must sum to 1 (w_l(w) + w_b(w) = 1 for every w), each the heuristic of its "
-              "own strategy's pdf against the other's, both per steradian");
+    return text(
+        "light is counted twice where BSDF sampling wins: the light sample is added with weight 1; weight it "
+        "by w_l = w(p_l, p_b), so that w_l + w_b = 1");
+  return text(
+      "the weights of a direction must sum to 1 (w_l(w) + w_b(w) = 1 for every w), each the heuristic of its "
+      "own strategy's pdf against the other's, both per steradian");
 }
 
 /// One seed of the region test: the Sidak-combined p-value of the 16 regions' z-tests against
 /// the reference (standard error from the region's samples and the reference's own); each
 /// region's signed z in `z`, in plate_regions's order, when given.
-inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_t& worst, double& worst_z,
-                                  std::vector<double>* signed_z = nullptr) {
+inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_t& worst,
+                                  double& worst_z, std::vector<double>* signed_z = nullptr) {
   double p_min = 1.0;
   for (std::size_t r = 0; r < s.size(); ++r) {
     const double n = static_cast<double>(s[r].count());
-    const double se = std::sqrt(s[r].variance() / n + k_a6_reference[r].standard_error * k_a6_reference[r].standard_error);
+    const double se = std::sqrt(s[r].variance() / n + k_a6_reference[r].standard_error *
+                                                          k_a6_reference[r].standard_error);
     const double p = z_test_p_value(s[r].mean(), k_a6_reference[r].mean, se);
     if (signed_z != nullptr) signed_z->push_back(region_z(s[r].mean(), k_a6_reference[r].mean, se));
     if (!(p >= p_min)) {
@@ -386,8 +438,10 @@ inline double mis_regions_p_value(const std::vector<RunningStats>& s, std::size_
 
 /// The 16 regions' statistics of one seed's render by MIS with `heuristic`.
 template <class S>
-std::vector<RunningStats> mis_region_stats_at(S& subject, A6Strategy heuristic, std::uint64_t seed) {
-  return a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed), k_a6_spp);
+std::vector<RunningStats> mis_region_stats_at(S& subject, A6Strategy heuristic,
+                                              std::uint64_t seed) {
+  return a6_region_stats(subject.a6_regions(heuristic, k_a6_width, k_a6_height, k_a6_spp, seed),
+                         k_a6_spp);
 }
 
 /// The error map of the plates: a row per plate (sharpest last), a column per light (largest
@@ -418,17 +472,20 @@ RegionResult check_mis_regions(S&& subject, A6Strategy heuristic) {
     return p;
   });
   const char* name = heuristic == A6Strategy::mis_power ? "power" : "balance";
-  std::string message = fmt::format("MIS ({} heuristic) on Veach's plates, {} x {}, {} spp, 16 plate x light regions: {}",
-                                    name, k_a6_width, k_a6_height, k_a6_spp, v.describe());
+  std::string message = fmt::format(
+      "MIS ({} heuristic) on Veach's plates, {} x {}, {} spp, 16 plate x light regions: {}", name,
+      k_a6_width, k_a6_height, k_a6_spp, v.describe());
   const auto done = [&](bool passed) {
     static_cast<TaskResult&>(result) = {passed, message};
     return result;
   };
   if (v.passed()) return done(true);
   const PlateRegion r = plate_regions(make_veach_plates(), k_a6_width, k_a6_height)[worst];
-  message += fmt::format("\nthe worst region, plate {} (m = {}) x light {} (radius {}), is {:.1f} standard errors from the "
-                         "reference\n{}", r.plate, k_plate_exponents[r.plate], r.light, k_plate_light_radii[r.light],
-                         worst_z, diagnose_mis_regions(failed));
+  message += fmt::format(
+      "\nthe worst region, plate {} (m = {}) x light {} (radius {}), is {:.1f} standard errors from the "
+      "reference\n{}",
+      r.plate, k_plate_exponents[r.plate], r.light, k_plate_light_radii[r.light], worst_z,
+      diagnose_mis_regions(failed));
   return done(false);
 }
 
@@ -442,22 +499,22 @@ struct StrategyVariances {
   double light, bsdf;
 };
 inline constexpr std::array<StrategyVariances, 16> k_a6_single_strategy_variance{{
-    {0.000430171, 4.26238},     // plate 0, light 0
-    {0.000183507, 2.47716},     // plate 0, light 1
-    {0.000183436, 2.36412},     // plate 0, light 2
-    {0.000422745, 0.589545},    // plate 0, light 3
-    {0.0465052, 29.8985},       // plate 1, light 0
-    {0.0527801, 8.23177},       // plate 1, light 1
-    {0.0523722, 0.896313},      // plate 1, light 2
-    {0.0349262, 0.0497037},     // plate 1, light 3
-    {3.06042, 139.423},         // plate 2, light 0
-    {3.6809, 15.7575},          // plate 2, light 1
-    {2.95322, 1.51899},         // plate 2, light 2
-    {1.07994, 0.0261288},       // plate 2, light 3
-    {92.7774, 322.148},         // plate 3, light 0
-    {86.2116, 37.1409},         // plate 3, light 1
-    {64.0357, 3.218},           // plate 3, light 2
-    {21.918, 0.00751597},       // plate 3, light 3
+    {0.000430171, 4.26238},   // plate 0, light 0
+    {0.000183507, 2.47716},   // plate 0, light 1
+    {0.000183436, 2.36412},   // plate 0, light 2
+    {0.000422745, 0.589545},  // plate 0, light 3
+    {0.0465052, 29.8985},     // plate 1, light 0
+    {0.0527801, 8.23177},     // plate 1, light 1
+    {0.0523722, 0.896313},    // plate 1, light 2
+    {0.0349262, 0.0497037},   // plate 1, light 3
+    {3.06042, 139.423},       // plate 2, light 0
+    {3.6809, 15.7575},        // plate 2, light 1
+    {2.95322, 1.51899},       // plate 2, light 2
+    {1.07994, 0.0261288},     // plate 2, light 3
+    {92.7774, 322.148},       // plate 3, light 0
+    {86.2116, 37.1409},       // plate 3, light 1
+    {64.0357, 3.218},         // plate 3, light 2
+    {21.918, 0.00751597},     // plate 3, light 3
 }};
 
 /// The factor by which MIS's variance may exceed the better single strategy's in a region at
@@ -471,7 +528,8 @@ inline constexpr double k_a6_variance_factor = 4.0;
 /// One seed of the efficiency test: the largest ratio over the regions of MIS's sample
 /// variance to the better single strategy's, and where it is.
 template <class S>
-double mis_variance_ratio(S&& subject, A6Strategy heuristic, std::uint64_t seed, std::size_t& where) {
+double mis_variance_ratio(S&& subject, A6Strategy heuristic, std::uint64_t seed,
+                          std::size_t& where) {
   const std::vector<RunningStats> mis = mis_region_stats_at(subject, heuristic, seed);
   double worst = 0.0;
   for (std::size_t r = 0; r < mis.size(); ++r) {
@@ -493,16 +551,19 @@ TaskResult check_mis_efficiency(S&& subject, A6Strategy heuristic) {
     ratios[i] = mis_variance_ratio(subject, heuristic, k_grading_seeds[i], where[i]);
     failures += !(ratios[i] <= k_a6_variance_factor);
   }
-  std::string message = fmt::format("the largest ratio of MIS's variance to the better single strategy's at equal rays, "
-                                    "over the 16 regions: {:.3g}, {:.3g}, {:.3g} at the 3 seeds (at most {} passes)",
-                                    ratios[0], ratios[1], ratios[2], k_a6_variance_factor);
+  std::string message = fmt::format(
+      "the largest ratio of MIS's variance to the better single strategy's at equal rays, "
+      "over the 16 regions: {:.3g}, {:.3g}, {:.3g} at the 3 seeds (at most {} passes)",
+      ratios[0], ratios[1], ratios[2], k_a6_variance_factor);
   if (failures < 2) return {true, message};
   const std::size_t r = where[0];
-  message += '\n' + diagnosis(fmt::format(
-      "in region plate {} x light {} MIS is {:.0f}x noisier than the better strategy alone: each sample's weight must "
-      "fall where its own strategy's f Le cos / p is large (p small): w_s = heuristic(p_s, p_other), both pdfs per "
-      "steradian (a p_A per unit area for p_l leaves the light sample almost no weight)",
-      r / 4, r % 4, ratios[0]));
+  message +=
+      '\n' +
+      diagnosis(fmt::format(
+          "in region plate {} x light {} MIS is {:.0f}x noisier than the better strategy alone: each sample's weight must "
+          "fall where its own strategy's f Le cos / p is large (p small): w_s = heuristic(p_s, p_other), both pdfs per "
+          "steradian (a p_A per unit area for p_l leaves the light sample almost no weight)",
+          r / 4, r % 4, ratios[0]));
   return {false, message};
 }
 

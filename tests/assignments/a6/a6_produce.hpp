@@ -26,7 +26,8 @@ namespace mcrt::testing::assignment {
 /// One camera sample of the plates: the light's Le if the camera ray meets one, else what
 /// `reflected(hit, wo, rng, count)` estimates at the plate point (0 on the background).
 template <class Reflected>
-double plates_sample(const VeachPlates& scene, const Ray& ray, Rng& rng, RayCount& count, Reflected&& reflected) {
+double plates_sample(const VeachPlates& scene, const Ray& ray, Rng& rng, RayCount& count,
+                     Reflected&& reflected) {
   ++count.rays;
   const std::optional<Hit> hit = closest_hit(scene, ray);
   if (!hit) return 0.0;
@@ -38,7 +39,8 @@ double plates_sample(const VeachPlates& scene, const Ray& ray, Rng& rng, RayCoun
 /// render: region by region, rows, pixels, then spp samples, sample s of pixel p on the stream
 /// (p, s) of `seed`.
 template <class Reflected>
-std::vector<double> plates_region_samples(int width, int height, int spp, std::uint64_t seed, Reflected&& reflected) {
+std::vector<double> plates_region_samples(int width, int height, int spp, std::uint64_t seed,
+                                          Reflected&& reflected) {
   const VeachPlates scene = make_veach_plates();
   const Camera camera(scene.camera, width, height);
   std::vector<double> values;
@@ -47,7 +49,8 @@ std::vector<double> plates_region_samples(int width, int height, int spp, std::u
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x)
         for (int s = 0; s < spp; ++s) {
-          Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * width + x), static_cast<std::uint64_t>(s)));
+          Rng rng(seed, stream_index(static_cast<std::uint64_t>(y * width + x),
+                                     static_cast<std::uint64_t>(s)));
           const Ray ray = camera.generate_ray(x, y, rng.uniform2());
           values.push_back(plates_sample(scene, ray, rng, count, reflected));
         }
@@ -57,24 +60,26 @@ std::vector<double> plates_region_samples(int width, int height, int spp, std::u
 /// The region samples of `strategy` with `mis(scene, hit, wo, heuristic, rng, count)` as MIS:
 /// light or BSDF sampling average two samples, MIS takes one of each (two rays either way).
 template <class Mis>
-std::vector<double> a6_region_samples(Mis&& mis, A6Strategy strategy, int width, int height, int spp,
-                                      std::uint64_t seed) {
+std::vector<double> a6_region_samples(Mis&& mis, A6Strategy strategy, int width, int height,
+                                      int spp, std::uint64_t seed) {
   const VeachPlates scene = make_veach_plates();
-  return plates_region_samples(width, height, spp, seed, [&](const Hit& hit, const Vec3& wo, Rng& rng, RayCount& count) {
-    switch (strategy) {
-      case A6Strategy::light: {
-        const double a = estimate_light_sampling(scene, hit, wo, rng, count);
-        return 0.5 * (a + estimate_light_sampling(scene, hit, wo, rng, count));
-      }
-      case A6Strategy::bsdf: {
-        const double a = estimate_bsdf_sampling(scene, hit, wo, rng, count);
-        return 0.5 * (a + estimate_bsdf_sampling(scene, hit, wo, rng, count));
-      }
-      case A6Strategy::mis_balance: return mis(scene, hit, wo, MisHeuristic::balance, rng, count);
-      case A6Strategy::mis_power: break;
-    }
-    return mis(scene, hit, wo, MisHeuristic::power, rng, count);
-  });
+  return plates_region_samples(
+      width, height, spp, seed, [&](const Hit& hit, const Vec3& wo, Rng& rng, RayCount& count) {
+        switch (strategy) {
+          case A6Strategy::light: {
+            const double a = estimate_light_sampling(scene, hit, wo, rng, count);
+            return 0.5 * (a + estimate_light_sampling(scene, hit, wo, rng, count));
+          }
+          case A6Strategy::bsdf: {
+            const double a = estimate_bsdf_sampling(scene, hit, wo, rng, count);
+            return 0.5 * (a + estimate_bsdf_sampling(scene, hit, wo, rng, count));
+          }
+          case A6Strategy::mis_balance:
+            return mis(scene, hit, wo, MisHeuristic::balance, rng, count);
+          case A6Strategy::mis_power: break;
+        }
+        return mis(scene, hit, wo, MisHeuristic::power, rng, count);
+      });
 }
 
 /// The glass a6.4 is graded on: index `ior` inside, air outside, tint 1, the exact Fresnel
@@ -88,7 +93,8 @@ inline Material a6_glass(double ior) {
 
 /// `sample(material, wo, n, entering, u)` (sample_dielectric or a known-wrong one) at each query.
 template <class Sample>
-std::vector<DielectricAnswer> dielectric_answers(Sample&& sample, double ior, const std::vector<DielectricQuery>& queries) {
+std::vector<DielectricAnswer> dielectric_answers(Sample&& sample, double ior,
+                                                 const std::vector<DielectricQuery>& queries) {
   const Material glass = a6_glass(ior);
   std::vector<DielectricAnswer> out;
   out.reserve(queries.size());

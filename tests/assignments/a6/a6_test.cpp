@@ -46,13 +46,15 @@ TEST(A6, Task2PowerHeuristicIsExact) {
 
 TEST(A6, Task3BalanceRegionsAgreeWithTheReference) {
   const RegionResult r = check_mis_regions(subject(), A6Strategy::mis_balance);
-  report_error_map(r.map, "a6_balance_regions");  // the checker's: from the samples, in its report folder
+  report_error_map(r.map,
+                   "a6_balance_regions");  // the checker's: from the samples, in its report folder
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 TEST(A6, Task3PowerRegionsAgreeWithTheReference) {
   const RegionResult r = check_mis_regions(subject(), A6Strategy::mis_power);
-  report_error_map(r.map, "a6_power_regions");  // the checker's: from the samples, in its report folder
+  report_error_map(r.map,
+                   "a6_power_regions");  // the checker's: from the samples, in its report folder
   EXPECT_TRUE(r.passed) << r.message;
 }
 

@@ -26,9 +26,12 @@ std::uint64_t geometric_ray_count(std::uint64_t n, int k) {
 TEST(A3Hidden, RayCountsAtOtherBranches) {
   const int n = k_hidden_branches;
   for (int k : {0, 1, 2, 3}) {
-    const std::uint64_t rays =
-        subject().recursive_single(0.3, 1.0, Vec3(0.0), {1.0, 0.0, 0.0}, n, k, k_hidden_seed, static_cast<std::uint64_t>(k)).rays;
-    EXPECT_EQ(rays, geometric_ray_count(n, k)) << diagnose_ray_count(rays, n, k, geometric_ray_count(n, k));
+    const std::uint64_t rays = subject()
+                                   .recursive_single(0.3, 1.0, Vec3(0.0), {1.0, 0.0, 0.0}, n, k,
+                                                     k_hidden_seed, static_cast<std::uint64_t>(k))
+                                   .rays;
+    EXPECT_EQ(rays, geometric_ray_count(n, k))
+        << diagnose_ray_count(rays, n, k, geometric_ray_count(n, k));
   }
 }
 

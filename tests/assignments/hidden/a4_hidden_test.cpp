@@ -19,7 +19,10 @@ inline constexpr double k_hidden_emission = 1.25;  // of the black furnace
 inline constexpr double k_hidden_albedo = 0.8;     // of the furnace at depth 5
 
 TEST(A4Hidden, BlackFurnaceGivesTheEmissionExactly) {
-  EXPECT_DOUBLE_EQ(subject().path_single(0.0, k_hidden_emission, {0.0, 0.0, -1.0}, 6, k_hidden_seed + 1, 9).radiance,
+  EXPECT_DOUBLE_EQ(subject()
+                       .path_single(0.0, k_hidden_emission, {0.0, 0.0, -1.0}, 6, k_hidden_seed + 1,
+                                    9)
+                       .radiance,
                    k_hidden_emission)
       << "a black furnace reflects nothing: the path is its emission";
 }
@@ -30,8 +33,10 @@ TEST(A4Hidden, FurnaceMeanAtAnotherAlbedo) {
   RunningStats s;
   for (double x : values) s.add(x);
   const double expected = furnace_radiance(a, 1.0, 5);
-  const double p = z_test_p_value(s.mean(), expected, std::sqrt(furnace_radiance_variance(a, 1.0, 5) / 20000.0));
-  EXPECT_GE(p, 1e-6) << "mean " << s.mean() << ", expected " << expected << "\n" << diagnose_mean_ratio(s.mean(), expected);
+  const double p =
+      z_test_p_value(s.mean(), expected, std::sqrt(furnace_radiance_variance(a, 1.0, 5) / 20000.0));
+  EXPECT_GE(p, 1e-6) << "mean " << s.mean() << ", expected " << expected << "\n"
+                     << diagnose_mean_ratio(s.mean(), expected);
 }
 
 }  // namespace

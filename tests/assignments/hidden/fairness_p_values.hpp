@@ -44,7 +44,8 @@ template <class S>
 double a5_hidden_roulette_p_value(S& s, double q, double albedo, std::uint64_t seed) {
   const Roulette roulette{0, RoulettePolicy::fixed, q, 0.05};
   RunningStats L;
-  for (const FurnacePath& p : s.a5_paths(roulette_estimator(roulette), albedo, 20000, seed, 5)) L.add(p.radiance);
+  for (const FurnacePath& p : s.a5_paths(roulette_estimator(roulette), albedo, 20000, seed, 5))
+    L.add(p.radiance);
   return z_test_p_value(L.mean(), furnace_radiance_untruncated(albedo, 1.0),
                         std::sqrt(furnace_roulette_variance(albedo, 1.0, 0, q) / 20000.0));
 }
@@ -58,22 +59,34 @@ struct HiddenGrid {
 
 /// Seed `seed`'s point of a grid of `points`: consecutive seeds go round the grid, so a run of
 /// n x points seeds measures every point at n seeds.
-inline std::size_t grid_point(std::uint64_t seed, std::size_t points) { return static_cast<std::size_t>(seed % points); }
+inline std::size_t grid_point(std::uint64_t seed, std::size_t points) {
+  return static_cast<std::size_t>(seed % points);
+}
 
 template <class S>
 std::vector<MeasuredCheck> hidden_statistical_checks(S& s) {
   return {
-      {"a4_hidden_furnace", "a4-hidden.A4Hidden.FurnaceMeanAtAnotherAlbedo", k_hidden_alpha, false, false,
-       [&s](std::uint64_t seed) { return a4_hidden_furnace_p_value(furnace_of_subject(s), k_hidden_a4_albedo, seed); }},
-      {"a5_hidden_roulette", "a5-hidden.A5Hidden.RouletteFromVertexZero", k_hidden_alpha, false, false,
+      {"a4_hidden_furnace", "a4-hidden.A4Hidden.FurnaceMeanAtAnotherAlbedo", k_hidden_alpha, false,
+       false,
        [&s](std::uint64_t seed) {
-         return a5_hidden_roulette_p_value(s, k_hidden_a5_roulette_q, k_hidden_a5_roulette_albedo, seed);
+         return a4_hidden_furnace_p_value(furnace_of_subject(s), k_hidden_a4_albedo, seed);
+       }},
+      {"a5_hidden_roulette", "a5-hidden.A5Hidden.RouletteFromVertexZero", k_hidden_alpha, false,
+       false,
+       [&s](std::uint64_t seed) {
+         return a5_hidden_roulette_p_value(s, k_hidden_a5_roulette_q, k_hidden_a5_roulette_albedo,
+                                           seed);
        }},
       // a6_hidden_test.cpp, LobeAtMThreeFollowsItsPdf: a6.1's chi-square at m = 3, graded as the
       // public one (two of three seeds below 5e-4)
-      {"a6_hidden_lobe_m3", "a6-hidden.A6Hidden.LobeAtMThreeFollowsItsPdf", k_seed_alpha, true, false,
-       [&s, probability = bulk_cell_probabilities(lobe_pdf_of(s, 3.0), sampler_hemisphere_binning())](std::uint64_t seed) {
-         return chi_square_points_test(lobe_samples_at(s, 3.0, seed), probability, sampler_hemisphere_binning()).p_value;
+      {"a6_hidden_lobe_m3", "a6-hidden.A6Hidden.LobeAtMThreeFollowsItsPdf", k_seed_alpha, true,
+       false,
+       [&s,
+        probability = bulk_cell_probabilities(lobe_pdf_of(s, 3.0), sampler_hemisphere_binning())](
+           std::uint64_t seed) {
+         return chi_square_points_test(lobe_samples_at(s, 3.0, seed), probability,
+                                       sampler_hemisphere_binning())
+             .p_value;
        }},
   };
 }
@@ -85,18 +98,20 @@ template <class S>
 std::vector<MeasuredCheck> hidden_variant_checks(S& s, const HiddenGrid& grid) {
   std::vector<MeasuredCheck> checks;
   if (!grid.a4_albedo.empty())
-    checks.push_back({"a4_hidden_furnace_variants", "a4-hidden.A4Hidden.FurnaceMeanAtAnotherAlbedo", k_hidden_alpha,
-                      false, false, [&s, grid](std::uint64_t seed) {
+    checks.push_back({"a4_hidden_furnace_variants", "a4-hidden.A4Hidden.FurnaceMeanAtAnotherAlbedo",
+                      k_hidden_alpha, false, false, [&s, grid](std::uint64_t seed) {
                         const double a = grid.a4_albedo[grid_point(seed, grid.a4_albedo.size())];
                         return a4_hidden_furnace_p_value(furnace_of_subject(s), a, seed);
                       }});
   if (grid.a5_points() > 0)
-    checks.push_back({"a5_hidden_roulette_variants", "a5-hidden.A5Hidden.RouletteFromVertexZero", k_hidden_alpha,
-                      false, false, [&s, grid](std::uint64_t seed) {
-                        const std::size_t i = grid_point(seed, grid.a5_points());
-                        return a5_hidden_roulette_p_value(s, grid.a5_roulette_q[i % grid.a5_roulette_q.size()],
-                                                          grid.a5_roulette_albedo[i / grid.a5_roulette_q.size()], seed);
-                      }});
+    checks.push_back(
+        {"a5_hidden_roulette_variants", "a5-hidden.A5Hidden.RouletteFromVertexZero", k_hidden_alpha,
+         false, false, [&s, grid](std::uint64_t seed) {
+           const std::size_t i = grid_point(seed, grid.a5_points());
+           return a5_hidden_roulette_p_value(s, grid.a5_roulette_q[i % grid.a5_roulette_q.size()],
+                                             grid.a5_roulette_albedo[i / grid.a5_roulette_q.size()],
+                                             seed);
+         }});
   return checks;
 }
 

@@ -39,7 +39,8 @@ bool writable_by_subject(const std::string& folder) {
   const passwd* user = ::getpwnam("nobody");
   struct stat st {};
   if (user == nullptr || ::stat(folder.c_str(), &st) != 0) return false;
-  return st.st_uid == user->pw_uid || (st.st_mode & S_IWOTH) || (st.st_gid == user->pw_gid && (st.st_mode & S_IWGRP));
+  return st.st_uid == user->pw_uid || (st.st_mode & S_IWOTH) ||
+         (st.st_gid == user->pw_gid && (st.st_mode & S_IWGRP));
 }
 
 }  // namespace
@@ -48,8 +49,10 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   const std::string folder = report_folder();
   if (::geteuid() == 0 && !folder.empty() && writable_by_subject(folder)) {
-    std::fprintf(stderr, "checker: the report folder %s is writable by nobody, who runs the subject: refused\n",
-                 folder.c_str());
+    std::fprintf(
+        stderr,
+        "checker: the report folder %s is writable by nobody, who runs the subject: refused\n",
+        folder.c_str());
     return 1;
   }
   ::testing::AddGlobalTestEnvironment(new SubjectEnvironment);

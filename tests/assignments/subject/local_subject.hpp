@@ -32,15 +32,22 @@ namespace mcrt::testing::assignment {
 /// a1's producer with the student's functions.
 inline auto student_a1() {
   return a1_producer([](std::uint64_t n, Rng& rng) { return estimate_disk_area(n, rng); },
-                     [](int k, std::uint64_t n, Rng& rng) { return estimate_ball_volume(k, n, rng); },
+                     [](int k, std::uint64_t n, Rng& rng) {
+                       return estimate_ball_volume(k, n, rng);
+                     },
                      [](int k, std::uint64_t n, Rng& rng) { return count_in_ball(k, n, rng); },
-                     [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) { return monte_carlo(f, s, n, rng); },
-                     [](const auto& f, const Segment& s, std::uint64_t n) { return trapezoid(f, s, n); });
+                     [](const auto& f, const Segment& s, std::uint64_t n, Rng& rng) {
+                       return monte_carlo(f, s, n, rng);
+                     },
+                     [](const auto& f, const Segment& s, std::uint64_t n) {
+                       return trapezoid(f, s, n);
+                     });
 }
 
 /// a5's producer with the student's three estimators.
 inline auto student_a5() {
-  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance, estimate_nee_radiance);
+  return a5_producer(estimate_path_radiance_roulette, estimate_importance_path_radiance,
+                     estimate_nee_radiance);
 }
 
 struct LocalSubject {
@@ -51,12 +58,12 @@ struct LocalSubject {
   double a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream) const {
     return student_a1().a1_ball(k, n, seed, stream);
   }
-  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
-                                            std::uint64_t stream) const {
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls,
+                                            std::uint64_t seed, std::uint64_t stream) const {
     return student_a1().a1_ball_counts(calls, seed, stream);
   }
-  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
-                                  std::uint64_t stream) const {
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
+                                  std::uint64_t seed, std::uint64_t stream) const {
     return student_a1().a1_monte_carlo(f, param, s, n, seed, stream);
   }
   double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n) const {
@@ -72,8 +79,14 @@ struct LocalSubject {
         case SamplerKind::uniform_hemisphere: out.push_back(sample_uniform_hemisphere(x)); break;
         case SamplerKind::cosine_hemisphere: out.push_back(sample_cosine_hemisphere(x)); break;
         case SamplerKind::uniform_sphere: out.push_back(sample_uniform_sphere(x)); break;
-        case SamplerKind::unit_disk: { const Vec2 d = sample_uniform_disk(x); out.emplace_back(d.x, d.y, 0.0); break; }
-        case SamplerKind::uniform_cone: out.push_back(sample_uniform_cone(x, k_a2_cone_cos_theta_max)); break;
+        case SamplerKind::unit_disk: {
+          const Vec2 d = sample_uniform_disk(x);
+          out.emplace_back(d.x, d.y, 0.0);
+          break;
+        }
+        case SamplerKind::uniform_cone:
+          out.push_back(sample_uniform_cone(x, k_a2_cone_cos_theta_max));
+          break;
       }
     }
     return out;
@@ -89,21 +102,24 @@ struct LocalSubject {
         case SamplerKind::cosine_hemisphere: out.push_back(cosine_hemisphere_pdf(w.z)); break;
         case SamplerKind::uniform_sphere: out.push_back(uniform_sphere_pdf()); break;
         case SamplerKind::unit_disk: out.push_back(uniform_disk_pdf()); break;
-        case SamplerKind::uniform_cone: out.push_back(uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max)); break;
+        case SamplerKind::uniform_cone:
+          out.push_back(uniform_cone_pdf(w.z, k_a2_cone_cos_theta_max));
+          break;
       }
     }
     return out;
   }
 
   /// a3: one call of incident_radiance (A3Producer::recursive_single).
-  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
-                              std::uint64_t seed, std::uint64_t stream) const {
-    return a3_producer(incident_radiance).recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n,
+                              int k, std::uint64_t seed, std::uint64_t stream) const {
+    return a3_producer(incident_radiance)
+        .recursive_single(albedo, emission, origin, direction, n, k, seed, stream);
   }
 
   /// a3: furnace samples of incident_radiance (A3Producer::recursive_furnace).
-  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
-                                        std::uint64_t block) const {
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples,
+                                        std::uint64_t seed, std::uint64_t block) const {
     return a3_producer(incident_radiance).recursive_furnace(albedo, n, k, samples, seed, block);
   }
 
@@ -116,7 +132,8 @@ struct LocalSubject {
   }
 
   /// a4: n furnace paths of estimate_path_radiance (furnace_values).
-  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block) const {
+  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed,
+                                   std::uint64_t block) const {
     return furnace_values(estimate_path_radiance<Rng>, albedo, depth, n, seed, block);
   }
 
@@ -126,9 +143,10 @@ struct LocalSubject {
   }
 
   /// a4: one furnace path from the centre along `direction` (furnace_path).
-  PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
-                         std::uint64_t stream) const {
-    return furnace_path(estimate_path_radiance<Rng>, albedo, emission, direction, depth, seed, stream);
+  PathSample path_single(double albedo, double emission, Vec3 direction, int depth,
+                         std::uint64_t seed, std::uint64_t stream) const {
+    return furnace_path(estimate_path_radiance<Rng>, albedo, emission, direction, depth, seed,
+                        stream);
   }
 
   /// a4.2: the student's estimate_pixel, as a4_produce.hpp's producers take it.
@@ -137,12 +155,16 @@ struct LocalSubject {
       return estimate_pixel(camera, x, y, spp, radiance, rng);
     };
   }
-  std::vector<double> pixel_exact(int spp, std::uint64_t seed) const { return pixel_exact_values(student_pixel(), spp, seed); }
-  std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) const {
+  std::vector<double> pixel_exact(int spp, std::uint64_t seed) const {
+    return pixel_exact_values(student_pixel(), spp, seed);
+  }
+  std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed,
+                               std::uint64_t stream) const {
     return pixel_ray_directions(student_pixel(), x, y, spp, seed, stream);
   }
   /// a4.2 on the furnace's path law (not the student's a4.1: a4.2 is graded on its own).
-  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed) const {
+  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp,
+                                    std::uint64_t seed) const {
     return pixel_furnace_values(student_pixel(), albedo, depth, size, spp, seed);
   }
 
@@ -151,14 +173,17 @@ struct LocalSubject {
                                     std::uint64_t block) const {
     return student_a5().a5_paths(e, albedo, n, seed, block);
   }
-  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
-                       std::uint64_t stream) const {
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction,
+                       std::uint64_t seed, std::uint64_t stream) const {
     return student_a5().a5_single(e, albedo, emission, direction, seed, stream);
   }
-  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed) const {
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp,
+                                 std::uint64_t seed) const {
     return student_a5().a5_regions(e, lamp_parts, size, spp, seed);
   }
-  std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed) const { return student_a5().a5_wall(e, n, seed); }
+  std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed) const {
+    return student_a5().a5_wall(e, n, seed);
+  }
 
   /// a6.1: the lobe's local sampler at each u, its pdf round `reflected` at each point.
   std::vector<Vec3> a6_lobe_samples(double m, const std::vector<Vec2>& u) const {
@@ -179,27 +204,27 @@ struct LocalSubject {
     std::vector<double> out;
     out.reserve(pairs.size());
     for (const Vec2& p : pairs)
-      out.push_back(h == A6Heuristic::power ? power_heuristic(p.x, p.y) : balance_heuristic(p.x, p.y));
+      out.push_back(h == A6Heuristic::power ? power_heuristic(p.x, p.y)
+                                            : balance_heuristic(p.x, p.y));
     return out;
   }
 
   /// a6.3: every sample of the plates' 16 regions by `strategy` (a6_region_samples), with the
   /// student's estimate_mis.
-  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed) const {
+  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp,
+                                 std::uint64_t seed) const {
     return a6_region_samples(
-        [](const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng, RayCount& count) {
-          return estimate_mis(scene, hit, wo, h, rng, count);
-        },
+        [](const VeachPlates& scene, const Hit& hit, const Vec3& wo, MisHeuristic h, Rng& rng,
+           RayCount& count) { return estimate_mis(scene, hit, wo, h, rng, count); },
         strategy, width, height, spp, seed);
   }
 
   /// a6.4: the student's sample_dielectric at each query, for glass of index `ior`.
-  std::vector<DielectricAnswer> a6_dielectric(double ior, const std::vector<DielectricQuery>& queries) const {
-    return dielectric_answers(
-        [](const Material& m, const Vec3& wo, const Vec3& n, bool entering, double u) {
-          return sample_dielectric(m, wo, n, entering, u);
-        },
-        ior, queries);
+  std::vector<DielectricAnswer> a6_dielectric(double ior,
+                                              const std::vector<DielectricQuery>& queries) const {
+    return dielectric_answers([](const Material& m, const Vec3& wo, const Vec3& n, bool entering,
+                                 double u) { return sample_dielectric(m, wo, n, entering, u); },
+                              ior, queries);
   }
 
   void stop() {}  // nothing runs apart from this process

@@ -51,7 +51,8 @@ bool write_all_bytes(int fd, const void* data, std::size_t size) {
   return true;
 }
 
-bool write_frame(int fd, const std::string& token, const std::string& name, const std::vector<double>& values) {
+bool write_frame(int fd, const std::string& token, const std::string& name,
+                 const std::vector<double>& values) {
   const std::string header = fmt::format("{} {} {}\n", token, name, values.size());
   return write_all_bytes(fd, header.data(), header.size()) &&
          write_all_bytes(fd, values.data(), values.size() * sizeof(double));
@@ -59,7 +60,8 @@ bool write_frame(int fd, const std::string& token, const std::string& name, cons
 
 bool write_error_frame(int fd, const std::string& token, const std::string& message) {
   const std::string header = fmt::format("{} error {}\n", token, message.size());
-  return write_all_bytes(fd, header.data(), header.size()) && write_all_bytes(fd, message.data(), message.size());
+  return write_all_bytes(fd, header.data(), header.size()) &&
+         write_all_bytes(fd, message.data(), message.size());
 }
 
 bool FrameReader::fill(double deadline, std::string& problem) {
@@ -95,7 +97,8 @@ bool FrameReader::fill(double deadline, std::string& problem) {
   }
 }
 
-bool FrameReader::read_line(std::string& line, std::size_t limit, double seconds, std::string& problem) {
+bool FrameReader::read_line(std::string& line, std::size_t limit, double seconds,
+                            std::string& problem) {
   const double deadline = seconds < 0.0 ? -1.0 : now_seconds() + seconds;
   for (;;) {
     const auto first = buffer_.begin() + static_cast<std::ptrdiff_t>(begin_);
@@ -125,7 +128,8 @@ bool FrameReader::read_bytes(char* out, std::size_t size, double deadline, std::
   return true;
 }
 
-bool FrameReader::read_frame(const std::string& token, Frame& frame, double seconds, std::string& problem) {
+bool FrameReader::read_frame(const std::string& token, Frame& frame, double seconds,
+                             std::string& problem) {
   const double deadline = seconds < 0.0 ? -1.0 : now_seconds() + seconds;
   std::string line;
   if (!read_line(line, k_max_header_bytes, seconds, problem)) return false;
@@ -161,7 +165,8 @@ bool FrameReader::read_frame(const std::string& token, Frame& frame, double seco
     return false;
   }
   frame.values.resize(count);
-  if (!read_bytes(reinterpret_cast<char*>(frame.values.data()), count * sizeof(double), deadline, problem)) {
+  if (!read_bytes(reinterpret_cast<char*>(frame.values.data()), count * sizeof(double), deadline,
+                  problem)) {
     problem = "a frame cut short: " + problem;
     return false;
   }

@@ -36,7 +36,8 @@ struct Frame {
 bool write_all_bytes(int fd, const void* data, std::size_t size);
 
 /// Writes one frame of numbers; false when the other side is gone.
-bool write_frame(int fd, const std::string& token, const std::string& name, const std::vector<double>& values);
+bool write_frame(int fd, const std::string& token, const std::string& name,
+                 const std::vector<double>& values);
 
 /// Writes one "error" frame carrying `message`.
 bool write_error_frame(int fd, const std::string& token, const std::string& message);

@@ -24,8 +24,8 @@ namespace {
 /// Points $MCRT_SUBJECT at the fake subject through a link named `mode` (its name is its mode).
 void use_fake(const char* mode) {
   struct Folder {  // removed when the test program ends
-    std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("mcrt-fake-subject-" + std::to_string(::getpid()));
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("mcrt-fake-subject-" + std::to_string(::getpid()));
     Folder() { std::filesystem::create_directories(path); }
     ~Folder() {
       std::error_code ignored;
@@ -54,7 +54,8 @@ std::string failure_of(const char* mode, std::vector<double>* answer = nullptr) 
 
 void expect_broken(const char* mode, const std::string& words) {
   const std::string message = failure_of(mode);
-  EXPECT_NE(message.find("gave no valid answer to request a2_samples"), std::string::npos) << mode << ": " << message;
+  EXPECT_NE(message.find("gave no valid answer to request a2_samples"), std::string::npos)
+      << mode << ": " << message;
   EXPECT_NE(message.find(words), std::string::npos) << mode << ": " << message;
 }
 
@@ -64,15 +65,23 @@ TEST(SubjectProtocol, AWellBehavedSubjectIsHeard) {
   EXPECT_EQ(answer, (std::vector<double>{3.0, 0.25, 0.5}));
 }
 
-TEST(SubjectProtocol, AFrameWithAnotherTokenIsRefused) { expect_broken("forged", "without this run's token"); }
+TEST(SubjectProtocol, AFrameWithAnotherTokenIsRefused) {
+  expect_broken("forged", "without this run's token");
+}
 
-TEST(SubjectProtocol, AStrayPrintIsRefused) { expect_broken("garbage", "without this run's token"); }
+TEST(SubjectProtocol, AStrayPrintIsRefused) {
+  expect_broken("garbage", "without this run's token");
+}
 
-TEST(SubjectProtocol, AnEndMidRequestFailsTheRequest) { expect_broken("exit", "closed its output"); }
+TEST(SubjectProtocol, AnEndMidRequestFailsTheRequest) {
+  expect_broken("exit", "closed its output");
+}
 
 TEST(SubjectProtocol, AShortFrameFailsTheRequest) { expect_broken("short", "cut short"); }
 
-TEST(SubjectProtocol, AHangFailsTheRequestInTime) { expect_broken("hang", "no answer within the time limit"); }
+TEST(SubjectProtocol, AHangFailsTheRequestInTime) {
+  expect_broken("hang", "no answer within the time limit");
+}
 
 TEST(SubjectProtocol, AnErrorAnswerCarriesItsMessage) {
   EXPECT_EQ(failure_of("error"), "not implemented: a2.1 sample_uniform_hemisphere");
@@ -104,7 +113,8 @@ TEST(SubjectProtocol, StopKillsWhatTheSubjectLeftInItsGroup) {
   EXPECT_TRUE(running(child));
   subject.stop();
   // SIGKILL is delivered at once, but the process may take a moment to leave the running state
-  for (int i = 0; i < 100 && running(child); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int i = 0; i < 100 && running(child); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_FALSE(running(child)) << "the subject's child " << child << " outlived stop()";
   if (running(child)) ::kill(child, SIGKILL);  // not left behind by a failure
 }

@@ -29,7 +29,8 @@ std::string student_text(std::string text) {
   if (text.size() > 300) text = text.substr(0, 300) + "...";
   for (char& c : text)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  for (std::size_t at = text.find("DIAGNOSIS"); at != std::string::npos; at = text.find("DIAGNOSIS", at))
+  for (std::size_t at = text.find("DIAGNOSIS"); at != std::string::npos;
+       at = text.find("DIAGNOSIS", at))
     text.replace(at, 9, "diagnosis");
   return text;
 }
@@ -54,7 +55,8 @@ void RemoteSubject::start() {
   ::signal(SIGPIPE, SIG_IGN);  // a subject gone while we write: write() fails, we say so
   int requests[2], answers[2];
   if (::pipe2(requests, O_CLOEXEC) != 0 || ::pipe2(answers, O_CLOEXEC) != 0)
-    throw std::runtime_error(fmt::format("cannot make the subject's pipes: {}", std::strerror(errno)));
+    throw std::runtime_error(
+        fmt::format("cannot make the subject's pipes: {}", std::strerror(errno)));
   std::vector<std::string> words;
   if (!launcher.empty()) words.push_back(launcher);
   words.push_back(program);
@@ -63,7 +65,8 @@ void RemoteSubject::start() {
   argv.push_back(nullptr);
   const bool launcher_makes_group = !launcher.empty() && ::geteuid() == 0;
   const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error(fmt::format("cannot start the subject: {}", std::strerror(errno)));
+  if (pid < 0)
+    throw std::runtime_error(fmt::format("cannot start the subject: {}", std::strerror(errno)));
   if (pid == 0) {
     // sandbox-run, as root, starts a session of its own (setsid would fork were this process
     // a group leader already); otherwise the child makes its own process group, to be killed whole
@@ -76,7 +79,8 @@ void RemoteSubject::start() {
     std::string path_entry = std::string("PATH=") + (path != nullptr ? path : "/usr/bin:/bin");
     char* environment[] = {path_entry.data(), nullptr};
     ::execve(argv[0], argv.data(), environment);
-    const std::string message = fmt::format("checker: cannot run {}: {}\n", argv[0], std::strerror(errno));
+    const std::string message =
+        fmt::format("checker: cannot run {}: {}\n", argv[0], std::strerror(errno));
     (void)!::write(STDERR_FILENO, message.data(), message.size());
     ::_exit(127);
   }
@@ -88,7 +92,8 @@ void RemoteSubject::start() {
   reader_.emplace(from_subject_);
   token_ = random_token();
   const std::string first = token_ + "\n";
-  if (!write_all_bytes(to_subject_, first.data(), first.size())) broken("start", "it did not take its token");
+  if (!write_all_bytes(to_subject_, first.data(), first.size()))
+    broken("start", "it did not take its token");
 }
 
 void RemoteSubject::stop() {
@@ -106,36 +111,42 @@ void RemoteSubject::stop() {
 
 void RemoteSubject::broken(const std::string& name, const std::string& problem) {
   stop();
-  throw std::runtime_error(fmt::format("the subject program (your code) gave no valid answer to request {}: {}",
-                                       name, problem));
+  throw std::runtime_error(
+      fmt::format("the subject program (your code) gave no valid answer to request {}: {}", name,
+                  problem));
 }
 
-std::vector<double> RemoteSubject::call(const std::string& name, const std::vector<double>& params) {
+std::vector<double> RemoteSubject::call(const std::string& name,
+                                        const std::vector<double>& params) {
   if (pid_ < 0) start();
-  if (!write_frame(to_subject_, token_, name, params)) broken(name, "it stopped reading its requests (it ended or crashed)");
+  if (!write_frame(to_subject_, token_, name, params))
+    broken(name, "it stopped reading its requests (it ended or crashed)");
   Frame frame;
   std::string problem;
   if (!reader_->read_frame(token_, frame, answer_seconds(), problem)) broken(name, problem);
   if (frame.name == "error") throw std::runtime_error(student_text(frame.text));
-  if (frame.name != "ok") broken(name, fmt::format("an answer named {:?} instead of ok or error", frame.name));
+  if (frame.name != "ok")
+    broken(name, fmt::format("an answer named {:?} instead of ok or error", frame.name));
   return std::move(frame.values);
 }
 
 double RemoteSubject::a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream) {
-  const std::vector<double> answer = call(k_request_a1_disk, {as_number(n), as_number(seed), as_number(stream)});
+  const std::vector<double> answer =
+      call(k_request_a1_disk, {as_number(n), as_number(seed), as_number(stream)});
   if (answer.size() != 1) broken(k_request_a1_disk, "not one estimate");
   return answer[0];
 }
 
 double RemoteSubject::a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream) {
-  const std::vector<double> answer =
-      call(k_request_a1_ball, {static_cast<double>(k), as_number(n), as_number(seed), as_number(stream)});
+  const std::vector<double> answer = call(k_request_a1_ball, {static_cast<double>(k), as_number(n),
+                                                              as_number(seed), as_number(stream)});
   if (answer.size() != 1) broken(k_request_a1_ball, "not one estimate");
   return answer[0];
 }
 
-std::vector<std::uint64_t> RemoteSubject::a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls,
-                                                         std::uint64_t seed, std::uint64_t stream) {
+std::vector<std::uint64_t> RemoteSubject::a1_ball_counts(
+    const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
+    std::uint64_t stream) {
   std::vector<double> params{as_number(seed), as_number(stream)};
   for (const auto& [k, n] : calls) params.insert(params.end(), {as_number(k), as_number(n)});
   const std::vector<double> answer = call(k_request_a1_ball_counts, params);
@@ -148,27 +159,35 @@ std::vector<std::uint64_t> RemoteSubject::a1_ball_counts(const std::vector<std::
   return counts;
 }
 
-std::vector<std::uint64_t> RemoteSubject::predicted_rays(const std::vector<std::array<int, 2>>& calls) {
+std::vector<std::uint64_t> RemoteSubject::predicted_rays(
+    const std::vector<std::array<int, 2>>& calls) {
   std::vector<double> params;
-  for (const auto& [n, k] : calls) params.insert(params.end(), {static_cast<double>(n), static_cast<double>(k)});
+  for (const auto& [n, k] : calls)
+    params.insert(params.end(), {static_cast<double>(n), static_cast<double>(k)});
   const std::vector<double> answer = call(k_request_a3_predicted_rays, params);
-  if (answer.size() != 2 * calls.size()) broken(k_request_a3_predicted_rays, "not one count (two halves) per call");
+  if (answer.size() != 2 * calls.size())
+    broken(k_request_a3_predicted_rays, "not one count (two halves) per call");
   std::vector<std::uint64_t> counts;
   for (std::size_t i = 0; i < answer.size(); i += 2) {
     const double high = answer[i], low = answer[i + 1];
-    if (!(high >= 0.0 && high < 0x1p32 && low >= 0.0 && low < 0x1p32) || high != static_cast<double>(static_cast<std::uint32_t>(high)) ||
+    if (!(high >= 0.0 && high < 0x1p32 && low >= 0.0 && low < 0x1p32) ||
+        high != static_cast<double>(static_cast<std::uint32_t>(high)) ||
         low != static_cast<double>(static_cast<std::uint32_t>(low)))
-      broken(k_request_a3_predicted_rays, "a half of a count that is not a whole number below 2^32");
+      broken(k_request_a3_predicted_rays,
+             "a half of a count that is not a whole number below 2^32");
     counts.push_back((static_cast<std::uint64_t>(high) << 32) | static_cast<std::uint64_t>(low));
   }
   return counts;
 }
 
-EstimateAndError RemoteSubject::a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
-                                               std::uint64_t seed, std::uint64_t stream) {
-  const std::vector<double> answer = call(k_request_a1_monte_carlo, {static_cast<double>(f), param, s.lower, s.upper, as_number(n),
-                                                                     as_number(seed), as_number(stream)});
-  if (answer.size() != 2) broken(k_request_a1_monte_carlo, "not an estimate and its standard error");
+EstimateAndError RemoteSubject::a1_monte_carlo(A1Integrand f, double param, Segment s,
+                                               std::uint64_t n, std::uint64_t seed,
+                                               std::uint64_t stream) {
+  const std::vector<double> answer =
+      call(k_request_a1_monte_carlo, {static_cast<double>(f), param, s.lower, s.upper, as_number(n),
+                                      as_number(seed), as_number(stream)});
+  if (answer.size() != 2)
+    broken(k_request_a1_monte_carlo, "not an estimate and its standard error");
   return {answer[0], answer[1]};
 }
 
@@ -199,20 +218,23 @@ std::vector<double> RemoteSubject::pdf_values(SamplerKind kind, const std::vecto
   return answer;
 }
 
-PathSample RemoteSubject::recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
-                                           std::uint64_t seed, std::uint64_t stream) {
+PathSample RemoteSubject::recursive_single(double albedo, double emission, Vec3 origin,
+                                           Vec3 direction, int n, int k, std::uint64_t seed,
+                                           std::uint64_t stream) {
   const std::vector<double> answer =
-      call(k_request_a3_single, {albedo, emission, origin.x, origin.y, origin.z, direction.x, direction.y, direction.z,
-                                 static_cast<double>(n), static_cast<double>(k), as_number(seed), as_number(stream)});
+      call(k_request_a3_single,
+           {albedo, emission, origin.x, origin.y, origin.z, direction.x, direction.y, direction.z,
+            static_cast<double>(n), static_cast<double>(k), as_number(seed), as_number(stream)});
   if (answer.size() != 2 || !(answer[1] >= 0.0 && answer[1] < 0x1p53))
     broken(k_request_a3_single, "not one radiance and one ray count");
   return {answer[0], static_cast<std::uint64_t>(answer[1])};
 }
 
-std::vector<double> RemoteSubject::recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
-                                                     std::uint64_t block) {
-  std::vector<double> answer = call(k_request_a3_furnace, {albedo, static_cast<double>(n), static_cast<double>(k),
-                                                           static_cast<double>(samples), as_number(seed), as_number(block)});
+std::vector<double> RemoteSubject::recursive_furnace(double albedo, int n, int k, int samples,
+                                                     std::uint64_t seed, std::uint64_t block) {
+  std::vector<double> answer =
+      call(k_request_a3_furnace, {albedo, static_cast<double>(n), static_cast<double>(k),
+                                  static_cast<double>(samples), as_number(seed), as_number(block)});
   if (answer.size() != static_cast<std::size_t>(samples))
     broken(k_request_a3_furnace, fmt::format("{} numbers for {} samples", answer.size(), samples));
   return answer;
@@ -220,56 +242,67 @@ std::vector<double> RemoteSubject::recursive_furnace(double albedo, int n, int k
 
 std::vector<double> RemoteSubject::path_furnace(double albedo, int depth, int n, std::uint64_t seed,
                                                 std::uint64_t block) {
-  std::vector<double> answer = call(k_request_a4_furnace, {albedo, static_cast<double>(depth), static_cast<double>(n),
-                                                           as_number(seed), as_number(block)});
+  std::vector<double> answer =
+      call(k_request_a4_furnace, {albedo, static_cast<double>(depth), static_cast<double>(n),
+                                  as_number(seed), as_number(block)});
   if (answer.size() != static_cast<std::size_t>(n))
     broken(k_request_a4_furnace, fmt::format("{} numbers for {} paths", answer.size(), n));
   return answer;
 }
 
 std::vector<double> RemoteSubject::path_sky(int size, int depth, int spp, std::uint64_t seed) {
-  std::vector<double> answer = call(k_request_a4_sky, {static_cast<double>(size), static_cast<double>(depth),
-                                                       static_cast<double>(spp), as_number(seed)});
-  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * static_cast<std::size_t>(spp);
+  std::vector<double> answer =
+      call(k_request_a4_sky, {static_cast<double>(size), static_cast<double>(depth),
+                              static_cast<double>(spp), as_number(seed)});
+  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) *
+                        static_cast<std::size_t>(spp);
   if (answer.size() != expected)
     broken(k_request_a4_sky, fmt::format("{} numbers for {} samples", answer.size(), expected));
   return answer;
 }
 
-PathSample RemoteSubject::path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
-                                      std::uint64_t stream) {
+PathSample RemoteSubject::path_single(double albedo, double emission, Vec3 direction, int depth,
+                                      std::uint64_t seed, std::uint64_t stream) {
   const std::vector<double> answer =
-      call(k_request_a4_single, {albedo, emission, direction.x, direction.y, direction.z, static_cast<double>(depth),
-                                 as_number(seed), as_number(stream)});
-  if (answer.size() != 2 || !(answer[1] >= 0.0)) broken(k_request_a4_single, "not one radiance and one ray count");
+      call(k_request_a4_single, {albedo, emission, direction.x, direction.y, direction.z,
+                                 static_cast<double>(depth), as_number(seed), as_number(stream)});
+  if (answer.size() != 2 || !(answer[1] >= 0.0))
+    broken(k_request_a4_single, "not one radiance and one ray count");
   return {answer[0], static_cast<std::uint64_t>(answer[1])};
 }
 
 // a4.2's answers: 4 numbers a pixel of the 8 x 6 pixel camera, 3 a ray, 2 a furnace pixel.
 std::vector<double> RemoteSubject::pixel_exact(int spp, std::uint64_t seed) {
-  std::vector<double> answer = call(k_request_a4_pixel_exact, {static_cast<double>(spp), as_number(seed)});
-  if (answer.size() != 4u * 8u * 6u) broken(k_request_a4_pixel_exact, fmt::format("{} numbers for 48 pixels", answer.size()));
+  std::vector<double> answer =
+      call(k_request_a4_pixel_exact, {static_cast<double>(spp), as_number(seed)});
+  if (answer.size() != 4u * 8u * 6u)
+    broken(k_request_a4_pixel_exact, fmt::format("{} numbers for 48 pixels", answer.size()));
   return answer;
 }
 
-std::vector<Vec3> RemoteSubject::pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream) {
-  const std::vector<double> answer = call(k_request_a4_pixel_rays, {static_cast<double>(x), static_cast<double>(y),
-                                                                    static_cast<double>(spp), as_number(seed), as_number(stream)});
+std::vector<Vec3> RemoteSubject::pixel_rays(int x, int y, int spp, std::uint64_t seed,
+                                            std::uint64_t stream) {
+  const std::vector<double> answer =
+      call(k_request_a4_pixel_rays, {static_cast<double>(x), static_cast<double>(y),
+                                     static_cast<double>(spp), as_number(seed), as_number(stream)});
   if (answer.size() != 3u * static_cast<std::size_t>(spp))
     broken(k_request_a4_pixel_rays, fmt::format("{} numbers for {} rays", answer.size(), spp));
   return unflatten3(answer.data(), answer.size());
 }
 
-std::vector<double> RemoteSubject::pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed) {
-  std::vector<double> answer = call(k_request_a4_pixel_furnace, {albedo, static_cast<double>(depth), static_cast<double>(size),
-                                                                 static_cast<double>(spp), as_number(seed)});
+std::vector<double> RemoteSubject::pixel_furnace(double albedo, int depth, int size, int spp,
+                                                 std::uint64_t seed) {
+  std::vector<double> answer = call(k_request_a4_pixel_furnace,
+                                    {albedo, static_cast<double>(depth), static_cast<double>(size),
+                                     static_cast<double>(spp), as_number(seed)});
   if (answer.size() != 2u * static_cast<std::size_t>(size) * static_cast<std::size_t>(size))
-    broken(k_request_a4_pixel_furnace, fmt::format("{} numbers for {} pixels", answer.size(), size * size));
+    broken(k_request_a4_pixel_furnace,
+           fmt::format("{} numbers for {} pixels", answer.size(), size * size));
   return answer;
 }
 
-std::vector<FurnacePath> RemoteSubject::a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
-                                                 std::uint64_t block) {
+std::vector<FurnacePath> RemoteSubject::a5_paths(const A5Estimator& e, double albedo, int n,
+                                                 std::uint64_t seed, std::uint64_t block) {
   std::vector<double> params;
   append(params, e);
   params.insert(params.end(), {albedo, static_cast<double>(n), as_number(seed), as_number(block)});
@@ -278,31 +311,34 @@ std::vector<FurnacePath> RemoteSubject::a5_paths(const A5Estimator& e, double al
     broken(k_request_a5_paths, fmt::format("{} numbers for {} paths", answer.size(), n));
   std::vector<FurnacePath> paths(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    if (!(answer[2 * i + 1] >= 0.0 && answer[2 * i + 1] < 0x1p53)) broken(k_request_a5_paths, "a ray count out of range");
+    if (!(answer[2 * i + 1] >= 0.0 && answer[2 * i + 1] < 0x1p53))
+      broken(k_request_a5_paths, "a ray count out of range");
     paths[i] = {answer[2 * i], static_cast<std::uint64_t>(answer[2 * i + 1])};
   }
   return paths;
 }
 
-PathSample RemoteSubject::a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction,
-                                    std::uint64_t seed, std::uint64_t stream) {
+PathSample RemoteSubject::a5_single(const A5Estimator& e, double albedo, double emission,
+                                    Vec3 direction, std::uint64_t seed, std::uint64_t stream) {
   std::vector<double> params;
   append(params, e);
-  params.insert(params.end(), {albedo, emission, direction.x, direction.y, direction.z, as_number(seed), as_number(stream)});
+  params.insert(params.end(), {albedo, emission, direction.x, direction.y, direction.z,
+                               as_number(seed), as_number(stream)});
   const std::vector<double> answer = call(k_request_a5_single, params);
   if (answer.size() != 2 || !(answer[1] >= 0.0 && answer[1] < 0x1p53))
     broken(k_request_a5_single, "not one radiance and one ray count");
   return {answer[0], static_cast<std::uint64_t>(answer[1])};
 }
 
-std::vector<double> RemoteSubject::a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp,
-                                              std::uint64_t seed) {
+std::vector<double> RemoteSubject::a5_regions(const A5Estimator& e, int lamp_parts, int size,
+                                              int spp, std::uint64_t seed) {
   std::vector<double> params;
   append(params, e);
-  params.insert(params.end(), {static_cast<double>(lamp_parts), static_cast<double>(size), static_cast<double>(spp),
-                               as_number(seed)});
+  params.insert(params.end(), {static_cast<double>(lamp_parts), static_cast<double>(size),
+                               static_cast<double>(spp), as_number(seed)});
   std::vector<double> answer = call(k_request_a5_regions, params);
-  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * static_cast<std::size_t>(spp);
+  const auto expected = static_cast<std::size_t>(size) * static_cast<std::size_t>(size) *
+                        static_cast<std::size_t>(spp);
   if (answer.size() != expected)
     broken(k_request_a5_regions, fmt::format("{} numbers for {} samples", answer.size(), expected));
   return answer;
@@ -324,17 +360,20 @@ std::vector<Vec3> RemoteSubject::a6_lobe_samples(double m, const std::vector<Vec
   for (const Vec2& x : u) params.insert(params.end(), {x.x, x.y});
   const std::vector<double> answer = call(k_request_a6_lobe_samples, params);
   if (answer.size() != 3 * u.size())
-    broken(k_request_a6_lobe_samples, fmt::format("{} numbers for {} points", answer.size(), u.size()));
+    broken(k_request_a6_lobe_samples,
+           fmt::format("{} numbers for {} points", answer.size(), u.size()));
   return unflatten3(answer.data(), answer.size());
 }
 
-std::vector<double> RemoteSubject::a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points) {
+std::vector<double> RemoteSubject::a6_lobe_pdf(double m, Vec3 reflected,
+                                               const std::vector<Vec3>& points) {
   std::vector<double> params{m, reflected.x, reflected.y, reflected.z};
   const std::vector<double> flat = flatten(points);
   params.insert(params.end(), flat.begin(), flat.end());
   std::vector<double> answer = call(k_request_a6_lobe_pdf, params);
   if (answer.size() != points.size())
-    broken(k_request_a6_lobe_pdf, fmt::format("{} numbers for {} points", answer.size(), points.size()));
+    broken(k_request_a6_lobe_pdf,
+           fmt::format("{} numbers for {} points", answer.size(), points.size()));
   return answer;
 }
 
@@ -343,14 +382,17 @@ std::vector<double> RemoteSubject::a6_weights(A6Heuristic h, const std::vector<V
   for (const Vec2& p : pairs) params.insert(params.end(), {p.x, p.y});
   std::vector<double> answer = call(k_request_a6_weights, params);
   if (answer.size() != pairs.size())
-    broken(k_request_a6_weights, fmt::format("{} numbers for {} pairs", answer.size(), pairs.size()));
+    broken(k_request_a6_weights,
+           fmt::format("{} numbers for {} pairs", answer.size(), pairs.size()));
   return answer;
 }
 
-std::vector<double> RemoteSubject::a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed) {
-  std::vector<double> answer = call(k_request_a6_regions, {static_cast<double>(strategy), static_cast<double>(width),
-                                                           static_cast<double>(height), static_cast<double>(spp),
-                                                           as_number(seed)});
+std::vector<double> RemoteSubject::a6_regions(A6Strategy strategy, int width, int height, int spp,
+                                              std::uint64_t seed) {
+  std::vector<double> answer =
+      call(k_request_a6_regions,
+           {static_cast<double>(strategy), static_cast<double>(width), static_cast<double>(height),
+            static_cast<double>(spp), as_number(seed)});
   std::size_t expected = 0;
   for (const PlateRegion& r : plate_regions(make_veach_plates(), width, height))
     expected += static_cast<std::size_t>(r.pixel_count()) * static_cast<std::size_t>(spp);
@@ -359,14 +401,17 @@ std::vector<double> RemoteSubject::a6_regions(A6Strategy strategy, int width, in
   return answer;
 }
 
-std::vector<DielectricAnswer> RemoteSubject::a6_dielectric(double ior, const std::vector<DielectricQuery>& queries) {
+std::vector<DielectricAnswer> RemoteSubject::a6_dielectric(
+    double ior, const std::vector<DielectricQuery>& queries) {
   std::vector<double> params{ior};
   params.reserve(1 + k_dielectric_query_numbers * queries.size());
   for (const DielectricQuery& q : queries)
-    for (double x : {q.wo.x, q.wo.y, q.wo.z, q.n.x, q.n.y, q.n.z, q.entering ? 1.0 : 0.0, q.u}) params.push_back(x);
+    for (double x : {q.wo.x, q.wo.y, q.wo.z, q.n.x, q.n.y, q.n.z, q.entering ? 1.0 : 0.0, q.u})
+      params.push_back(x);
   const std::vector<double> answer = call(k_request_a6_dielectric, params);
   if (answer.size() != k_dielectric_answer_numbers * queries.size())
-    broken(k_request_a6_dielectric, fmt::format("{} numbers for {} queries", answer.size(), queries.size()));
+    broken(k_request_a6_dielectric,
+           fmt::format("{} numbers for {} queries", answer.size(), queries.size()));
   std::vector<DielectricAnswer> out;
   out.reserve(queries.size());
   for (std::size_t i = 0; i < answer.size(); i += k_dielectric_answer_numbers) {

@@ -37,35 +37,41 @@ class RemoteSubject {
 
   double a1_disk(std::uint64_t n, std::uint64_t seed, std::uint64_t stream);
   double a1_ball(int k, std::uint64_t n, std::uint64_t seed, std::uint64_t stream);
-  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls, std::uint64_t seed,
-                                            std::uint64_t stream);
-  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n, std::uint64_t seed,
-                                  std::uint64_t stream);
+  std::vector<std::uint64_t> a1_ball_counts(const std::vector<std::array<std::uint64_t, 2>>& calls,
+                                            std::uint64_t seed, std::uint64_t stream);
+  EstimateAndError a1_monte_carlo(A1Integrand f, double param, Segment s, std::uint64_t n,
+                                  std::uint64_t seed, std::uint64_t stream);
   double a1_trapezoid(A1Integrand f, double param, Segment s, std::uint64_t n);
   std::vector<Vec3> samples(SamplerKind kind, const std::vector<Vec2>& u);
   std::vector<double> pdf_values(SamplerKind kind, const std::vector<Vec3>& points);
-  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n, int k,
-                              std::uint64_t seed, std::uint64_t stream);
-  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples, std::uint64_t seed,
-                                        std::uint64_t block);
+  PathSample recursive_single(double albedo, double emission, Vec3 origin, Vec3 direction, int n,
+                              int k, std::uint64_t seed, std::uint64_t stream);
+  std::vector<double> recursive_furnace(double albedo, int n, int k, int samples,
+                                        std::uint64_t seed, std::uint64_t block);
   std::vector<std::uint64_t> predicted_rays(const std::vector<std::array<int, 2>>& calls);
-  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed, std::uint64_t block);
+  std::vector<double> path_furnace(double albedo, int depth, int n, std::uint64_t seed,
+                                   std::uint64_t block);
   std::vector<double> path_sky(int size, int depth, int spp, std::uint64_t seed);
-  PathSample path_single(double albedo, double emission, Vec3 direction, int depth, std::uint64_t seed,
-                         std::uint64_t stream);
+  PathSample path_single(double albedo, double emission, Vec3 direction, int depth,
+                         std::uint64_t seed, std::uint64_t stream);
   std::vector<double> pixel_exact(int spp, std::uint64_t seed);
   std::vector<Vec3> pixel_rays(int x, int y, int spp, std::uint64_t seed, std::uint64_t stream);
-  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp, std::uint64_t seed);
-  std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed, std::uint64_t block);
-  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction, std::uint64_t seed,
-                       std::uint64_t stream);
-  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp, std::uint64_t seed);
+  std::vector<double> pixel_furnace(double albedo, int depth, int size, int spp,
+                                    std::uint64_t seed);
+  std::vector<FurnacePath> a5_paths(const A5Estimator& e, double albedo, int n, std::uint64_t seed,
+                                    std::uint64_t block);
+  PathSample a5_single(const A5Estimator& e, double albedo, double emission, Vec3 direction,
+                       std::uint64_t seed, std::uint64_t stream);
+  std::vector<double> a5_regions(const A5Estimator& e, int lamp_parts, int size, int spp,
+                                 std::uint64_t seed);
   std::vector<double> a5_wall(const A5Estimator& e, int n, std::uint64_t seed);
   std::vector<Vec3> a6_lobe_samples(double m, const std::vector<Vec2>& u);
   std::vector<double> a6_lobe_pdf(double m, Vec3 reflected, const std::vector<Vec3>& points);
   std::vector<double> a6_weights(A6Heuristic h, const std::vector<Vec2>& pairs);
-  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp, std::uint64_t seed);
-  std::vector<DielectricAnswer> a6_dielectric(double ior, const std::vector<DielectricQuery>& queries);
+  std::vector<double> a6_regions(A6Strategy strategy, int width, int height, int spp,
+                                 std::uint64_t seed);
+  std::vector<DielectricAnswer> a6_dielectric(double ior,
+                                              const std::vector<DielectricQuery>& queries);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

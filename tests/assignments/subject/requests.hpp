@@ -12,7 +12,13 @@
 namespace mcrt::testing::assignment {
 
 /// a2's five samplers (each with its pdf).
-enum class SamplerKind { uniform_hemisphere, cosine_hemisphere, uniform_sphere, unit_disk, uniform_cone };
+enum class SamplerKind {
+  uniform_hemisphere,
+  cosine_hemisphere,
+  uniform_sphere,
+  unit_disk,
+  uniform_cone
+};
 /// The cone a2.5's sampler is graded on: half-angle acos(0.75) = 41.4 degrees, wide enough that
 /// its 21 x 11 cells are not slivers, narrow enough that a hemisphere sampler fails it.
 inline constexpr double k_a2_cone_cos_theta_max = 0.75;
@@ -64,7 +70,7 @@ inline constexpr const char* k_request_a1_trapezoid = "a1_trapezoid";
 struct A5Estimator {
   enum Kind { roulette, importance, nee };
   Kind kind = roulette;
-  int min_depth = 0;   ///< roulette, nee: the Roulette
+  int min_depth = 0;  ///< roulette, nee: the Roulette
   int policy = 0;
   double q = 0.0;
   double floor = 0.0;
@@ -78,9 +84,9 @@ inline constexpr std::size_t k_a5_estimator_numbers = 8;
 inline void append(std::vector<double>& out, const A5Estimator& e) {
   // One push_back per number: insert() of a list into an empty vector trips a false
   // -Wstringop-overflow in g++ 12.
-  for (double x : {static_cast<double>(e.kind), static_cast<double>(e.min_depth), static_cast<double>(e.policy),
-                   e.q, e.floor, static_cast<double>(e.max_depth), static_cast<double>(e.pdf_kind),
-                   static_cast<double>(e.pdf_m)})
+  for (double x : {static_cast<double>(e.kind), static_cast<double>(e.min_depth),
+                   static_cast<double>(e.policy), e.q, e.floor, static_cast<double>(e.max_depth),
+                   static_cast<double>(e.pdf_kind), static_cast<double>(e.pdf_m)})
     out.push_back(x);
 }
 
@@ -134,7 +140,8 @@ inline std::vector<double> flatten(const std::vector<Vec3>& points) {
 inline std::vector<Vec3> unflatten3(const double* values, std::size_t count) {
   std::vector<Vec3> out;
   out.reserve(count / 3);
-  for (std::size_t i = 0; i + 2 < count; i += 3) out.emplace_back(values[i], values[i + 1], values[i + 2]);
+  for (std::size_t i = 0; i + 2 < count; i += 3)
+    out.emplace_back(values[i], values[i + 1], values[i + 2]);
   return out;
 }
 

@@ -22,28 +22,35 @@ namespace {
 
 /// The kind of a request: its first parameter, checked against the enum's range.
 SamplerKind sampler_kind(const std::vector<double>& params) {
-  if (params.empty() || !(params[0] >= 0.0 && params[0] <= static_cast<double>(SamplerKind::uniform_cone)) || params[0] != static_cast<int>(params[0]))
+  if (params.empty() ||
+      !(params[0] >= 0.0 && params[0] <= static_cast<double>(SamplerKind::uniform_cone)) ||
+      params[0] != static_cast<int>(params[0]))
     throw std::invalid_argument("request without a valid sampler kind");
   return static_cast<SamplerKind>(static_cast<int>(params[0]));
 }
 
 void need(const std::vector<double>& params, std::size_t count, const std::string& name) {
-  if (params.size() != count) throw std::invalid_argument(fmt::format("request {} takes {} numbers", name, count));
+  if (params.size() != count)
+    throw std::invalid_argument(fmt::format("request {} takes {} numbers", name, count));
 }
 
 /// A whole number in [0, limit] (a depth, a size, a count).
 int whole(double x, int limit) {
-  if (!(x >= 0.0 && x <= limit) || x != static_cast<int>(x)) throw std::invalid_argument("a count out of range");
+  if (!(x >= 0.0 && x <= limit) || x != static_cast<int>(x))
+    throw std::invalid_argument("a count out of range");
   return static_cast<int>(x);
 }
 
 void need_rest(std::size_t count, std::size_t wanted, const std::string& name) {
-  if (count != wanted) throw std::invalid_argument(fmt::format("request {} takes {} numbers after its estimator", name, wanted));
+  if (count != wanted)
+    throw std::invalid_argument(
+        fmt::format("request {} takes {} numbers after its estimator", name, wanted));
 }
 
 /// The A5Estimator that heads an a5 request (its kind, policy and pdf kind in range).
 A5Estimator a5_estimator(const std::vector<double>& params) {
-  if (params.size() < k_a5_estimator_numbers) throw std::invalid_argument("an a5 request without its estimator");
+  if (params.size() < k_a5_estimator_numbers)
+    throw std::invalid_argument("an a5 request without its estimator");
   A5Estimator e;
   e.kind = static_cast<A5Estimator::Kind>(whole(params[0], 2));
   e.min_depth = whole(params[1], 1 << 20);
@@ -67,7 +74,8 @@ std::uint64_t seed(double x) {
   return static_cast<std::uint64_t>(x);
 }
 
-std::vector<double> answer(const LocalSubject& s, const std::string& name, const std::vector<double>& params) {
+std::vector<double> answer(const LocalSubject& s, const std::string& name,
+                           const std::vector<double>& params) {
   if (name == k_request_a1_disk) {
     need(params, 3, name);
     return {s.a1_disk(count(params[0]), seed(params[1]), seed(params[2]))};
@@ -77,23 +85,27 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     return {s.a1_ball(whole(params[0], 64), count(params[1]), seed(params[2]), seed(params[3]))};
   }
   if (name == k_request_a1_ball_counts) {
-    if (params.size() < 2 || params.size() % 2 != 0) throw std::invalid_argument("a1_ball_counts takes pairs");
+    if (params.size() < 2 || params.size() % 2 != 0)
+      throw std::invalid_argument("a1_ball_counts takes pairs");
     std::vector<std::array<std::uint64_t, 2>> calls;
     for (std::size_t i = 2; i < params.size(); i += 2)
       calls.push_back({static_cast<std::uint64_t>(whole(params[i], 64)), count(params[i + 1])});
     std::vector<double> out;
-    for (std::uint64_t c : s.a1_ball_counts(calls, seed(params[0]), seed(params[1]))) out.push_back(static_cast<double>(c));
+    for (std::uint64_t c : s.a1_ball_counts(calls, seed(params[0]), seed(params[1])))
+      out.push_back(static_cast<double>(c));
     return out;
   }
   if (name == k_request_a1_monte_carlo) {
     need(params, 7, name);
-    const EstimateAndError e = s.a1_monte_carlo(integrand(params[0]), params[1], Segment{params[2], params[3]},
-                                                count(params[4]), seed(params[5]), seed(params[6]));
+    const EstimateAndError e =
+        s.a1_monte_carlo(integrand(params[0]), params[1], Segment{params[2], params[3]},
+                         count(params[4]), seed(params[5]), seed(params[6]));
     return {e.estimate, e.standard_error};
   }
   if (name == k_request_a1_trapezoid) {
     need(params, 5, name);
-    return {s.a1_trapezoid(integrand(params[0]), params[1], Segment{params[2], params[3]}, count(params[4]))};
+    return {s.a1_trapezoid(integrand(params[0]), params[1], Segment{params[2], params[3]},
+                           count(params[4]))};
   }
   if (name == k_request_a2_samples) {
     const SamplerKind kind = sampler_kind(params);
@@ -107,36 +119,40 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
   }
   if (name == k_request_a3_single) {
     need(params, 12, name);
-    const PathSample p = s.recursive_single(params[0], params[1], {params[2], params[3], params[4]},
-                                            {params[5], params[6], params[7]}, whole(params[8], 64),
-                                            whole(params[9], 16), seed(params[10]), seed(params[11]));
+    const PathSample p =
+        s.recursive_single(params[0], params[1], {params[2], params[3], params[4]},
+                           {params[5], params[6], params[7]}, whole(params[8], 64),
+                           whole(params[9], 16), seed(params[10]), seed(params[11]));
     return {p.radiance, static_cast<double>(p.rays)};
   }
   if (name == k_request_a3_furnace) {
     need(params, 6, name);
-    return s.recursive_furnace(params[0], whole(params[1], 64), whole(params[2], 16), whole(params[3], 1 << 24),
-                               seed(params[4]), seed(params[5]));
+    return s.recursive_furnace(params[0], whole(params[1], 64), whole(params[2], 16),
+                               whole(params[3], 1 << 24), seed(params[4]), seed(params[5]));
   }
   if (name == k_request_a3_predicted_rays) {
     if (params.size() % 2 != 0) throw std::invalid_argument("a3_predicted_rays takes pairs");
     std::vector<std::array<int, 2>> calls;
-    for (std::size_t i = 0; i < params.size(); i += 2) calls.push_back({whole(params[i], 1 << 20), whole(params[i + 1], 1 << 10)});
+    for (std::size_t i = 0; i < params.size(); i += 2)
+      calls.push_back({whole(params[i], 1 << 20), whole(params[i + 1], 1 << 10)});
     std::vector<double> out;
     for (std::uint64_t r : s.predicted_rays(calls)) append_count(out, r);
     return out;
   }
   if (name == k_request_a4_furnace) {
     need(params, 5, name);
-    return s.path_furnace(params[0], whole(params[1], 64), whole(params[2], 1 << 24), seed(params[3]), seed(params[4]));
+    return s.path_furnace(params[0], whole(params[1], 64), whole(params[2], 1 << 24),
+                          seed(params[3]), seed(params[4]));
   }
   if (name == k_request_a4_sky) {
     need(params, 4, name);
-    return s.path_sky(whole(params[0], 1024), whole(params[1], 64), whole(params[2], 1 << 16), seed(params[3]));
+    return s.path_sky(whole(params[0], 1024), whole(params[1], 64), whole(params[2], 1 << 16),
+                      seed(params[3]));
   }
   if (name == k_request_a4_single) {
     need(params, 8, name);
-    const PathSample p = s.path_single(params[0], params[1], {params[2], params[3], params[4]}, whole(params[5], 64),
-                                       seed(params[6]), seed(params[7]));
+    const PathSample p = s.path_single(params[0], params[1], {params[2], params[3], params[4]},
+                                       whole(params[5], 64), seed(params[6]), seed(params[7]));
     return {p.radiance, static_cast<double>(p.rays)};
   }
   if (name == k_request_a4_pixel_exact) {
@@ -147,13 +163,14 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     need(params, 5, name);
     // Only the recorded rays' directions travel back: the checker never sees what the
     // student's code drew from the rng, only where its rays went.
-    return flatten(s.pixel_rays(whole(params[0], 7), whole(params[1], 5), std::max(whole(params[2], 1 << 20), 1),
-                                seed(params[3]), seed(params[4])));
+    return flatten(s.pixel_rays(whole(params[0], 7), whole(params[1], 5),
+                                std::max(whole(params[2], 1 << 20), 1), seed(params[3]),
+                                seed(params[4])));
   }
   if (name == k_request_a4_pixel_furnace) {
     need(params, 5, name);
-    return s.pixel_furnace(params[0], whole(params[1], 64), whole(params[2], 256), whole(params[3], 1 << 16),
-                           seed(params[4]));
+    return s.pixel_furnace(params[0], whole(params[1], 64), whole(params[2], 256),
+                           whole(params[3], 1 << 16), seed(params[4]));
   }
   if (name == k_request_a5_paths || name == k_request_a5_single || name == k_request_a5_regions ||
       name == k_request_a5_wall) {
@@ -163,42 +180,50 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     if (name == k_request_a5_paths) {
       need_rest(count, 4, name);
       std::vector<double> out;
-      for (const FurnacePath& p : s.a5_paths(e, rest[0], whole(rest[1], 1 << 24), seed(rest[2]), seed(rest[3])))
+      for (const FurnacePath& p :
+           s.a5_paths(e, rest[0], whole(rest[1], 1 << 24), seed(rest[2]), seed(rest[3])))
         out.insert(out.end(), {p.radiance, static_cast<double>(p.rays)});
       return out;
     }
     if (name == k_request_a5_single) {
       need_rest(count, 7, name);
-      const PathSample p = s.a5_single(e, rest[0], rest[1], {rest[2], rest[3], rest[4]}, seed(rest[5]), seed(rest[6]));
+      const PathSample p = s.a5_single(e, rest[0], rest[1], {rest[2], rest[3], rest[4]},
+                                       seed(rest[5]), seed(rest[6]));
       return {p.radiance, static_cast<double>(p.rays)};
     }
     if (name == k_request_a5_regions) {
       need_rest(count, 4, name);
-      return s.a5_regions(e, whole(rest[0], 16), whole(rest[1], 1024), whole(rest[2], 1 << 16), seed(rest[3]));
+      return s.a5_regions(e, whole(rest[0], 16), whole(rest[1], 1024), whole(rest[2], 1 << 16),
+                          seed(rest[3]));
     }
     need_rest(count, 2, name);
     return s.a5_wall(e, whole(rest[0], 1 << 24), seed(rest[1]));
   }
   if (name == k_request_a6_lobe_samples) {
-    if (params.empty() || params.size() % 2 != 1) throw std::invalid_argument("a6_lobe_samples takes m and pairs");
+    if (params.empty() || params.size() % 2 != 1)
+      throw std::invalid_argument("a6_lobe_samples takes m and pairs");
     std::vector<Vec2> u;
     for (std::size_t i = 1; i + 1 < params.size(); i += 2) u.emplace_back(params[i], params[i + 1]);
     return flatten(s.a6_lobe_samples(params[0], u));
   }
   if (name == k_request_a6_lobe_pdf) {
-    if (params.size() < 4 || (params.size() - 4) % 3 != 0) throw std::invalid_argument("a6_lobe_pdf takes m, r and points");
-    return s.a6_lobe_pdf(params[0], {params[1], params[2], params[3]}, unflatten3(params.data() + 4, params.size() - 4));
+    if (params.size() < 4 || (params.size() - 4) % 3 != 0)
+      throw std::invalid_argument("a6_lobe_pdf takes m, r and points");
+    return s.a6_lobe_pdf(params[0], {params[1], params[2], params[3]},
+                         unflatten3(params.data() + 4, params.size() - 4));
   }
   if (name == k_request_a6_weights) {
-    if (params.empty() || params.size() % 2 != 1) throw std::invalid_argument("a6_weights takes a heuristic and pairs");
+    if (params.empty() || params.size() % 2 != 1)
+      throw std::invalid_argument("a6_weights takes a heuristic and pairs");
     std::vector<Vec2> pairs;
-    for (std::size_t i = 1; i + 1 < params.size(); i += 2) pairs.emplace_back(params[i], params[i + 1]);
+    for (std::size_t i = 1; i + 1 < params.size(); i += 2)
+      pairs.emplace_back(params[i], params[i + 1]);
     return s.a6_weights(static_cast<A6Heuristic>(whole(params[0], 1)), pairs);
   }
   if (name == k_request_a6_regions) {
     need(params, 5, name);
-    return s.a6_regions(static_cast<A6Strategy>(whole(params[0], 3)), whole(params[1], 1024), whole(params[2], 1024),
-                        whole(params[3], 1 << 16), seed(params[4]));
+    return s.a6_regions(static_cast<A6Strategy>(whole(params[0], 3)), whole(params[1], 1024),
+                        whole(params[2], 1024), whole(params[3], 1 << 16), seed(params[4]));
   }
   if (name == k_request_a6_dielectric) {
     if (params.empty() || (params.size() - 1) % k_dielectric_query_numbers != 0)
@@ -211,7 +236,8 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name, const
     std::vector<double> out;
     out.reserve(k_dielectric_answer_numbers * queries.size());
     for (const DielectricAnswer& a : s.a6_dielectric(params[0], queries))
-      for (double x : {a.wi.x, a.wi.y, a.wi.z, a.weight.x, a.weight.y, a.weight.z, a.transmitted ? 1.0 : 0.0})
+      for (double x :
+           {a.wi.x, a.wi.y, a.wi.z, a.weight.x, a.weight.y, a.weight.z, a.transmitted ? 1.0 : 0.0})
         out.push_back(x);
     return out;
   }
