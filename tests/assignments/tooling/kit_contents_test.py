@@ -106,7 +106,9 @@ class KitContents(unittest.TestCase):
                 stubbed = make.stubbed_tasks(a, regions)
                 withheld = make.withheld_files(files, stubbed)
                 for f in references:
-                    self.assertEqual(f in withheld, n <= 5, f)
+                    # the sphere box's reference also writes the glass's Fresnel choice (a6.4, which
+                    # every kit stubs): it leaves the a6 kit too
+                    self.assertEqual(f in withheld, n <= 5 or f.endswith("scene_sphere_box_reference.hpp"), f)
 
                 def kit_text(f):
                     return "\n".join(make.rewrite(sources[f], [r for r in regions if r["file"] == f], stubbed))
