@@ -80,13 +80,7 @@ struct Options {
 
 // 1. The explosion: every N, every k (rays.csv).
 Table sweep(RecursiveRenderer& render_recursive, const Options& o) {
-  Table rays({{"branching", Column::integer},
-              {"depth", Column::integer},
-              {"rays", Column::integer},
-              {"predicted_max_rays", Column::integer},
-              {"seconds", Column::real, 6},
-              {"rays_per_second", Column::real, 6},
-              {"mean_radiance", Column::real, 9}});
+  Table rays = rays_table();
   const std::uint64_t pixels = static_cast<std::uint64_t>(o.image.width) * o.image.height;
   for (int n : o.branching)
     for (int k = 0; k <= o.max_depth; ++k) {
@@ -99,10 +93,7 @@ Table sweep(RecursiveRenderer& render_recursive, const Options& o) {
 
 // 2. The missing light, measured closely: N = 1 with many samples at every k, and deep.
 Table missing_light(RecursiveRenderer& render_recursive, const Options& o, const Plan& plan) {
-  Table missing({{"depth", Column::integer},
-                 {"mean_radiance", Column::real, 9},
-                 {"limit_mean_radiance", Column::real, 9},
-                 {"missing_fraction", Column::real, 6}});
+  Table missing = missing_light_table();
   std::vector<double> mean_by_depth;
   for (int k = 0; k <= o.max_depth; ++k)
     mean_by_depth.push_back(mean_radiance(render_recursive({1, k}, k_light_spp, 0).image));

@@ -17,6 +17,25 @@
 
 namespace mcrt {
 
+// rays.csv: per N and k, the rays traced against the N^k bound, their time and the image's mean.
+inline Table rays_table() {
+  return Table({{"branching", Column::integer},
+                {"depth", Column::integer},
+                {"rays", Column::integer},
+                {"predicted_max_rays", Column::integer},
+                {"seconds", Column::real, 6},
+                {"rays_per_second", Column::real, 6},
+                {"mean_radiance", Column::real, 9}});
+}
+
+// missing_light.csv: the mean radiance at each k against the deep limit, and the part missing.
+inline Table missing_light_table() {
+  return Table({{"depth", Column::integer},
+                {"mean_radiance", Column::real, 9},
+                {"limit_mean_radiance", Column::real, 9},
+                {"missing_fraction", Column::real, 6}});
+}
+
 // The equal-cost verdict in one sentence: which N has the smallest error at the budget.
 inline std::string conclusion(const auto& o, const Table& equal, std::size_t best) {
   const std::vector<double> error = equal.numbers("rms_error_at_budget");

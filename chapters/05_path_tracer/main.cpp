@@ -15,7 +15,7 @@
 // B at the same spp: E[(A - B)^2] / 2 = Var[A] = the mean squared error of A. That estimate
 // cannot see bias: the light the depth cut drops is missing from A and B alike. So each image
 // is also compared with a converged reference without a depth cut (chapter 08's estimator,
-// cached under out/reference/): E[(A - R)^2] = Var[A] + bias^2 + Var[R], which stops falling
+// cached in the user's cache folder, --reference-dir): E[(A - R)^2] = Var[A] + bias^2 + Var[R], which stops falling
 // once the noise is below the bias. To show it, the same pairs are rendered again at a few
 // shallow depths (--bias-depths, default 0, 1, 2), whose bias is large: rmse_vs_spp.png draws
 // their two-render error falling on while their error against the reference levels off.
@@ -59,10 +59,12 @@
 #include "render/sampled_render.hpp"
 #include "render/scene.hpp"
 #include "render/two_render_error.hpp"
+#include "options.hpp"
 #include "plan.hpp"
 #include "report.hpp"
 
 using namespace mcrt;
+using namespace mcrt::ch05;
 
 namespace {
 
@@ -71,19 +73,6 @@ const Chapter k_chapter{"ch05_path_tracer",
                         "sampled direction per bounce; images at growing spp and their RMS error, "
                         "estimated from two independent renders and measured against a "
                         "converged reference (which also shows the depth cut's bias)."};
-
-struct Options {
-  CommonOptions common;
-  SceneOptions scene;
-  ImageOptions image{256, 192};
-  std::vector<int> spp{1, 4, 16, 64, 256};  // samples per pixel of each image
-  int depth = 10;                           // bounces after the camera ray's hit
-  int reference_spp = 1024;                 // 0: no reference, no error against it
-  std::vector<int> bias_depths{0, 1, 2};    // shallow depths rendered again against the reference
-  bool lanes = true;                        // --engine lanes (true) or loop
-  PathSampler sampler = PathSampler::independent;  // where each path's uniforms come from
-  std::filesystem::path reference_dir;             // default: the user's cache folder
-};
 
 // Two independent renders at `spp`: A takes samples [0, spp), B takes [spp, 2 spp). The A
 // images of growing spp share their first samples, so they show one image converging.
@@ -164,33 +153,6 @@ void run(const CLI::App& app, const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   ChapterApp app(k_chapter, o.common);
-  add_render_options(app, o.scene, o.image, scene_names());  // veach-plates too: glossy lobes
-  add_list_option(app, "--spp", o.spp, "Samples per pixel of each image (a list: 1,4,16)", 1,
-                  1 << 16);
-  add_number_option(app, "--depth", o.depth, "Bounces after the first hit (0: emitted light only)",
-                    0, 1000);
-  add_number_option(app, "--reference-spp", o.reference_spp,
-                    "Samples per pixel of the reference image, without a depth cut (cached under "
-                    "--reference-dir; 0: no reference)",
-                    0, 1 << 20);
-  add_choice_option(
-      app, "--engine", {"lanes", "loop"}, "lanes",
-      [&](const std::string& name) { o.lanes = name == "lanes"; },
-      "How the path loop runs: lanes (four paths at a time) or loop (one at a time, the "
-      "lecture's loop as written); the images are the same bit for bit");
-  add_choice_option(
-      app, "--sampler", {"independent", "jittered", "sobol"}, "independent",
-      [&](const std::string& name) { o.sampler = *path_sampler_named(name); },
-      "Where each path's uniforms come from: independent (a random stream per sample), "
-      "jittered or sobol (each pixel's samples stratified in the pixel and at every bounce: "
-      "padded 2D sets; rendered one path at a time, whatever --engine)");
-  add_list_option(app, "--bias-depths", o.bias_depths,
-                  "Depths rendered again at every --spp against the reference, for "
-                  "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
-                  "off at their bias (a list: 0,1,2; only with a reference)",
-                  0, 1000);
-  add_path_option(
-      app, "--reference-dir", o.reference_dir,
-      "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
+  add_options(app, o);
   return app.run(argc, argv, [&] { run(app, o); });
 }

@@ -41,6 +41,7 @@
 #include "furnace_studies.hpp"
 #include "plan.hpp"
 #include "plots.hpp"
+#include "renders.hpp"
 #include "report.hpp"
 #include "splitting_study.hpp"
 
@@ -61,42 +62,13 @@ struct Options {
   ImageOptions image{256, 192};
   int spp = 64;    // samples per pixel of both images
   int depth = 10;  // the depth cut of depth_cut.png, and the largest k of bias.csv
-  Roulette roulette{3, RoulettePolicy::throughput, 0.7,
-                    0.05};  // --min-depth --policy --fixed-q --floor
+  // --min-depth, --policy, --fixed-q and --floor:
+  Roulette roulette{3, RoulettePolicy::throughput, 0.7, 0.05};
   std::vector<double> q{0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};  // the efficiency sweep
   int paths = 200000;  // furnace paths per row of every study (/ n for splitting.csv)
   std::vector<double> split_q{0.6, 0.8};     // the splitting study's fixed q
   std::vector<int> split_n{1, 2, 4, 8, 16};  // the splitting study's n
 };
-
-template <class Estimator>
-RenderResult render_image(const Camera& camera, const Options& o, const char* label,
-                          Estimator&& estimate) {
-  ProgressBar progress(fmt::format("ch06 {}", label), static_cast<std::uint64_t>(o.image.height),
-                       o.common.quiet);
-  RenderResult result =
-      render(camera, {o.spp, 0, o.common.seed, o.common.threads, &progress}, estimate);
-  progress.finish();
-  write_png(o.common.dir / (std::string(label) + ".png"), result.image);
-  write_pfm(o.common.dir / (std::string(label) + ".pfm"), result.image);
-  return result;
-}
-
-Table renders_table() {
-  return Table({{"estimator", Column::text},
-                {"spp", Column::integer},
-                {"mean_radiance", Column::real},
-                {"rays", Column::integer},
-                {"rays_per_sample", Column::real, 6},
-                {"seconds", Column::real, 4},
-                {"rays_per_second", Column::real, 4}});
-}
-
-void add_render_row(Table& table, const char* estimator, const RenderResult& r, const Options& o) {
-  const double samples = static_cast<double>(o.image.width) * o.image.height * o.spp;
-  table.add_row({estimator, o.spp, mean_radiance(r.image), r.rays,
-                 static_cast<double>(r.rays) / samples, r.seconds, r.rays_per_second()});
-}
 
 struct Results {
   Table bias, efficiency, lengths, renders, splitting;

@@ -156,9 +156,7 @@ int main(int argc, char** argv) {
   add_number_option(app, "--reference-spp", o.reference_spp,
                     "Samples per pixel of each reference image (cached under --reference-dir)", 2,
                     1 << 20);
-  add_path_option(
-      app, "--reference-dir", o.reference_dir,
-      "Folder of the cached references: new, empty, or made by an earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else ~/.cache/mcrt-companion)");
+  add_reference_dir_option(app, o.reference_dir);
   add_list_option(app, "--ray-budgets", o.budgets,
                   "Ray budgets of the shoot-out, in rays traced per pixel by each estimator on "
                   "each scene (a list: 64,128,256,512)",

@@ -32,6 +32,7 @@
 #include "plan.hpp"
 #include "plots.hpp"
 #include "render_study.hpp"
+#include "render_study_flags.hpp"
 #include "report.hpp"
 #include "tables.hpp"
 
@@ -125,31 +126,18 @@ void run(const CLI::App& app, const Options& o) {
   write_plot(o.common.dir, dimension_plot(o.budget, t.dimension));
   write_plot(o.common.dir, point_sets_plot(o.picture_points));
   Json summary = summary_of(k_chapter, app, o, plan, t);
-  if (o.render.max_spp > 0) {
-    write_csv(o.common.dir / "render_error.csv", render.errors);
-    write_csv(o.common.dir / "render_slopes.csv", render.slopes);
-    write_plot(o.common.dir, render_error_plot(o.render, render.slopes));
-    write_four_spp_sheet(o.common.dir, o.render, render);
-    summary["render"] = {{"scene", o.render.scene.scene}, {"width", o.render.width},
-                         {"height", o.render.height},     {"depths", study_depths(o.render)},
-                         {"rays", render.rays},           {"slopes", render.slopes.json()},
-                         {"errors", render.errors.json()}};
-  }
+  write_render_study(o.common.dir, o.render, render, summary, o.common.quiet);
   write_json(o.common.dir / "summary.json", summary);
   write_timings(o.common.dir, timings_of(k_chapter, o, plan, seconds), run_flags_json(app));
   if (!o.common.quiet) print_report(k_chapter, o, plan, t, seconds);
-  if (!o.common.quiet && o.render.max_spp > 0)
-    fmt::print("path tracer, {} {}x{}, rms error against spp:\n{}", o.render.scene.scene,
-               o.render.width, o.render.height, render.slopes.console());
 }
 
 // A power of two from `lowest` to 2^24, or a usage error naming the flag.
 void check_power_of_two(const char* flag, std::uint32_t n, std::uint32_t lowest) {
   if (n < lowest || (n & (n - 1)) != 0)
     throw UsageError(
-        fmt::format("{} {}: give a power of two from {} to {} (Sobol' nets have "
-                    "2^m points)",
-                    flag, n, lowest, 1u << 24));
+        fmt::format("{} {}: give a power of two from {} to {} (Sobol' nets have 2^m points)", flag,
+                    n, lowest, 1u << 24));
 }
 
 }  // namespace
@@ -161,62 +149,22 @@ int main(int argc, char** argv) {
   add_number_option(app, "--trials", o.trials,
                     "Randomisations K per N (2 or more: the rms error is over these)", 2, 100000);
   add_number_option(app, "--max-n", max_n,
-                    "Largest N of the disk and smooth studies, a power "
-                    "of two (N = 16, 32, ..., max-n)",
+                    "Largest N of the disk and smooth studies, a power of two (N = 16, 32, ...)",
                     std::uint64_t{64}, std::uint64_t{1} << 24);
-  add_number_option(app, "--budget", budget,
-                    "N of the dimension study at every D, a power of "
-                    "two",
+  add_number_option(app, "--budget", budget, "N of the dimension study at every D, a power of two",
                     std::uint64_t{16}, std::uint64_t{1} << 24);
   add_list_option(app, "--dims", o.dims, "Dimensions D of the dimension study, e.g. 1,2,4,8", 1,
                   k_max_box_dims);
   add_number_option(app, "--picture-points", o.picture_points,
                     "Points of each set drawn in point_sets.png", 1, 4096);
   std::string sampler_choice = "all";
-  add_choice_option(
-      app, "--sampler", {"all", "independent", "jittered", "sobol"}, sampler_choice,
-      [&](const std::string& name) { sampler_choice = name; },
-      "Samplers of the render study: all, or one of independent, jittered, sobol (jittered and "
-      "sobol: each pixel's samples stratified, padded per bounce)");
-  add_number_option(app, "--render-max-spp", o.render.max_spp,
-                    "The render study: chapter 05's path tracer at spp = 1, 2, 4, ..., this (a "
-                    "power of two; 0: no render study)",
-                    0, 1 << 14);
-  add_choice_option(
-      app, "--render-scene", {"cornell", "cornell-spheres"}, o.render.scene.scene,
-      [&](const std::string& name) { o.render.scene.scene = name; }, "Scene of the render study");
-  add_number_option(app, "--render-width", o.render.width, "Width of the render study's images", 1,
-                    4096);
-  add_number_option(app, "--render-height", o.render.height, "Height of the render study's images",
-                    1, 4096);
-  add_number_option(app, "--render-depth", o.render.full_depth,
-                    "The render study's full depth (its other depth is 1: direct light)", 2, 1000);
-  add_number_option(app, "--render-reference-spp", o.render.reference_spp,
-                    "Samples per pixel of the render study's references (chapter 08's MIS, cached "
-                    "under --reference-dir)",
-                    2, 1 << 20);
-  add_path_option(app, "--reference-dir", o.render.reference_dir,
-                  "Folder of the cached references of the render study: new, empty, or made by an "
-                  "earlier run (tagged by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/"
-                  "mcrt-companion, else ~/.cache/mcrt-companion)");
+  add_render_study_options(app, o.render, sampler_choice);
   return app.run(argc, argv, [&] {
     o.max_n = static_cast<std::uint32_t>(max_n);
     o.budget = static_cast<std::uint32_t>(budget);
     check_power_of_two("--max-n", o.max_n, 64);  // N = 16, 32, 64: a slope and its error
     check_power_of_two("--budget", o.budget, 16);
-    if (sampler_choice != "all") o.render.samplers = {*path_sampler_named(sampler_choice)};
-    if (o.render.max_spp > 0) {
-      const auto max_spp = static_cast<std::uint32_t>(o.render.max_spp);
-      if ((max_spp & (max_spp - 1)) != 0)
-        throw UsageError(fmt::format("--render-max-spp {}: give 0 or a power of two up to {}",
-                                     max_spp, 1 << 14));
-      check_image_size({o.render.width, o.render.height});
-      check_ray_limit(study_work(o.render), k_max_rays,
-                      "--render-max-spp, --render-width, --render-height, --render-depth, "
-                      "--render-reference-spp",
-                      o.common.threads, "lower one of them");
-      check_reference_folder(reference_folder(o.render.reference_dir), o.common.out);
-    }
+    check_render_study(o.render, sampler_choice, o.common);
     run(app, o);
   });
 }

@@ -207,4 +207,22 @@ inline void write_four_spp_sheet(const std::filesystem::path& dir, const RenderS
   write_png(dir / "render_4spp.png", make_contact_sheet(cells, layout));
 }
 
+// The study's files (render_error.csv, render_slopes.csv, their plot, render_4spp.png), its
+// part of summary.json, and its table on the console.
+inline void write_render_study(const std::filesystem::path& dir, const RenderStudyOptions& o,
+                               const RenderStudy& study, Json& summary, bool quiet) {
+  if (o.max_spp == 0) return;
+  write_csv(dir / "render_error.csv", study.errors);
+  write_csv(dir / "render_slopes.csv", study.slopes);
+  write_plot(dir, render_error_plot(o, study.slopes));
+  write_four_spp_sheet(dir, o, study);
+  summary["render"] = {{"scene", o.scene.scene},       {"width", o.width},
+                       {"height", o.height},           {"depths", study_depths(o)},
+                       {"rays", study.rays},           {"slopes", study.slopes.json()},
+                       {"errors", study.errors.json()}};
+  if (!quiet)
+    fmt::print("path tracer, {} {}x{}, rms error against spp:\n{}", o.scene.scene, o.width,
+               o.height, study.slopes.console());
+}
+
 }  // namespace mcrt::ch09

@@ -22,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include "app/cli.hpp"
 #include "app/run_folder.hpp"
 #include "app/usage_error.hpp"
 #include "core/progress.hpp"
@@ -409,6 +410,13 @@ std::string reference_stem(const ReferenceSpec& spec) {
                         spec.scene.params.furnace_emission);
   if (spec.max_depth >= 0) stem += fmt::format("_d{}", spec.max_depth);
   return stem;
+}
+
+void add_reference_dir_option(CLI::App& app, std::filesystem::path& dir) {
+  add_path_option(app, "--reference-dir", dir,
+                  "Folder of the cached references: new, empty, or made by an earlier run (tagged "
+                  "by its CACHEDIR.TAG) (default: $XDG_CACHE_HOME/mcrt-companion, else "
+                  "~/.cache/mcrt-companion)");
 }
 
 fs::path reference_folder(const fs::path& flag) {

@@ -16,6 +16,10 @@
 #include "render/image.hpp"
 #include "render/scene.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace mcrt {
 
 struct ReferenceSpec {
@@ -42,6 +46,9 @@ std::string reference_stem(const ReferenceSpec& spec);
 /// `flag` (--reference-dir) if given, else $XDG_CACHE_HOME/mcrt-companion, else
 /// $HOME/.cache/mcrt-companion (absolute paths only); UsageError if neither is set.
 std::filesystem::path reference_folder(const std::filesystem::path& flag);
+
+/// The flag `--reference-dir` (into `dir`), with the help every chapter with a reference gives.
+void add_reference_dir_option(CLI::App& app, std::filesystem::path& dir);
 
 /// Before any work: UsageError naming --reference-dir if `dir` and `out` lie inside one
 /// another, or `dir` is a link, not a folder, another user's, writable by others without the
