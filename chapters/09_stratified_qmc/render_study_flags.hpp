@@ -52,8 +52,7 @@ inline void check_render_study(RenderStudyOptions& r, const std::string& sampler
         fmt::format("--render-max-spp {}: give 0 or a power of two up to {}", max_spp, 1 << 14));
   check_image_size({r.width, r.height});
   check_ray_limit(study_work(r), k_max_rays,
-                  "--render-max-spp, --render-width, --render-height, --render-depth, "
-                  "--render-reference-spp",
+                  "--render-max-spp and --render-{width,height,depth,reference-spp}",
                   common.threads, "lower one of them");
   check_reference_folder(reference_folder(r.reference_dir), common.out);
 }

@@ -68,6 +68,7 @@ inline Bounce sample_bounce(const Material& material, const Hit& hit, const Vec3
 inline Color trace_split_path(const Scene& scene, Ray ray, Color beta, int bounce,
                               const Roulette& roulette, const Splitting& splitting, Rng& rng,
                               RayCount& count) {
+  // ASSIGNMENT a5.1 BEGIN needs=a4.1 withheld stub: (void)scene; (void)ray; (void)beta; (void)bounce; (void)roulette; (void)splitting; (void)rng; (void)count; NOT_IMPLEMENTED(trace_split_path);
   Color radiance(0.0);
   for (;; ++bounce) {
     ++count.rays;
@@ -97,6 +98,7 @@ inline Color trace_split_path(const Scene& scene, Ray ray, Color beta, int bounc
     ray = next.ray;
   }
   return radiance;
+  // ASSIGNMENT a5.1 END
 }
 
 /// One estimate of the radiance along `ray` with splitting (the first splitting.depth vertices,
