@@ -137,6 +137,22 @@ void run(const CLI::App& app, const Options& o) {
         total.add(b);
       }
 
+  // smallpt's mirror and glass: a path meeting a delta follows its one direction (sampled by
+  // the material, never uniformly: a uniform direction would never be the mirror's).
+  std::uint64_t smallpt_rays = 0;
+  if (o.smallpt_spp > 0) {
+    const Scene smallpt = make_scene("smallpt", o.scene.params);
+    ProgressBar progress("ch05 smallpt", o.image.height, o.common.quiet);
+    const RenderResult s =
+        render_path_tracer_lanes(smallpt, Camera(smallpt.camera, o.image.width, o.image.height),
+                                 {o.smallpt_spp, 0, o.common.seed, o.common.threads, &progress},
+                                 o.depth);
+    progress.finish();
+    write_png(o.common.dir / "smallpt.png", s.image);
+    total.add(s);
+    smallpt_rays = s.rays;
+  }
+
   // Below the raw details, their 8x8 means: at low spp the light sits in a few bright pixels.
   write_png(o.common.dir / "noise_strip.png",
             centre_detail_strip(images, labels, "at growing spp", 8));
@@ -144,7 +160,7 @@ void run(const CLI::App& app, const Options& o) {
   if (reference) write_csv(o.common.dir / "depth_bias.csv", bias);
   const Reference* r = reference ? &*reference : nullptr;
   write_rmse_plot(o, errors, slope, r != nullptr ? &bias : nullptr);
-  write_summary(k_chapter, app, o, errors, slope, total, images.back(), r, bias);
+  write_summary(k_chapter, app, o, errors, slope, total, images.back(), r, bias, smallpt_rays);
   if (!o.common.quiet) print_table(k_chapter, o, errors, slope, total, images.back(), r);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Chapter 05's flags: the images (--spp, --depth), the reference they are measured against, the
-// shallow depths of the bias study, and how the paths run (--engine, --sampler).
+// shallow depths of the bias study, smallpt's scene beside it, and how the paths run (--engine,
+// --sampler).
 
 #include <filesystem>
 #include <string>
@@ -21,6 +22,7 @@ struct Options {
   int depth = 10;                           // bounces after the camera ray's hit
   int reference_spp = 1024;                 // 0: no reference, no error against it
   std::vector<int> bias_depths{0, 1, 2};    // shallow depths rendered again against the reference
+  int smallpt_spp = 64;                     // smallpt.png's spp (0: not rendered)
   bool lanes = true;                        // --engine lanes (true) or loop
   PathSampler sampler = PathSampler::independent;  // where each path's uniforms come from
   std::filesystem::path reference_dir;             // default: the user's cache folder
@@ -52,6 +54,11 @@ inline void add_options(CLI::App& app, Options& o) {
                   "rmse_vs_spp.png and depth_bias.csv: the error against the reference levels "
                   "off at their bias (a list: 0,1,2; only with a reference)",
                   0, 1000);
+  add_number_option(app, "--smallpt-spp", o.smallpt_spp,
+                    "Samples per pixel of smallpt.png: smallpt's mirror and glass scene at the "
+                    "image size and --depth, to show what a mirror does to uniform sampling "
+                    "(0: not rendered)",
+                    0, 1 << 16);
   add_reference_dir_option(app, o.reference_dir);
 }
 

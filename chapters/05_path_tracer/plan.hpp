@@ -42,10 +42,12 @@ inline std::filesystem::path reference_dir(const auto& o) {
 }
 
 // The most rays the run can trace: two renders per spp, at most depth + 1 rays per sample,
-// and the reference if it is not cached.
+// smallpt.png's one render, and the reference if it is not cached.
 inline RayWork predicted_work(const auto& o) {
   double samples = 0.0;
   for (int spp : o.spp) samples += 2.0 * spp;
+  const double smallpt =
+      static_cast<double>(o.smallpt_spp) * o.image.width * o.image.height * (o.depth + 1.0);
   double study_depths = 0.0;  // the bias study's rays per sample, summed over its depths
   if (o.reference_spp > 0)
     for (int depth : o.bias_depths) study_depths += depth + 1.0;
@@ -53,9 +55,11 @@ inline RayWork predicted_work(const auto& o) {
       o.reference_spp > 0
           ? reference_predicted_rays(reference_spec(o), reference_rays_per_sample(o))
           : 0.0;
-  return {samples * o.image.width * o.image.height * (o.depth + 1.0 + study_depths) + reference,
-          "2 renders x sum of spp x pixels x (depth + 1 + sum of (bias depth + 1)) + reference "
-          "spp x pixels x 32 (furnace: 2 (3 + 1 / (1 - albedo)) if more)"};
+  return {samples * o.image.width * o.image.height * (o.depth + 1.0 + study_depths) + smallpt +
+              reference,
+          "2 renders x sum of spp x pixels x (depth + 1 + sum of (bias depth + 1)) + smallpt spp "
+          "x pixels x (depth + 1) + reference spp x pixels x 32 (furnace: 2 (3 + 1 / (1 - "
+          "albedo)) if more)"};
 }
 
 // Throws UsageError (exit 2, naming the flags) for a run that cannot or should not be done.
@@ -64,8 +68,8 @@ inline void refuse_impossible_work(const auto& o) {
   // The furnace's reference has no depth cut: at albedo 1 its paths never end.
   if (o.scene.scene == "furnace") check_furnace_albedo(o.scene.params.furnace_albedo);
   check_ray_limit(predicted_work(o), k_max_rays,
-                  "--spp, --depth, --width, --height, --reference-spp, --albedo", o.common.threads,
-                  "lower one of them");
+                  "--spp, --depth, --width, --height, --reference-spp, --smallpt-spp, --albedo",
+                  o.common.threads, "lower one of them");
   // A pair of renders, the reference's three and one kept per spp for the noise strip (measured:
   // 134 bytes per pixel at --spp 1,2,4, counted 240).
   check_memory_limit(images_in_memory(static_cast<double>(o.image.width) * o.image.height,

@@ -133,12 +133,14 @@ inline void write_rmse_plot(const auto& o, const Table& errors, double slope, co
 
 inline void write_summary(const Chapter& chapter, const CLI::App& app, const auto& o,
                           const Table& errors, double slope, const RenderTotals& total,
-                          const Image& last, const Reference* reference, const Table& bias) {
+                          const Image& last, const Reference* reference, const Table& bias,
+                          std::uint64_t smallpt_rays) {
   Json summary = start_summary(chapter.name, o.common.seed);
   add_render_setup(summary, o.scene, o.image);
   summary["spp"] = o.spp;
   summary["depth"] = o.depth;
   add_render_totals(summary, total);
+  summary["smallpt_rays"] = smallpt_rays;  // smallpt.png's render, counted in "rays" too
   summary["rmse_slope"] = std::isfinite(slope) ? Json(slope) : Json(nullptr);  // < 2 spp
   summary["rmse_slope_theory"] = -0.5;
   summary["mean_radiance"] = mean_radiance(last);

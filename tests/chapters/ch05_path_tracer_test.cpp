@@ -11,6 +11,7 @@
 #include "chapters/csv_file.hpp"
 #include "chapters/run_program.hpp"
 #include "io/image_file.hpp"
+#include "io/image_file_decoding.hpp"
 
 using namespace mcrt::testing;
 
@@ -53,8 +54,12 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   EXPECT_EQ(summary["non_finite_samples"], 0);
   EXPECT_EQ(summary["scene"], "cornell-spheres");
   EXPECT_EQ(summary["depth"], 4);
-  // The rays of every render: the main pairs and the bias study's (depths 0, 1, 2).
-  double rays = 0.0;
+  // The rays of every render: the main pairs, the bias study's (depths 0, 1, 2) and
+  // smallpt.png's (64 spp, each path 1 to depth + 1 = 5 closest-hit queries).
+  const double smallpt_rays = summary["smallpt_rays"].get<double>();
+  EXPECT_GE(smallpt_rays, 64.0 * pixels);
+  EXPECT_LE(smallpt_rays, 64.0 * pixels * 5);
+  double rays = smallpt_rays;
   for (double r : csv.numbers("rays")) rays += r;
   for (double r : CsvFile(dir / "depth_bias.csv").numbers("rays")) rays += r;
   EXPECT_EQ(summary["rays"].get<double>(), rays);
@@ -73,6 +78,15 @@ TEST(Ch05Test, TinyRunWritesImagesErrorTableAndSummary) {
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "noise_strip.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "rmse_vs_spp.gp"));
+  // smallpt.png as a student sees it (decoded by stb_image): the run's size, and lit: its mean
+  // code value far above black (the lit walls give codes of 100 and more; 10 is a floor that
+  // a black or almost black render fails).
+  const DecodedPng smallpt = decode_png(read_text(dir / "smallpt.png"));
+  EXPECT_EQ(smallpt.width, 24);
+  EXPECT_EQ(smallpt.height, 18);
+  double code_sum = 0.0;
+  for (const std::uint8_t code : smallpt.bytes) code_sum += code;
+  EXPECT_GT(code_sum / static_cast<double>(smallpt.bytes.size()), 10.0);
   for (const auto& entry : std::filesystem::directory_iterator(dir))  // the manifest aside
     if (entry.path().filename() != mcrt::k_manifest_name) {
       EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left";
