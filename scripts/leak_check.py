@@ -56,11 +56,22 @@ TOKEN = re.compile(r"""
 """, re.S | re.M | re.X)
 
 
+_tokenized = {}  # (text, first line) -> tokens: a kit's files are mostly the tree's own
+
+
 def tokenize(text, first_line=1):
     """[(normalised token, identifier or None, line)] of C++ text: comments, whitespace and
     preprocessor lines dropped. Names a copy can rename (variables, parameters) become "$";
     names it must keep to compile against the project (a called function, a member after . or
-    ->, a namespace or class before ::, a type: capitalised) stay."""
+    ->, a namespace or class before ::, a type: capitalised) stay. The list is shared between
+    calls with the same text: callers never change it."""
+    known = _tokenized.get((text, first_line))
+    if known is None:
+        known = _tokenized[(text, first_line)] = _tokenize(text, first_line)
+    return known
+
+
+def _tokenize(text, first_line):
     raw, line = [], first_line
     for m in TOKEN.finditer(text):
         kind, value = m.lastgroup, m.group(0)
@@ -119,19 +130,22 @@ def renaming_is_consistent(a, b):
     return True
 
 
+def window_shapes(tokens):
+    """The shape (normalised tokens) of every window of `tokens`, in order."""
+    w, kinds = k_window_tokens, [t[0] for t in tokens]
+    return [tuple(kinds[i:i + w]) for i in range(len(kinds) - w + 1)]
+
+
 def shapes(texts):
-    w = k_window_tokens
-    return {tuple(t[0] for t in tokens[i:i + w]) for tokens in texts for i in range(len(tokens) - w + 1)}
+    return {shape for tokens in texts for shape in window_shapes(tokens)}
 
 
 def build_index(references):
     """{window shape: [(reference name, tokens, start)]} of every window of the references
     (name -> (tokens, kept shapes)) that is not among that reference's kept shapes."""
-    w = k_window_tokens
     index = {}
     for name, (tokens, kept_shapes) in references.items():
-        for i in range(len(tokens) - w + 1):
-            shape = tuple(t[0] for t in tokens[i:i + w])
+        for i, shape in enumerate(window_shapes(tokens)):
             if shape not in kept_shapes:
                 index.setdefault(shape, []).append((name, tokens, i))
     return index
@@ -142,9 +156,9 @@ def find_in_tokens(tokens, index):
     reference window, overlapping windows of the same reference merged."""
     w = k_window_tokens
     found = []
-    for i in range(len(tokens) - w + 1):
+    for i, shape in enumerate(window_shapes(tokens)):
         window = tokens[i:i + w]
-        for name, ref, j in index.get(tuple(t[0] for t in window), ()):
+        for name, ref, j in index.get(shape, ()):
             if renaming_is_consistent(window, ref[j:j + w]):
                 last = found[-1] if found else None
                 if last and last[2] == name and last[3] >= i - 1:
