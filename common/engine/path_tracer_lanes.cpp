@@ -11,6 +11,7 @@
 #include "engine/path_lanes.hpp"
 #include "engine/path_starts.hpp"
 #include "render/path_tracer.hpp"
+#include "render/specular.hpp"
 
 namespace mcrt {
 
@@ -39,6 +40,8 @@ class RowOfPaths {
     // A diffuse scene spares shade_lanes the look at each lane's lobe.
     const bool lobes = std::ranges::any_of(scene.materials, &Material::has_lobe);
     for (PathGroup& g : groups_) g.bounce.lobes_possible = lobes;
+    // A scene without mirrors or glass spares step() the look for delta lanes.
+    deltas_possible_ = std::ranges::any_of(scene.materials, &Material::is_delta);
   }
 
   // Traces the row: its pixels' sums of radiance, its rays and its non-finite estimates.
@@ -97,9 +100,15 @@ class RowOfPaths {
   bool step(PathGroup& g, RayCount& count) {
     const unsigned live = g.paths.live_lanes();
     if (live == 0) return false;
-    scene_.hits_in_lanes(scene_.closest_hits(g.rays), g.rays, g.bounce.hit);
+    const Scene::ClosestLanes nearest = scene_.closest_hits(g.rays);
+    scene_.hits_in_lanes(nearest, g.rays, g.bounce.hit);
+    std::array<std::uint64_t, k_lanes> generators{};  // before shade_lanes' two draws
+    if (deltas_possible_) generators = g.paths.rng.state;
     shade_lanes(scene_.materials, max_depth_, g.paths, g.bounce);
+    const unsigned delta = deltas_possible_ ? delta_lanes(g) : 0u;
     bounce_lanes(g.bounce, g.rays);
+    for (unsigned left = delta; left != 0; left &= left - 1)
+      bounce_delta_lane(g, nearest, std::countr_zero(left), generators);
     count.rays += static_cast<std::uint64_t>(std::popcount(live));
     for (unsigned ended = end_lanes(g.paths, g.bounce); ended != 0; ended &= ended - 1) {
       const int l = std::countr_zero(ended);
@@ -107,6 +116,36 @@ class RowOfPaths {
       start_path(g, l);
     }
     return true;
+  }
+
+  // The bouncing lanes at a mirror or glass, as bits 0-3. bounce_lanes leaves them alone (their
+  // `bouncing` is cleared here, and set again by bounce_delta_lane).
+  unsigned delta_lanes(PathGroup& g) const {
+    unsigned delta = 0;
+    for (int l = 0; l < k_lanes; ++l)
+      if (g.bounce.bouncing[l] != 0 &&
+          scene_.materials[static_cast<std::size_t>(g.bounce.hit.material[l])].is_delta()) {
+        delta |= 1u << l;
+        g.bounce.bouncing[l] = 0;
+      }
+    return delta;
+  }
+
+  // estimate_path_radiance's delta branch for lane l, after bounce_lanes (which left the lane's
+  // ray, the one that reached the hit, as it was): the lane's Hit from the search, as
+  // closest_hit builds it (front_face included, which HitLanes does not keep); one uniform of
+  // the lane's generator, from its state before shade_lanes drew two; beta times the delta's
+  // weight; the specular ray. end_lanes then ends the path on a black weight, as the loop does.
+  void bounce_delta_lane(PathGroup& g, const Scene::ClosestLanes& nearest, int l,
+                         const std::array<std::uint64_t, k_lanes>& generators) const {
+    const Ray ray = g.rays.get(l);
+    const Hit hit = *scene_.hit_in_lane(nearest, l, ray);
+    g.paths.rng.state[l] = generators[l];
+    const double u = g.paths.rng.next(l) * 0x1p-32;  // Rng::uniform()
+    const BsdfSample specular = sample_delta(scene_.material(hit), hit, -ray.direction, u);
+    for (int axis = 0; axis < 3; ++axis) g.bounce.beta[axis][l] *= specular.weight[axis];
+    g.rays.set(l, spawn_ray(hit, specular.wi));
+    g.bounce.bouncing[l] = -1;
   }
 
   void trace_chunk(RayCount& count) {
@@ -123,7 +162,8 @@ class RowOfPaths {
   const RenderSettings& settings_;
   const int max_depth_;
   const int y_;
-  const std::uint64_t tasks_;  // the row's paths: width x spp
+  bool deltas_possible_ = false;  // some material is a mirror or glass
+  const std::uint64_t tasks_;     // the row's paths: width x spp
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
   PathStarts starts_;  // the starts of the tasks from next_task_ on, from entry next_start_
   int next_start_ = PathStarts::k_capacity;
@@ -136,12 +176,6 @@ class RowOfPaths {
 
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
                                       const RenderSettings& settings, int max_depth) {
-  // The lanes bounce diffuse and glossy surfaces only: a scene with a mirror or glass runs the
-  // one-path loop, which is the same image by definition.
-  if (std::ranges::any_of(scene.materials, &Material::is_delta))
-    return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-      return estimate_path_radiance(scene, ray, max_depth, rng, count);
-    });
   return render_rows(
       camera, settings, [&](int y, Color* row, RayCount& rays, std::uint64_t& non_finite) {
         std::vector<Color> sums(camera.width(), Color(0.0));

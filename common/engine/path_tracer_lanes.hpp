@@ -20,8 +20,9 @@
 namespace mcrt {
 
 /// render(camera, settings, path radiance with at most `max_depth` bounces), four paths at a
-/// time; a scene with a delta material (mirror, glass) is rendered one path at a time, by
-/// render() itself.
+/// time. A lane at a delta material (mirror, glass) leaves the four-lane bounce and takes
+/// estimate_path_radiance's delta branch on its own (one uniform, sample_delta), between the
+/// same search and end of step as the other lanes.
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
                                       const RenderSettings& settings, int max_depth);
 

@@ -104,6 +104,19 @@ TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnVeachPlatesAtEverySizeAndDe
   for (int threads : {1, 2}) expect_lecture_image({"veach-plates", 33, 17, 5, 10, 5, threads});
 }
 
+// smallpt's scene: lanes at the mirror and the glass ball take the delta branch one lane at a
+// time (one uniform, not two) beside diffuse lanes. Widths 1 to 9 with 1 to 3 spp at a height
+// whose rows cross both balls; one row of 1031 paths; depths 0 to 4, 10 and 40 (paths that
+// bounce on inside the glass); later samples and 1 to 3 threads.
+TEST(PathTracerLanesTest, GivesTheLectureLoopsImageOnSmallptAtEverySizeDepthAndThreadCount) {
+  for (int width = 1; width <= 9; ++width)
+    for (int spp = 1; spp <= 3; ++spp) expect_lecture_image({"smallpt", width, 7, spp, 10, 0, 1});
+  expect_lecture_image({"smallpt", 1031, 2, 1, 10, 0, 1});
+  for (int depth : {0, 1, 2, 3, 4, 10, 40})
+    expect_lecture_image({"smallpt", 24, 18, 4, depth, 0, 1});
+  for (int threads : {1, 2, 3}) expect_lecture_image({"smallpt", 33, 17, 5, 10, 5, threads});
+}
+
 TEST(PathTracerLanesTest, GivesTheLectureLoopsImageForLaterSamplesAndAnyThreadCount) {
   for (int threads : {1, 2, 3}) expect_lecture_image({"cornell", 33, 17, 5, 10, 5, threads});
 }
