@@ -53,7 +53,7 @@ inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
 
 /// Dimension 1 of Sobol' points (direction numbers all 1: Pascal's triangle mod 2) has the
 /// columns c_0 = 2^31, c_b = c_(b-1) xor (c_(b-1) >> 1). Stored bit-reversed here, so the
-/// reversed bits of a point's y, which Owen scrambling works on, are one xor per index bit;
+/// reversed bits of a point's y, which Owen scrambling works on, are xors of these;
 /// tests/sampling/path_sampler_test.cpp checks them against Boost's (sobol_matrices.hpp).
 inline constexpr std::array<std::uint32_t, 32> k_sobol_dimension1_reversed = [] {
   std::array<std::uint32_t, 32> columns{};
@@ -61,6 +61,34 @@ inline constexpr std::array<std::uint32_t, 32> k_sobol_dimension1_reversed = [] 
   for (unsigned b = 0; b < 32; ++b, c ^= c >> 1) columns[b] = reverse_bits(c);
   return columns;
 }();
+
+/// The same columns summed four index bits at a time: entry [k][v] is the xor of the columns
+/// 4k + j for the bits j set in v, so a 2^m-point set's y takes ceil(m / 4) lookups, no branch.
+inline constexpr std::array<std::array<std::uint32_t, 16>, 8> k_sobol_dimension1_nibbles = [] {
+  std::array<std::array<std::uint32_t, 16>, 8> sums{};
+  for (unsigned k = 0; k < 8; ++k)
+    for (unsigned v = 0; v < 16; ++v)
+      for (unsigned j = 0; j < 4; ++j)
+        if ((v >> j) & 1u) sums[k][v] ^= k_sobol_dimension1_reversed[4 * k + j];
+  return sums;
+}();
+
+/// Dimension 1 of Sobol' point p, bit-reversed, for p < 2^(4 nibbles).
+inline std::uint32_t sobol_dimension1_reversed(std::uint32_t p, unsigned nibbles) {
+  std::uint32_t y = 0;
+  for (unsigned k = 0; k < nibbles; ++k) y ^= k_sobol_dimension1_nibbles[k][(p >> (4 * k)) & 15u];
+  return y;
+}
+
+/// reverse_bits of each 32-bit half of w, both at once (reverse_bits' swaps on 64 bits, all but
+/// the last, which would exchange the halves).
+constexpr std::uint64_t reverse_bits_of_halves(std::uint64_t w) {
+  w = ((w >> 1) & 0x5555555555555555ull) | ((w & 0x5555555555555555ull) << 1);
+  w = ((w >> 2) & 0x3333333333333333ull) | ((w & 0x3333333333333333ull) << 2);
+  w = ((w >> 4) & 0x0f0f0f0f0f0f0f0full) | ((w & 0x0f0f0f0f0f0f0f0full) << 4);
+  w = ((w >> 8) & 0x00ff00ff00ff00ffull) | ((w & 0x00ff00ff00ff00ffull) << 8);
+  return ((w >> 16) & 0x0000ffff0000ffffull) | ((w & 0x0000ffff0000ffffull) << 16);
+}
 
 /// What a 2D set of a pixel needs whatever the sample, made once per pixel: its key (jittered:
 /// its permutation of the cells; both: the low bits of each sample) and, for Sobol' sets, the
@@ -143,7 +171,7 @@ class PaddedPixel {
         pixel_key_(pixel_key),
         count_(count),
         half_bits_(shuffle_half_bits(count)),
-        index_bits_(2 * half_bits_),
+        index_nibbles_((2 * half_bits_ + 3) / 4),
         columns_(kind == PathSampler::jittered ? JitteredPoints::grid_columns(count) : 1) {}
 
   /// The seed's randomisation of pixel `pixel` for the samples from `first_sample` on: two
@@ -175,11 +203,11 @@ class PaddedPixel {
       // sample. Owen scrambling works on reversed bits (owen_scramble.hpp): dimension 0, the
       // radical inverse, is the index reversed, so its reversed bits are the index itself.
       const std::uint32_t p = count_ <= 1 ? 0 : shuffled_sample(index, count_, half_bits_, keys);
-      std::uint32_t y_reversed = 0;  // the columns of p's bits, without a branch on each bit
-      for (unsigned b = 0; b < index_bits_; ++b)
-        y_reversed ^= k_sobol_dimension1_reversed[b] & (0u - ((p >> b) & 1u));
-      const std::uint32_t x = reverse_bits(laine_karras_permutation(p, keys.seed_x));
-      const std::uint32_t y = reverse_bits(laine_karras_permutation(y_reversed, keys.seed_y));
+      const std::uint32_t y_reversed = sobol_dimension1_reversed(p, index_nibbles_);
+      const std::uint64_t xy =
+          reverse_bits_of_halves(std::uint64_t{laine_karras_permutation(p, keys.seed_x)} << 32 |
+                                 laine_karras_permutation(y_reversed, keys.seed_y));
+      const auto x = static_cast<std::uint32_t>(xy >> 32), y = static_cast<std::uint32_t>(xy);
       // The bits below the 32 scrambled ones, so a point is uniform in double precision: a
       // 2^-32 refinement no estimate can resolve, so one multiply-xorshift of (key, index)
       // serves (uniform over the keys; each half of the word a different refinement).
@@ -203,10 +231,10 @@ class PaddedPixel {
   PathSampler kind_;
   std::uint64_t pixel_key_;
   std::uint32_t count_;
-  unsigned half_bits_;     // of the Sobol' sample shuffle
-  unsigned index_bits_;    // 2 half_bits_: a shuffled index is below 2^index_bits_
-  std::uint32_t columns_;  // of the jittered grid: the largest divisor of count <= sqrt(count)
-  unsigned made_ = 0;      // sets_[0, made_) are made
+  unsigned half_bits_;      // of the Sobol' sample shuffle
+  unsigned index_nibbles_;  // a shuffled index is below 2^(2 half_bits_) <= 16^index_nibbles_
+  std::uint32_t columns_;   // of the jittered grid: the largest divisor of count <= sqrt(count)
+  unsigned made_ = 0;       // sets_[0, made_) are made
   std::array<PaddedSetKeys, k_cached_sets> sets_;
   PaddedSetKeys beyond_{};
 };
