@@ -797,19 +797,19 @@ def ch09_grid_last_win(runs):
 
 number("ch09.grid_last_win_k", "ch09", ch09_grid_last_win)
 
-# Chapter 09's render study (run ch09-render): per sampler and depth (1 and the full 10) the
-# fitted slope of the rms error against spp, its standard error, and the rms error at 1024 spp.
-for sampler in ("independent", "jittered", "sobol"):
-    for depth in (1, 10):
-        number(f"ch09.render_{sampler}_d{depth}", "ch09-render",
-               cell("ch09-render", "render_slopes.csv", "fitted_slope", sampler=sampler,
-                    depth=depth))
-        number(f"ch09.render_{sampler}_d{depth}_se", "ch09-render",
-               cell("ch09-render", "render_slopes.csv", "standard_error", sampler=sampler,
-                    depth=depth))
-        number(f"ch09.render_{sampler}_d{depth}_rmse", "ch09-render",
-               cell("ch09-render", "render_error.csv", "rmse", sampler=sampler, depth=depth,
-                    spp=1024))
+# Chapter 09's render study (runs ch09-render on cornell, ch09-render-spheres on
+# cornell-spheres): per sampler and depth (1 and the full 10) the fitted slope of the rms error
+# against spp, its standard error, and the rms error at 1024 spp.
+for run, prefix in (("ch09-render", "ch09.render_"),
+                    ("ch09-render-spheres", "ch09.render_spheres_")):
+    for sampler in ("independent", "jittered", "sobol"):
+        for depth in (1, 10):
+            number(f"{prefix}{sampler}_d{depth}", run,
+                   cell(run, "render_slopes.csv", "fitted_slope", sampler=sampler, depth=depth))
+            number(f"{prefix}{sampler}_d{depth}_se", run,
+                   cell(run, "render_slopes.csv", "standard_error", sampler=sampler, depth=depth))
+            number(f"{prefix}{sampler}_d{depth}_rmse", run,
+                   cell(run, "render_error.csv", "rmse", sampler=sampler, depth=depth, spp=1024))
 
 # Chapter 08's light choice (light_choice.csv): relMSE of uniform and power-proportional
 # choice over the floor, the ratio of the two away from the dim light and beside it, and the

@@ -8,7 +8,9 @@ numbers as the chapters write them, without a browser:
     over the run's own n's, as a ratio (their errors are deterministic: a least-squares
     standard error is no statistical error);
   - chapter 04's missing-light ratio is compared with the a of the law a^(k+1) fitted to every
-    depth, not with the first measured ratio.
+    depth, not with the first measured ratio;
+  - chapter 09's render study (when the run made one): depth-1 slopes of jittered and Sobol'
+    steeper than independent's beyond their standard errors, full-depth slopes near -1/2.
 
     lessons_checks_test.py REPO_ROOT
 """
@@ -110,6 +112,47 @@ class Chapter04RatioTest(unittest.TestCase):
         self.assertAlmostEqual(ratio.predicted, fitted, places=12)
         self.assertAlmostEqual(ratio.measured, 0.026 / 0.05, places=12)
         self.assertNotAlmostEqual(ratio.predicted, 0.21 / 0.45, places=3)  # not the first ratio
+
+
+class Chapter09RenderStudyTest(unittest.TestCase):
+    # slopes of the pinned cornell run (docs/09_stratified_qmc.md): (sampler, depth) ->
+    # (fitted slope, standard error)
+    PINNED = {("independent", 1): (-0.48, 0.008), ("jittered", 1): (-0.59, 0.015),
+              ("sobol", 1): (-0.61, 0.010), ("independent", 10): (-0.48, 0.016),
+              ("jittered", 10): (-0.55, 0.012), ("sobol", 10): (-0.53, 0.008)}
+
+    def summary(self, changed=None):
+        slopes = dict(self.PINNED)
+        slopes.update(changed or {})
+        return {"render": {"scene": "cornell", "depths": [1, 10], "slopes": [
+            {"sampler": sampler, "depth": depth, "fitted_slope": slope, "standard_error": error,
+             "points": 11} for (sampler, depth), (slope, error) in slopes.items()]}}
+
+    def test_the_pinned_run_passes_every_check(self):
+        checks = [c for c in gallery.ch09_render_checks(self.summary()) if c]
+        self.assertEqual(len(checks), 5)
+        for c in checks:
+            self.assertEqual(c.agreement(), "inside", c.what)
+        # and the chapter's checks include them
+        named(gallery.ch09_checks(self.summary()), "path tracer, cornell, depth 1, sobol")
+
+    def test_a_stratified_slope_no_steeper_than_independent_fails(self):
+        # a sampler that stratified nothing: the slope of independent points within its errors
+        checks = gallery.ch09_render_checks(self.summary({("sobol", 1): (-0.50, 0.010)}))
+        self.assertEqual(named(checks, "path tracer, cornell, depth 1, sobol").agreement(),
+                         "OUTSIDE")
+        self.assertEqual(named(checks, "path tracer, cornell, depth 1, jittered").agreement(),
+                         "inside")
+
+    def test_a_full_depth_slope_far_from_one_half_fails(self):
+        # padding that kept the sets' nesting (-0.35, correlated bounces) or a slope too steep
+        for slope in (-0.35, -0.70):
+            checks = gallery.ch09_render_checks(self.summary({("sobol", 10): (slope, 0.01)}))
+            self.assertEqual(named(checks, "path tracer, cornell, depth 10, sobol").agreement(),
+                             "OUTSIDE", slope)
+
+    def test_a_run_without_the_study_has_no_render_checks(self):
+        self.assertEqual(gallery.ch09_render_checks({}), [])
 
 
 class CaptionsTest(unittest.TestCase):

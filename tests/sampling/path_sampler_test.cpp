@@ -11,6 +11,7 @@
 
 #include "core/math.hpp"
 #include "sampling/path_sampler.hpp"
+#include "sampling/sobol_matrices.hpp"
 
 using namespace mcrt;
 
@@ -20,8 +21,9 @@ namespace {
 std::vector<Vec2> set_points(PathSampler kind, std::uint64_t pixel_key, std::uint32_t count,
                              unsigned set) {
   std::vector<Vec2> points;
+  PaddedPixel pixel(kind, pixel_key, count);
   for (std::uint32_t s = 0; s < count; ++s) {
-    PaddedSample sample(kind, pixel_key, count, s);
+    PaddedSample sample(pixel, s);
     for (unsigned k = 0; k < set; ++k) sample.uniform2();
     points.push_back(sample.uniform2());
   }
@@ -76,6 +78,48 @@ TEST(PathSamplerTest, SobolDimensionZeroIsTheReversedIndex) {
   for (std::uint32_t i = 0; i < 4096; ++i) ASSERT_EQ(sobol_bits(i, 0), reverse_bits(i)) << i;
 }
 
+// The padded sets' own copy of dimension 1's columns (bit-reversed, from the recurrence) is
+// Boost's, column for column.
+TEST(PathSamplerTest, SobolDimensionOneColumnsAreBoosts) {
+  for (unsigned b = 0; b < 32; ++b)
+    EXPECT_EQ(k_sobol_dimension1_reversed[b], reverse_bits(sobol_columns(1)[b])) << b;
+  for (std::uint32_t i : {0u, 1u, 6u, 255u, 4096u, 65535u, 0x12345678u, 0xffffffffu})
+    EXPECT_EQ(sobol_dimension1_reversed(i, 8), reverse_bits(sobol_bits(i, 1))) << i;
+  for (std::uint32_t i = 0; i < 256; ++i)
+    ASSERT_EQ(sobol_dimension1_reversed(i, 2), reverse_bits(sobol_bits(i, 1))) << i;
+}
+
+// Both halves of a word reversed at once are each half reversed.
+TEST(PathSamplerTest, HalvesAreReversedApart) {
+  for (std::uint64_t w : {0x0000000100000000ull, 0x80000000ull, 0x123456789abcdef0ull, ~0ull})
+    EXPECT_EQ(reverse_bits_of_halves(w),
+              std::uint64_t{reverse_bits(static_cast<std::uint32_t>(w >> 32))} << 32 |
+                  reverse_bits(static_cast<std::uint32_t>(w)))
+        << w;
+}
+
+// A sample's point is the same whether its set's keys come from the pixel's cache or are made
+// for it alone (sets beyond the cache): set 40 of a pixel, reached the long way, against a
+// pixel whose cache holds it (made after its first 32 sets were skipped: the same function).
+TEST(PathSamplerTest, SetsBeyondTheCacheAreTheSameFunction) {
+  static_assert(PaddedPixel::k_cached_sets < 40);
+  for (PathSampler kind : {PathSampler::jittered, PathSampler::sobol})
+    for (std::uint32_t s = 0; s < 8; ++s) {
+      PaddedPixel pixel(kind, 5, 8);
+      PaddedSample sample(pixel, s);
+      for (unsigned k = 0; k < 40; ++k) sample.uniform2();
+      const Vec2 long_way = sample.uniform2();  // set 40
+      PaddedPixel other(kind, 5, 8);
+      EXPECT_EQ(other.point(s, 40), long_way) << name_of(kind) << " sample " << s;
+      // and a cached set against the keys made directly
+      const PaddedSetKeys direct = padded_set_keys(kind, 5, 3);
+      const PaddedSetKeys& cached = other.set(3);
+      EXPECT_EQ(direct.key, cached.key);
+      EXPECT_EQ(direct.seed_x, cached.seed_x);
+      EXPECT_EQ(direct.round_b[2], cached.round_b[2]);
+    }
+}
+
 // Padding: each bounce's set is scrambled by a key of its own, so two bounces (and the pixel
 // position) never repeat one another's points. Without padding (one scramble for every set),
 // a path's directions would be the same point at every bounce.
@@ -84,7 +128,7 @@ TEST(PathSamplerTest, EachBounceHasItsOwnScramble) {
     for (std::uint64_t key : {1ull, 7ull})
       for (unsigned a = 0; a < 5; ++a)
         for (unsigned b = a + 1; b < 6; ++b) {
-          EXPECT_NE(PaddedSample::set_key(key, a), PaddedSample::set_key(key, b));
+          EXPECT_NE(padded_set_key(key, a), padded_set_key(key, b));
           const std::vector<Vec2> pa = set_points(kind, key, 16, a);
           const std::vector<Vec2> pb = set_points(kind, key, 16, b);
           int same = 0;
@@ -97,8 +141,9 @@ TEST(PathSamplerTest, ShuffledSampleIsAPermutation) {
   for (std::uint32_t n = 1; n <= 70; ++n)
     for (std::uint64_t key : {0ull, 3ull, 1234567ull}) {
       std::vector<int> hits(n, 0);
+      const PaddedSetKeys keys = padded_set_keys(PathSampler::sobol, key, 1);
       for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t j = shuffled_sample(i, n, key);
+        const std::uint32_t j = n <= 1 ? 0 : shuffled_sample(i, n, shuffle_half_bits(n), keys);
         ASSERT_LT(j, n);
         ++hits[j];
       }
@@ -127,18 +172,19 @@ TEST(PathSamplerTest, PaddedSetsArePairedAtRandom) {
 // Two renders of the same pixel with different first samples (chapter 05's A and B) are
 // randomised independently: their keys, and so their points, differ.
 TEST(PathSamplerTest, PixelsAndSampleBlocksHaveTheirOwnKeys) {
-  EXPECT_NE(PaddedSample::pixel_key(1, 0, 0), PaddedSample::pixel_key(1, 1, 0));
-  EXPECT_NE(PaddedSample::pixel_key(1, 0, 0), PaddedSample::pixel_key(1, 0, 16));
-  EXPECT_NE(PaddedSample::pixel_key(1, 0, 0), PaddedSample::pixel_key(2, 0, 0));
-  EXPECT_NE(set_points(PathSampler::sobol, PaddedSample::pixel_key(1, 0, 0), 16, 1),
-            set_points(PathSampler::sobol, PaddedSample::pixel_key(1, 0, 16), 16, 1));
+  EXPECT_NE(PaddedPixel::pixel_key(1, 0, 0), PaddedPixel::pixel_key(1, 1, 0));
+  EXPECT_NE(PaddedPixel::pixel_key(1, 0, 0), PaddedPixel::pixel_key(1, 0, 16));
+  EXPECT_NE(PaddedPixel::pixel_key(1, 0, 0), PaddedPixel::pixel_key(2, 0, 0));
+  EXPECT_NE(set_points(PathSampler::sobol, PaddedPixel::pixel_key(1, 0, 0), 16, 1),
+            set_points(PathSampler::sobol, PaddedPixel::pixel_key(1, 0, 16), 16, 1));
 }
 
 // A sample is a pure function of (key, count, index) and how many sets came before: made again,
 // in another order, it is the same bits. uniform() takes a whole set (its first coordinate).
 TEST(PathSamplerTest, SamplesArePureFunctionsOfTheirAddress) {
   for (PathSampler kind : {PathSampler::jittered, PathSampler::sobol}) {
-    PaddedSample first(kind, 99, 8, 5), again(kind, 99, 8, 5);
+    PaddedPixel pixel(kind, 99, 8), fresh(kind, 99, 8);
+    PaddedSample first(pixel, 5), again(fresh, 5);
     const Vec2 p0 = first.uniform2();
     const double u1 = first.uniform();
     const Vec2 p2 = first.uniform2();
