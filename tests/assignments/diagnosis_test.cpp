@@ -18,6 +18,8 @@
 #include "assignments/a5/a5_checks.hpp"
 #include "assignments/a6/a6_checks.hpp"
 #include "assignments/a6/a6_produce.hpp"
+#include "assignments/a7/a7_checks.hpp"
+#include "assignments/a7/a7_produce.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "render/mis_known_bugs_a6.hpp"
@@ -31,6 +33,7 @@
 #include "render/path_tracer_known_bugs.hpp"
 #include "render/russian_roulette_known_bugs.hpp"
 #include "sampling/sampling_known_bugs.hpp"
+#include "sampling/point_sets_known_bugs_a7.hpp"
 #include "io/image_file.hpp"
 #include "stats/report.hpp"
 #include "io/image_file_decoding.hpp"
@@ -952,6 +955,82 @@ TEST(A6Reference, DISABLED_PrintReference) {
     std::printf("    {%.17g, %.17g},  // plate %zu, light %zu: %d pixels\n", s[r].mean(),
                 std::sqrt(s[r].variance() / static_cast<double>(s[r].count())), regions[r].plate,
                 regions[r].light, regions[r].pixel_count());
+}
+
+// a7: the solution's point sets and radical inverse, one of them replaced by a known-wrong one.
+template <class Jittered, class Latin, class Halton, class Radical>
+struct A7Producer {
+  Radical radical;
+  std::vector<double> a7_points(A7PointSet kind, std::uint32_t n, unsigned d, std::uint64_t key0,
+                                std::uint32_t key_count,
+                                const std::vector<std::uint32_t>& indices) const {
+    if (kind == A7PointSet::jittered)
+      return a7_point_values(
+          [d](std::uint32_t m, std::uint64_t k) {
+            return Jittered{m, d, k};
+          },
+          n, d, key0, key_count, indices);
+    if (kind == A7PointSet::latin_hypercube)
+      return a7_point_values(
+          [](std::uint32_t m, std::uint64_t k) {
+            return Latin{m, k};
+          },
+          n, d, key0, key_count, indices);
+    return a7_point_values(
+        [](std::uint32_t m, std::uint64_t k) {
+          return Halton{m, k};
+        },
+        n, d, key0, key_count, indices);
+  }
+  std::vector<double> a7_radical_inverse(std::uint32_t base,
+                                         const std::vector<std::uint32_t>& indices) const {
+    std::vector<double> out;
+    for (std::uint32_t i : indices) out.push_back(radical(i, base));
+    return out;
+  }
+};
+template <class Jittered = JitteredPoints, class Latin = LatinHypercubePoints,
+          class Halton = HaltonPoints, class Radical = double (*)(std::uint32_t, std::uint32_t)>
+A7Producer<Jittered, Latin, Halton, Radical> a7_with(Radical radical = &radical_inverse) {
+  return {radical};
+}
+
+TEST_F(Diagnoses, A7SolutionPassesEveryCheck) {
+  auto solution = a7_with();
+  EXPECT_TRUE(check_jittered_strata(solution).passed);
+  EXPECT_TRUE(check_jittered_strata(solution, 11, 4).passed);  // a hidden test's grid, 2 pairs
+  EXPECT_TRUE(check_latin_slabs(solution).passed);
+  EXPECT_TRUE(check_halton_boxes(solution).passed);
+  EXPECT_TRUE(check_radical_inverse(solution, {2, 3, 5, 7, 11, 13}).passed);
+}
+
+TEST_F(Diagnoses, A7JitterOutsideItsStratum) {
+  auto wrong = a7_with<JitterOutsideItsStratum>();
+  expect_diagnosis(check_jittered_strata(wrong), "a jitter outside its stratum");
+}
+
+TEST_F(Diagnoses, A7JitterSharedByEveryStratum) {
+  // stratified, and each point uniform: only the rate test sees a shifted grid
+  auto wrong = a7_with<JitterSharedByEveryStratum>();
+  EXPECT_TRUE(check_jittered_strata(wrong).passed);
+  expect_diagnosis(check_jittered_rate(wrong), "a variance that falls only as 1/n");
+}
+
+TEST_F(Diagnoses, A7LatinHypercubeWithOnePermutation) {
+  auto wrong = a7_with<JitteredPoints, LatinHypercubeOnePermutation>();
+  EXPECT_TRUE(check_latin_slabs(wrong).passed);  // each dimension alone is still a Latin one
+  expect_diagnosis(check_latin_uniform(wrong), "one permutation reused for every dimension");
+}
+
+TEST_F(Diagnoses, A7UnscrambledHaltonClaimedUnbiased) {
+  auto wrong = a7_with<JitteredPoints, LatinHypercubePoints, UnscrambledHalton>();
+  EXPECT_TRUE(check_halton_boxes(wrong).passed);  // the plain set is stratified too
+  expect_diagnosis(check_halton_uniform(wrong), "an unscrambled point set claimed unbiased");
+}
+
+TEST_F(Diagnoses, A7RadicalInverseWithItsDigitsInOrder) {
+  auto wrong = a7_with(&radical_inverse_digits_in_order);
+  expect_diagnosis(check_radical_inverse(wrong, {2, 3, 5, 7}), "the digits are in the wrong order");
 }
 
 }  // namespace

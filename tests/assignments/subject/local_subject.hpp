@@ -12,6 +12,7 @@
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/a5/a5_produce.hpp"
 #include "assignments/a6/a6_produce.hpp"
+#include "assignments/a7/a7_produce.hpp"
 #include "assignments/subject/requests.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/monte_carlo.hpp"
@@ -25,6 +26,8 @@
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
+#include "sampling/point_sets.hpp"
+#include "sampling/radical_inverse.hpp"
 #include "sampling/sphere.hpp"
 
 namespace mcrt::testing::assignment {
@@ -225,6 +228,41 @@ struct LocalSubject {
     return dielectric_answers([](const Material& m, const Vec3& wo, const Vec3& n, bool entering,
                                  double u) { return sample_dielectric(m, wo, n, entering, u); },
                               ior, queries);
+  }
+
+  /// a7.1, a7.2, a7.4: the student's point set `kind` at each key and index (a7_point_values).
+  std::vector<double> a7_points(A7PointSet kind, std::uint32_t n, unsigned d, std::uint64_t key0,
+                                std::uint32_t key_count,
+                                const std::vector<std::uint32_t>& indices) const {
+    switch (kind) {
+      case A7PointSet::jittered:
+        return a7_point_values(
+            [d](std::uint32_t m, std::uint64_t k) {
+              return JitteredPoints{m, d, k};
+            },
+            n, d, key0, key_count, indices);
+      case A7PointSet::latin_hypercube:
+        return a7_point_values(
+            [](std::uint32_t m, std::uint64_t k) {
+              return LatinHypercubePoints{m, k};
+            },
+            n, d, key0, key_count, indices);
+      case A7PointSet::halton: break;
+    }
+    return a7_point_values(
+        [](std::uint32_t m, std::uint64_t k) {
+          return HaltonPoints{m, k};
+        },
+        n, d, key0, key_count, indices);
+  }
+
+  /// a7.3: the student's radical_inverse(i, base) at each index.
+  std::vector<double> a7_radical_inverse(std::uint32_t base,
+                                         const std::vector<std::uint32_t>& indices) const {
+    std::vector<double> out;
+    out.reserve(indices.size());
+    for (std::uint32_t i : indices) out.push_back(radical_inverse(i, base));
+    return out;
   }
 
   void stop() {}  // nothing runs apart from this process

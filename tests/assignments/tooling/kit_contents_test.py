@@ -15,7 +15,7 @@ import tree_copy  # noqa: E402
 
 ROOT = os.path.abspath(sys.argv.pop(1)) if len(sys.argv) > 1 else os.path.abspath(
     os.path.join(os.path.dirname(__file__), "../../.."))
-ASSIGNMENTS = ["a1", "a2", "a3", "a4", "a5", "a6"]
+ASSIGNMENTS = ["a1", "a2", "a3", "a4", "a5", "a6", "a7"]
 
 
 def make(tree, *args):
