@@ -26,8 +26,6 @@
 #include "sampling/hemisphere.hpp"
 #include "sampling/phong.hpp"
 #include "sampling/plane.hpp"
-#include "sampling/point_sets.hpp"
-#include "sampling/radical_inverse.hpp"
 #include "sampling/sphere.hpp"
 
 namespace mcrt::testing::assignment {
@@ -230,39 +228,15 @@ struct LocalSubject {
                               ior, queries);
   }
 
-  /// a7.1, a7.2, a7.4: the student's point set `kind` at each key and index (a7_point_values).
+  /// a7.1-a7.4: the student's point sets and radical inverse (A7Producer).
   std::vector<double> a7_points(A7PointSet kind, std::uint32_t n, unsigned d, std::uint64_t key0,
                                 std::uint32_t key_count,
                                 const std::vector<std::uint32_t>& indices) const {
-    switch (kind) {
-      case A7PointSet::jittered:
-        return a7_point_values(
-            [d](std::uint32_t m, std::uint64_t k) {
-              return JitteredPoints{m, d, k};
-            },
-            n, d, key0, key_count, indices);
-      case A7PointSet::latin_hypercube:
-        return a7_point_values(
-            [](std::uint32_t m, std::uint64_t k) {
-              return LatinHypercubePoints{m, k};
-            },
-            n, d, key0, key_count, indices);
-      case A7PointSet::halton: break;
-    }
-    return a7_point_values(
-        [](std::uint32_t m, std::uint64_t k) {
-          return HaltonPoints{m, k};
-        },
-        n, d, key0, key_count, indices);
+    return a7_with().a7_points(kind, n, d, key0, key_count, indices);
   }
-
-  /// a7.3: the student's radical_inverse(i, base) at each index.
   std::vector<double> a7_radical_inverse(std::uint32_t base,
                                          const std::vector<std::uint32_t>& indices) const {
-    std::vector<double> out;
-    out.reserve(indices.size());
-    for (std::uint32_t i : indices) out.push_back(radical_inverse(i, base));
-    return out;
+    return a7_with().a7_radical_inverse(base, indices);
   }
 
   void stop() {}  // nothing runs apart from this process
