@@ -53,6 +53,7 @@ struct JitteredPoints {
   }
 
   double operator()(std::uint32_t i, unsigned j) const {
+    // ASSIGNMENT a7.1 BEGIN stub: (void)i; (void)j; NOT_IMPLEMENTED(JitteredPoints);
     const double jitter = hash_uniform(key, i, j);
     const unsigned pair = j / 2;
     const std::uint32_t cell = permutation_element(i, n, hash_bits(key, ~std::uint64_t{0}, pair));
@@ -61,6 +62,7 @@ struct JitteredPoints {
     const std::uint32_t columns = grid_columns(n);
     const std::uint32_t rows = n / columns;
     return j % 2 == 0 ? (cell % columns + jitter) / columns : (cell / columns + jitter) / rows;
+    // ASSIGNMENT a7.1 END
   }
 };
 
@@ -73,8 +75,10 @@ struct LatinHypercubePoints {
   std::uint32_t n;
   std::uint64_t key;
   double operator()(std::uint32_t i, unsigned j) const {
+    // ASSIGNMENT a7.2 BEGIN stub: (void)i; (void)j; NOT_IMPLEMENTED(LatinHypercubePoints);
     const std::uint32_t slab = permutation_element(i, n, hash_bits(key, ~std::uint64_t{0}, j));
     return (slab + hash_uniform(key, i, j)) / n;
+    // ASSIGNMENT a7.2 END
   }
 };
 
@@ -126,6 +130,7 @@ struct HaltonPoints {
 
   double operator()(std::uint32_t i, unsigned j) const {
     if (j >= k_max_dimensions) throw std::out_of_range("HaltonPoints: too many dimensions");
+    // ASSIGNMENT a7.4 BEGIN stub: (void)i; NOT_IMPLEMENTED(HaltonPoints);
     const std::uint32_t base = prime(j);
     const std::uint64_t dimension_key = hash_bits(key, ~std::uint64_t{0}, j);
     double width = 1.0;  // of the interval the digits so far have chosen: p^-k
@@ -137,6 +142,7 @@ struct HaltonPoints {
     }
     value += hash_uniform(key, i, j) * width;           // uniform within the chosen interval
     return value < 1.0 ? value : 0x1.fffffffffffffp-1;  // the rounding of the sum
+    // ASSIGNMENT a7.4 END
   }
 };
 

@@ -68,7 +68,9 @@ class QuickRunTest(unittest.TestCase):
                      "a5_nee_regions", "a5_nee_two_lights", "a5_nee_beyond_cap",
                      "a6_phong_lobe", "a6_balance_regions", "a6_power_regions",
                      "a4_hidden_furnace", "a5_hidden_roulette", "a6_hidden_lobe_m3",
-                     "a4_hidden_furnace_variants", "a5_hidden_roulette_variants"):
+                     "a4_hidden_furnace_variants", "a5_hidden_roulette_variants",
+                     "a7_jittered_uniform", "a7_jittered_rate", "a7_latin_uniform",
+                     "a7_halton_uniform"):
             self.assertIn(name, names)
 
     def test_check_columns_are_sane(self):

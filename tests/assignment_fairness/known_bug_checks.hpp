@@ -15,6 +15,8 @@
 #include "assignments/a4/a4_checks.hpp"
 #include "assignments/a5/a5_checks.hpp"
 #include "assignments/a6/a6_checks.hpp"
+#include "assignments/a7/a7_checks.hpp"
+#include "assignments/a7/a7_produce.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "render/mis_known_bugs_a6.hpp"
@@ -28,6 +30,7 @@
 #include "render/path_tracer_known_bugs.hpp"
 #include "render/russian_roulette_known_bugs.hpp"
 #include "sampling/sampling_known_bugs.hpp"
+#include "sampling/point_sets_known_bugs_a7.hpp"
 
 namespace mcrt::testing::assignment {
 
@@ -361,6 +364,34 @@ inline std::vector<MeasuredBug> known_bugs() {
         std::string invalid, table;
         return dielectric_branch_p_value(wrong, seed, invalid, table);
       });
+  // a7: exact stratification and the recurrence; a point's chi-square; jittered's rate
+  bugs.push_back(exact_bug("a7_jitter_outside_its_stratum", "A7JitterOutsideItsStratum",
+                           "a7_jittered_strata", [] {
+                             auto wrong = a7_with<JitterOutsideItsStratum>();
+                             return check_jittered_strata(wrong);
+                           }));
+  add("a7_jitter_shared_by_every_stratum", "A7JitterSharedByEveryStratum", "a7_jittered_rate",
+      [](std::uint64_t seed) {
+        auto wrong = a7_with<JitterSharedByEveryStratum>();
+        return jittered_rate(wrong, seed).p_value;
+      });
+  add("a7_latin_hypercube_one_permutation", "A7LatinHypercubeWithOnePermutation",
+      "a7_latin_uniform", [](std::uint64_t seed) {
+        auto wrong = a7_with<JitteredPoints, LatinHypercubeOnePermutation>();
+        return point_uniformity(wrong, A7PointSet::latin_hypercube, k_a7_latin_n, k_a7_latin_dims,
+                                7, 0, k_a7_latin_dims - 1, seed)
+            .p_value;
+      });
+  add("a7_unscrambled_halton", "A7UnscrambledHaltonClaimedUnbiased", "a7_halton_uniform",
+      [](std::uint64_t seed) {
+        auto wrong = a7_with<JitteredPoints, LatinHypercubePoints, UnscrambledHalton>();
+        return point_uniformity(wrong, A7PointSet::halton, k_a7_halton_n, 2, 5, 0, 1, seed).p_value;
+      });
+  bugs.push_back(exact_bug("a7_radical_inverse_digits_in_order",
+                           "A7RadicalInverseWithItsDigitsInOrder", "a7_radical_inverse", [] {
+                             auto wrong = a7_with(&radical_inverse_digits_in_order);
+                             return check_radical_inverse(wrong, {2, 3, 5, 7});
+                           }));
   return bugs;
 }
 

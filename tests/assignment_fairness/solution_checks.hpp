@@ -1,5 +1,5 @@
 #pragma once
-// Every p-value-based check of the assignments a1-a6 on the solution (LocalSubject: the
+// Every p-value-based check of the assignments a1-a7 on the solution (LocalSubject: the
 // tree's own functions, in this process), each through the per-seed function its test calls
 // at the grading seeds (tests/assignments/aN/aN_checks.hpp), so that what is measured is what
 // grades. The hidden tests that are statistical come from tests/assignments/hidden/ when the
@@ -16,6 +16,7 @@
 #include "assignments/a5/a5_checks.hpp"
 #include "assignments/a6/a6_checks.hpp"
 #include "assignments/a6/a6_dielectric_checks.hpp"
+#include "assignments/a7/a7_checks.hpp"
 #include "assignments/subject/subject.hpp"
 #include "sampling/cosine_power.hpp"
 
@@ -150,6 +151,27 @@ inline std::vector<MeasuredCheck> solution_checks() {
                       std::string wrong, table;
                       return dielectric_branch_p_value(s, seed, wrong, table);
                     }});
+  // a7: a point's chi-square over randomisations (a7.1, a7.2, a7.4) and jittered's variance ratio
+  checks.push_back({"a7_jittered_uniform", "a7.A7.Task1JitteredPointIsUniform", k_seed_alpha, true,
+                    false, [&s](std::uint64_t seed) {
+                      return point_uniformity(s, A7PointSet::jittered, k_a7_grid * k_a7_grid, 2, 5,
+                                              0, 1, seed)
+                          .p_value;
+                    }});
+  checks.push_back({"a7_jittered_rate", "a7.A7.Task1JitteredVarianceFallsAsOneOverNSquared",
+                    k_seed_alpha, true, false,
+                    [&s](std::uint64_t seed) { return jittered_rate(s, seed).p_value; }});
+  checks.push_back({"a7_latin_uniform", "a7.A7.Task2LatinHypercubeDimensionsAreIndependent",
+                    k_seed_alpha, true, false, [&s](std::uint64_t seed) {
+                      return point_uniformity(s, A7PointSet::latin_hypercube, k_a7_latin_n,
+                                              k_a7_latin_dims, 7, 0, k_a7_latin_dims - 1, seed)
+                          .p_value;
+                    }});
+  checks.push_back(
+      {"a7_halton_uniform", "a7.A7.Task4ScrambledHaltonPointIsUniform", k_seed_alpha, true, false,
+       [&s](std::uint64_t seed) {
+         return point_uniformity(s, A7PointSet::halton, k_a7_halton_n, 2, 5, 0, 1, seed).p_value;
+       }});
 #ifdef MCRT_FAIRNESS_HIDDEN
   for (MeasuredCheck& c : hidden_statistical_checks(s)) checks.push_back(std::move(c));
 #endif

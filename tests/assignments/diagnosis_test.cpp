@@ -18,6 +18,8 @@
 #include "assignments/a5/a5_checks.hpp"
 #include "assignments/a6/a6_checks.hpp"
 #include "assignments/a6/a6_produce.hpp"
+#include "assignments/a7/a7_checks.hpp"
+#include "assignments/a7/a7_produce.hpp"
 #include "assignments/known_wrong_producers.hpp"
 #include "assignments/subject/subject.hpp"
 #include "render/mis_known_bugs_a6.hpp"
@@ -31,6 +33,7 @@
 #include "render/path_tracer_known_bugs.hpp"
 #include "render/russian_roulette_known_bugs.hpp"
 #include "sampling/sampling_known_bugs.hpp"
+#include "sampling/point_sets_known_bugs_a7.hpp"
 #include "io/image_file.hpp"
 #include "stats/report.hpp"
 #include "io/image_file_decoding.hpp"
@@ -952,6 +955,66 @@ TEST(A6Reference, DISABLED_PrintReference) {
     std::printf("    {%.17g, %.17g},  // plate %zu, light %zu: %d pixels\n", s[r].mean(),
                 std::sqrt(s[r].variance() / static_cast<double>(s[r].count())), regions[r].plate,
                 regions[r].light, regions[r].pixel_count());
+}
+
+TEST_F(Diagnoses, A7SolutionPassesEveryCheck) {
+  auto solution = a7_with();
+  EXPECT_TRUE(check_jittered_strata(solution).passed);
+  for (std::uint32_t k : {5u, 11u, 16u})  // the hidden test's grids (key.py): 2 pairs
+    EXPECT_TRUE(check_jittered_strata(solution, k, 4).passed) << k;
+  EXPECT_TRUE(check_latin_slabs(solution).passed);
+  EXPECT_TRUE(check_halton_boxes(solution).passed);
+  EXPECT_TRUE(check_radical_inverse(solution, {2, 3, 5, 7, 11, 13}).passed);
+}
+
+TEST_F(Diagnoses, A7JitterOutsideItsStratum) {
+  auto wrong = a7_with<JitterOutsideItsStratum>();
+  expect_diagnosis(check_jittered_strata(wrong), "a jitter outside its stratum");
+}
+
+TEST_F(Diagnoses, A7JitterSharedByEveryStratum) {
+  // stratified, and each point uniform: only the rate test sees a shifted grid
+  auto wrong = a7_with<JitterSharedByEveryStratum>();
+  EXPECT_TRUE(check_jittered_strata(wrong).passed);
+  expect_diagnosis(check_jittered_rate(wrong), "a variance that falls only as 1/n");
+}
+
+TEST_F(Diagnoses, A7LatinHypercubeWithOnePermutation) {
+  auto wrong = a7_with<JitteredPoints, LatinHypercubeOnePermutation>();
+  EXPECT_TRUE(check_latin_slabs(wrong).passed);  // each dimension alone is still a Latin one
+  expect_diagnosis(check_latin_uniform(wrong), "one permutation reused for every dimension");
+}
+
+TEST_F(Diagnoses, A7UnscrambledHaltonClaimedUnbiased) {
+  auto wrong = a7_with<JitteredPoints, LatinHypercubePoints, UnscrambledHalton>();
+  EXPECT_TRUE(check_halton_boxes(wrong).passed);  // the plain set is stratified too
+  expect_diagnosis(check_halton_uniform(wrong), "an unscrambled point set claimed unbiased");
+}
+
+TEST_F(Diagnoses, A7RadicalInverseWithItsDigitsInOrder) {
+  auto wrong = a7_with(&radical_inverse_digits_in_order);
+  expect_diagnosis(check_radical_inverse(wrong, {2, 3, 5, 7}), "the digits are in the wrong order");
+}
+
+// a7's statistical checks on the solution, their p-values at the grading seeds and the rate
+// test's ratio over 100 seeds: run by hand with --gtest_also_run_disabled_tests.
+TEST(A7Measure, DISABLED_PrintPValues) {
+  auto solution = a7_with();
+  std::printf("jittered uniform: %s\n", check_jittered_uniform(solution).message.c_str());
+  std::printf("latin uniform: %s\n", check_latin_uniform(solution).message.c_str());
+  std::printf("halton uniform: %s\n", check_halton_uniform(solution).message.c_str());
+  auto shared = a7_with<JitterSharedByEveryStratum>();
+  RunningStats log_ratio, log_ratio_shared;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    log_ratio.add(std::log(jittered_rate(solution, seed).ratio));
+    log_ratio_shared.add(std::log(jittered_rate(shared, seed).ratio));
+  }
+  std::printf(
+      "rate, solution: log ratio mean %.4f sd %.4f (ratio %.1f); shared jitter: mean %.4f "
+      "sd %.4f (ratio %.1f); graded above log 64 = %.4f\n",
+      log_ratio.mean(), std::sqrt(log_ratio.variance()), std::exp(log_ratio.mean()),
+      log_ratio_shared.mean(), std::sqrt(log_ratio_shared.variance()),
+      std::exp(log_ratio_shared.mean()), std::log(64.0));
 }
 
 }  // namespace

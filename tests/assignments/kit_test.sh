@@ -146,7 +146,7 @@ case "$a" in
 esac
 
 case "$a" in
-  a1|a2|a3|a4|a5|a6)  # a6's lobe, heuristics and MIS (every kit stubs them: a6 is the last)
+  a1|a2|a3|a4|a5|a6)  # a6's lobe, heuristics and MIS (every kit up to a6's stubs them)
     grep -q 'not implemented: a6.1 sample_phong_lobe_local' "$kit/common/sampling/phong.hpp" || fail "a6.1 is not stubbed"
     leak common/sampling/phong.hpp 'const double one_minus_cos = -std::expm1(log_cos_alpha);' "a6.1's lobe sampler"
     leak common/sampling/phong.hpp '(m + 1.0) * k_inv_two_pi * phong_cos_power(' "a6.1's lobe pdf"
@@ -156,6 +156,18 @@ case "$a" in
     leak tests 'mis_weight(MisHeuristic::balance, b.pdf_bsdf, n * b.pdf_light)' "render/glossy_direct_test.cpp's known-wrong MIS"
     leak docs 'mis_weight(heuristic, b.pdf_bsdf, b.pdf_light)' "chapter 08's page quoting the plates' MIS"
     leak tests 'inline Vec3 sample_phong_lobe_cos_u_to_one_over_m' "sampling/sampling_known_bugs.hpp (a naive a6.1 lobe sampler)"
+    ;;
+esac
+
+case "$a" in
+  a1|a2|a3|a4|a5|a6|a7)  # a7's point sets and radical inverse (every kit stubs them: a7 is the last)
+    grep -q 'not implemented: a7.1 JitteredPoints' "$kit/common/sampling/point_sets.hpp" || fail "a7.1 is not stubbed"
+    grep -q 'not implemented: a7.3 radical_inverse' "$kit/common/sampling/radical_inverse.hpp" || fail "a7.3 is not stubbed"
+    leak common/sampling/point_sets.hpp '(cell % columns + jitter) / columns' "a7.1's jitter"
+    leak common/sampling/point_sets.hpp 'return (slab + hash_uniform(key, i, j)) / n;' "a7.2's Latin hypercube"
+    leak common/sampling/radical_inverse.hpp 'mirrored = mirrored * base + rest % base;' "a7.3's radical inverse"
+    leak common/sampling/point_sets.hpp 'permutation_element(digits % base, base, dimension_key + k)' "a7.4's scrambled digits"
+    leak tests 'struct LatinHypercubeOnePermutation' "sampling/point_sets_known_bugs_a7.hpp (a7's sets but for one line)"
     ;;
 esac
 

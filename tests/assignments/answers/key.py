@@ -73,6 +73,12 @@ PARAMS = {
         "p_light": (2.4, steps(0.5, 5.0, 1e-3, 3)),                # per steradian
         "p_bsdf": (0.7, steps(0.1, 2.0, 1e-3, 3)),                 # per steradian
     },
+    "a7": {
+        "index": (1234, list(range(100, 100001))),                  # i of phi_b(i)
+        "base": (5, [3, 5, 7, 11, 13]),                             # b of phi_b(i)
+        "slope": (2.5, steps(0.5, 3.0, 1e-4, 4)),                   # f(x) = c x on [0, 1]
+        "strata": (12, list(range(4, 65))),                         # jittered strata n
+    },
 }
 
 # The hidden tests' seeds and parameters: scripts/make-assignment --variant writes them into
@@ -89,6 +95,8 @@ HIDDEN = {
     "a5": {"seed": (4243, None), "roulette_q": (0.9, [round(0.85 + 0.01 * i, 2) for i in range(11)]),
            "roulette_albedo": (0.6, [round(0.5 + 0.01 * i, 2) for i in range(16)]),
            "cosine_albedo": (0.8, [round(0.6 + 0.01 * i, 2) for i in range(31)])},
+    # a7: the jittered grid's side of the hidden stratification test (n = k^2 points)
+    "a7": {"seed": (7331, None), "grid": (11, list(range(5, 17)))},
 }
 
 
@@ -304,8 +312,41 @@ def questions_a6(p):
     ]
 
 
+def radical_inverse(i, b):
+    """phi_b(i): i's base-b digits mirrored about the point, as an exact fraction's float."""
+    mirrored, scale = 0, 1
+    while i:
+        i, d = divmod(i, b)
+        mirrored, scale = mirrored * b + d, scale * b
+    return mirrored / scale
+
+
+def questions_a7(p):
+    i, b, c, n = p["index"], p["base"], p["slope"], p["strata"]
+    return [
+        number("radical_inverse", 1, "phi_b(i), the radical inverse of i in base b (i and b given)",
+               radical_inverse(i, b), "write i in base b and mirror its digits about the point"),
+        number("jittered_variance", 1,
+               "The variance of the jittered estimate of the integral of f(x) = c x over [0, 1] with n strata",
+               c * c / (12.0 * n ** 3),
+               "each stratum's point is uniform on an interval of width 1/n: c^2 / (12 n^2) each, "
+               "and the estimate is the mean of n of them"),
+        choice("unscrambled_halton", 1,
+               "The plain (unscrambled) Halton points, used as an estimator (1/n) sum f(x_i), give an estimate that is",
+               {"a": "unbiased, since the points are evenly spread",
+                "b": "deterministic, so biased for most f: its error is a fixed number",
+                "c": "unbiased when n is a power of the base"},
+               "b", "an estimate is unbiased when each point is uniform; a fixed point is not random"),
+        text("never_worse", 2,
+             "Why is the variance of a jittered estimate never above that of independent points at equal n?",
+             ["1: Var = (1/n^2) sum_k sigma_k^2, the variances within the equal-probability strata",
+              "1: sigma^2 = (1/n) sum_k sigma_k^2 + (1/n) sum_k (mu_k - mu)^2: stratifying removes the "
+              "variance between the strata' means, which is never negative"]),
+    ]
+
+
 QUESTIONS = {"a1": questions_a1, "a2": questions_a2, "a3": questions_a3, "a4": questions_a4,
-             "a5": questions_a5, "a6": questions_a6}
+             "a5": questions_a5, "a6": questions_a6, "a7": questions_a7}
 
 
 def questions(a, secret=None):

@@ -12,6 +12,7 @@
 #include "assignments/a4/a4_produce.hpp"
 #include "assignments/a5/a5_produce.hpp"
 #include "assignments/a6/a6_produce.hpp"
+#include "assignments/a7/a7_produce.hpp"
 #include "assignments/subject/requests.hpp"
 #include "integration/disk_area.hpp"
 #include "integration/monte_carlo.hpp"
@@ -225,6 +226,17 @@ struct LocalSubject {
     return dielectric_answers([](const Material& m, const Vec3& wo, const Vec3& n, bool entering,
                                  double u) { return sample_dielectric(m, wo, n, entering, u); },
                               ior, queries);
+  }
+
+  /// a7.1-a7.4: the student's point sets and radical inverse (A7Producer).
+  std::vector<double> a7_points(A7PointSet kind, std::uint32_t n, unsigned d, std::uint64_t key0,
+                                std::uint32_t key_count,
+                                const std::vector<std::uint32_t>& indices) const {
+    return a7_with().a7_points(kind, n, d, key0, key_count, indices);
+  }
+  std::vector<double> a7_radical_inverse(std::uint32_t base,
+                                         const std::vector<std::uint32_t>& indices) const {
+    return a7_with().a7_radical_inverse(base, indices);
   }
 
   void stop() {}  // nothing runs apart from this process

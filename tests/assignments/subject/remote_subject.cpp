@@ -422,4 +422,30 @@ std::vector<DielectricAnswer> RemoteSubject::a6_dielectric(
   return out;
 }
 
+std::vector<double> RemoteSubject::a7_points(A7PointSet kind, std::uint32_t n, unsigned d,
+                                             std::uint64_t key0, std::uint32_t key_count,
+                                             const std::vector<std::uint32_t>& indices) {
+  std::vector<double> params{static_cast<double>(kind), static_cast<double>(n),
+                             static_cast<double>(d), as_number(key0),
+                             static_cast<double>(key_count)};
+  for (std::uint32_t i : indices) params.push_back(static_cast<double>(i));
+  std::vector<double> answer = call(k_request_a7_points, params);
+  const std::size_t expected = std::size_t{key_count} * indices.size() * d;
+  if (answer.size() != expected)
+    broken(k_request_a7_points,
+           fmt::format("{} numbers for {} coordinates", answer.size(), expected));
+  return answer;
+}
+
+std::vector<double> RemoteSubject::a7_radical_inverse(std::uint32_t base,
+                                                      const std::vector<std::uint32_t>& indices) {
+  std::vector<double> params{static_cast<double>(base)};
+  for (std::uint32_t i : indices) params.push_back(static_cast<double>(i));
+  std::vector<double> answer = call(k_request_a7_radical_inverse, params);
+  if (answer.size() != indices.size())
+    broken(k_request_a7_radical_inverse,
+           fmt::format("{} numbers for {} indices", answer.size(), indices.size()));
+  return answer;
+}
+
 }  // namespace mcrt::testing::assignment

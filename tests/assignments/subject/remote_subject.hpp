@@ -72,6 +72,10 @@ class RemoteSubject {
                                  std::uint64_t seed);
   std::vector<DielectricAnswer> a6_dielectric(double ior,
                                               const std::vector<DielectricQuery>& queries);
+  std::vector<double> a7_points(A7PointSet kind, std::uint32_t n, unsigned d, std::uint64_t key0,
+                                std::uint32_t key_count, const std::vector<std::uint32_t>& indices);
+  std::vector<double> a7_radical_inverse(std::uint32_t base,
+                                         const std::vector<std::uint32_t>& indices);
 
   /// Sends one request and returns the numbers of its answer (starting the program first).
   std::vector<double> call(const std::string& name, const std::vector<double>& params);

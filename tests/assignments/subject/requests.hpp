@@ -126,6 +126,14 @@ struct DielectricAnswer {
 inline constexpr std::size_t k_dielectric_query_numbers = 8;
 inline constexpr std::size_t k_dielectric_answer_numbers = 7;
 
+/// a7: the point sets a student writes (the i-th point of n in [0,1)^d for a key).
+enum class A7PointSet { jittered, latin_hypercube, halton };
+/// Coordinates of points of a7's sets: for each of key_count keys (key0, key0 + 1, ...), each
+/// index asked, each dimension j < d.
+inline constexpr const char* k_request_a7_points = "a7_points";
+/// phi_b(i) of a7.3 for each index asked.
+inline constexpr const char* k_request_a7_radical_inverse = "a7_radical_inverse";
+
 /// A seed, block or count sent as a double: exact below 2^53, which every request stays under.
 inline double as_number(std::uint64_t x) { return static_cast<double>(x); }
 

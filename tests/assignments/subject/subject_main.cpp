@@ -241,6 +241,34 @@ std::vector<double> answer(const LocalSubject& s, const std::string& name,
         out.push_back(x);
     return out;
   }
+  if (name == k_request_a7_points) {
+    if (params.size() < 5)
+      throw std::invalid_argument("a7_points takes a set, n, d, a key, a count and indices");
+    std::vector<std::uint32_t> indices;
+    for (std::size_t i = 5; i < params.size(); ++i)
+      indices.push_back(static_cast<std::uint32_t>(whole(params[i], 1 << 24)));
+    // n * d * keys * indices numbers at most k_max_frame_values: the frame's limit
+    const int n = whole(params[1], 1 << 24), d = whole(params[2], 32),
+              keys = whole(params[4], 1 << 24);
+    if (n < 1 ||
+        static_cast<double>(d) * keys * static_cast<double>(indices.size()) > k_max_frame_values)
+      throw std::invalid_argument("a7_points: too many numbers asked");
+    for (std::uint32_t i : indices)
+      if (i >= static_cast<std::uint32_t>(n))
+        throw std::invalid_argument("a7_points: an index >= n");
+    return s.a7_points(static_cast<A7PointSet>(whole(params[0], 2)), static_cast<std::uint32_t>(n),
+                       static_cast<unsigned>(d), seed(params[3]), static_cast<std::uint32_t>(keys),
+                       indices);
+  }
+  if (name == k_request_a7_radical_inverse) {
+    if (params.empty()) throw std::invalid_argument("a7_radical_inverse takes a base and indices");
+    const int base = whole(params[0], 1 << 16);
+    if (base < 2) throw std::invalid_argument("a7_radical_inverse: a base below 2");
+    std::vector<std::uint32_t> indices;
+    for (std::size_t i = 1; i < params.size(); ++i)
+      indices.push_back(static_cast<std::uint32_t>(whole(params[i], 1 << 30)));
+    return s.a7_radical_inverse(static_cast<std::uint32_t>(base), indices);
+  }
   throw std::invalid_argument(fmt::format("unknown request {}", name));
 }
 
