@@ -181,7 +181,7 @@ inline void print_table(const Chapter& chapter, const auto& o, const Table& erro
              total.seconds, total.rays_per_second(), total.non_finite_samples);
   fmt::print(
       "  wrote {}/{{spp_NNNN.png,.pfm, noise_strip.png, rmse_vs_spp.csv,.png, "
-      "depth_bias.csv (with a reference), "
+      "depth_bias.csv (with a reference), smallpt.png (unless --smallpt-spp 0), "
       "summary.json, timings.json}}\n",
       o.common.out.string());
 }
