@@ -246,6 +246,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--sampler halton", "--sampler"}, BadInput{"--sampler", "--sampler"},
                       BadInput{"--reference-spp -1", "--reference-spp"},
                       BadInput{"--reference-spp 2000000", "--reference-spp"},
+                      BadInput{"--smallpt-spp -1", "--smallpt-spp"},
+                      BadInput{"--smallpt-spp 70000", "--smallpt-spp"},
                       BadInput{"--width 16384 --height 16384", "--width"},
                       BadInput{"--width 8192 --height 4096 --spp 4096", "--spp"},
                       // Accepted by the albedo check, but its reference's paths would have a
