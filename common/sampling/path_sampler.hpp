@@ -21,7 +21,8 @@
 #include <string_view>
 
 #include "core/math.hpp"
-#include "sampling/owen_scramble.hpp"
+#include "sampling/padded_sobol.hpp"
+#include "sampling/padded_sobol_block.hpp"
 #include "sampling/permutation.hpp"
 #include "sampling/point_random.hpp"
 #include "sampling/point_sets.hpp"
@@ -51,116 +52,20 @@ inline std::optional<PathSampler> path_sampler_named(std::string_view name) {
   return std::nullopt;
 }
 
-/// Dimension 1 of Sobol' points (direction numbers all 1: Pascal's triangle mod 2) has the
-/// columns c_0 = 2^31, c_b = c_(b-1) xor (c_(b-1) >> 1). Stored bit-reversed here, so the
-/// reversed bits of a point's y, which Owen scrambling works on, are xors of these;
-/// tests/sampling/path_sampler_test.cpp checks them against Boost's (sobol_matrices.hpp).
-inline constexpr std::array<std::uint32_t, 32> k_sobol_dimension1_reversed = [] {
-  std::array<std::uint32_t, 32> columns{};
-  std::uint32_t c = 0x80000000u;
-  for (unsigned b = 0; b < 32; ++b, c ^= c >> 1) columns[b] = reverse_bits(c);
-  return columns;
-}();
-
-/// The same columns summed four index bits at a time: entry [k][v] is the xor of the columns
-/// 4k + j for the bits j set in v, so a 2^m-point set's y takes ceil(m / 4) lookups, no branch.
-inline constexpr std::array<std::array<std::uint32_t, 16>, 8> k_sobol_dimension1_nibbles = [] {
-  std::array<std::array<std::uint32_t, 16>, 8> sums{};
-  for (unsigned k = 0; k < 8; ++k)
-    for (unsigned v = 0; v < 16; ++v)
-      for (unsigned j = 0; j < 4; ++j)
-        if ((v >> j) & 1u) sums[k][v] ^= k_sobol_dimension1_reversed[4 * k + j];
-  return sums;
-}();
-
-/// Dimension 1 of Sobol' point p, bit-reversed, for p < 2^(4 nibbles).
-inline std::uint32_t sobol_dimension1_reversed(std::uint32_t p, unsigned nibbles) {
-  std::uint32_t y = 0;
-  for (unsigned k = 0; k < nibbles; ++k) y ^= k_sobol_dimension1_nibbles[k][(p >> (4 * k)) & 15u];
-  return y;
-}
-
-/// reverse_bits of each 32-bit half of w, both at once (reverse_bits' swaps on 64 bits, all but
-/// the last, which would exchange the halves).
-constexpr std::uint64_t reverse_bits_of_halves(std::uint64_t w) {
-  w = ((w >> 1) & 0x5555555555555555ull) | ((w & 0x5555555555555555ull) << 1);
-  w = ((w >> 2) & 0x3333333333333333ull) | ((w & 0x3333333333333333ull) << 2);
-  w = ((w >> 4) & 0x0f0f0f0f0f0f0f0full) | ((w & 0x0f0f0f0f0f0f0f0full) << 4);
-  w = ((w >> 8) & 0x00ff00ff00ff00ffull) | ((w & 0x00ff00ff00ff00ffull) << 8);
-  return ((w >> 16) & 0x0000ffff0000ffffull) | ((w & 0x0000ffff0000ffffull) << 16);
-}
-
-/// What a 2D set of a pixel needs whatever the sample, made once per pixel: its key (jittered:
-/// its permutation of the cells; both: the low bits of each sample) and, for Sobol' sets, the
-/// two Owen scrambles and the four rounds of the sample shuffle.
-/// No initialisers: a pixel's cache of them is left unwritten until a sample reaches a set.
-struct PaddedSetKeys {
-  std::uint64_t key;
-  std::uint32_t seed_x, seed_y;          ///< sobol: the coordinates' Owen scrambles
-  std::uint32_t round_a[3], round_b[3];  ///< sobol: the shuffle's round functions
-};
-
-/// The key of 2D set `set` (0: the pixel position, 1 + b: bounce b) of pixel_key's pixel.
-inline std::uint64_t padded_set_key(std::uint64_t pixel_key, unsigned set) {
-  return mix64(pixel_key + (set + std::uint64_t{1}) * k_stream_offset);
-}
-
-/// Set `set`'s keys (each mix64, SplitMix64's finaliser, of the set's key stepped by the
-/// golden-ratio constant): jittered needs the key only, sobol also its scrambles and rounds.
+/// Set `set`'s keys: jittered needs the key only, sobol also its scrambles and rounds.
 inline PaddedSetKeys padded_set_keys(PathSampler kind, std::uint64_t pixel_key, unsigned set) {
   PaddedSetKeys keys{};
   keys.key = padded_set_key(pixel_key, set);
-  if (kind != PathSampler::sobol) return keys;
-  const std::uint64_t seeds = mix64(keys.key);
-  keys.seed_x = static_cast<std::uint32_t>(seeds);
-  keys.seed_y = static_cast<std::uint32_t>(seeds >> 32);
-  for (unsigned r = 0; r < 3; ++r) {
-    const std::uint64_t round = mix64(keys.key + (r + std::uint64_t{2}) * k_stream_offset);
-    keys.round_a[r] = static_cast<std::uint32_t>(round);
-    keys.round_b[r] = static_cast<std::uint32_t>(round >> 32);
-  }
+  if (kind == PathSampler::sobol) make_sobol_set_keys(keys);
   return keys;
 }
 
-/// The half width h of the sample shuffle's words for n samples: the least h with 2^(2h) >= n.
-inline unsigned shuffle_half_bits(std::uint32_t n) {
-  unsigned h = 1;
-  while ((std::uint64_t{1} << (2 * h)) < n) ++h;
-  return h;
-}
-
-/// Where sample i goes under the random permutation of {0, ..., n-1} of a set (n >= 2, h =
-/// shuffle_half_bits(n)): a three-round Feistel network on 2h bits, round r's function
-/// F_r(v) = ((a_r v + b_r) mod 2^32) >> (32 - h), walked back into [0, n) (see permutation.hpp).
-/// With a_r, b_r uniform, F_r is Dietzfelbinger's multiply-add-shift hash, pairwise independent
-/// for inputs of at most 32 - h bits (v has h <= 16). Three rounds of random functions make a
-/// permutation that queries of its forward direction, which is all a pairing of samples is,
-/// cannot tell from a random one (Luby and Rackoff); the pairing test below checks ours, at a
-/// multiply per round. The lighter
-/// permutation_element keeps enough of the index's low bits that two sets' first Sobol'
-/// digits, which are those bits, stay correlated; an Owen-scrambled index keeps the pairs
-/// {2k, 2k+1} together, with the same effect.
-inline std::uint32_t shuffled_sample(std::uint32_t i, std::uint32_t n, unsigned h,
-                                     const PaddedSetKeys& keys) {
-  const std::uint32_t mask = (std::uint32_t{1} << h) - 1;
-  std::uint32_t x = i;
-  do {
-    std::uint32_t left = x >> h, right = x & mask;
-    for (unsigned r = 0; r < 3; ++r) {
-      const std::uint32_t f = (keys.round_a[r] * right + keys.round_b[r]) >> (32 - h);
-      const std::uint32_t next = left ^ f;
-      left = right;
-      right = next;
-    }
-    x = left << h | right;
-  } while (x >= n);
-  return x;
-}
-
-/// A pixel's padded sets: its key, its sample count and the keys of its first k_cached_sets
-/// sets, each made when a sample first reaches it and then shared by every sample of the pixel
-/// (a Sobol' set's keys cost five mix64; a sample's point in it, at most one). A value on the stack of the
-/// pixel loop, no allocation: sets beyond the cache are made per sample, the same bits.
+/// A pixel's padded sets: its key, its sample count, the keys of its first k_cached_sets sets,
+/// each made when a sample first reaches it and then shared by every sample of the pixel (a
+/// Sobol' set's keys cost five mix64), and for Sobol' sets the points of the current block of
+/// k_sobol_block samples, made together (padded_sobol_block.hpp) when the first sample of the
+/// block reaches the set. A value on the stack of the pixel loop, no allocation: sets beyond
+/// the cache are made per sample, the same bits.
 class PaddedPixel {
  public:
   static constexpr unsigned k_cached_sets = 32;
@@ -171,8 +76,9 @@ class PaddedPixel {
         pixel_key_(pixel_key),
         count_(count),
         half_bits_(shuffle_half_bits(count)),
-        index_nibbles_((2 * half_bits_ + 3) / 4),
-        columns_(kind == PathSampler::jittered ? JitteredPoints::grid_columns(count) : 1) {}
+        columns_(kind == PathSampler::jittered ? JitteredPoints::grid_columns(count) : 1) {
+    block_of_.fill(k_no_block);
+  }
 
   /// The seed's randomisation of pixel `pixel` for the samples from `first_sample` on: two
   /// renders with different first samples (chapter 05's pair A, B) are independent.
@@ -193,32 +99,10 @@ class PaddedPixel {
 
   /// Sample `index`'s point in set `set`.
   Vec2 point(std::uint32_t index, unsigned set_index) {
-    const PaddedSetKeys& keys = set(set_index);
-    if (kind_ == PathSampler::sobol) {
-      // Dimensions 0 and 1 of Sobol' point pi(index), each Owen-scrambled by the set's seeds:
-      // a (0,m,2)-net at count = 2^m, each point uniform. pi, a random permutation of the
-      // samples per set (shuffled_sample; pbrt-v4's padded Sobol' sampler has one), pairs the
-      // sets at random: without it the scrambles of two sets would keep the sample order's
-      // nesting, and bounce b's first digit would equal bounce b''s, flipped or not, for every
-      // sample. Owen scrambling works on reversed bits (owen_scramble.hpp): dimension 0, the
-      // radical inverse, is the index reversed, so its reversed bits are the index itself.
-      const std::uint32_t p = count_ <= 1 ? 0 : shuffled_sample(index, count_, half_bits_, keys);
-      const std::uint32_t y_reversed = sobol_dimension1_reversed(p, index_nibbles_);
-      const std::uint64_t xy =
-          reverse_bits_of_halves(std::uint64_t{laine_karras_permutation(p, keys.seed_x)} << 32 |
-                                 laine_karras_permutation(y_reversed, keys.seed_y));
-      const auto x = static_cast<std::uint32_t>(xy >> 32), y = static_cast<std::uint32_t>(xy);
-      // The bits below the 32 scrambled ones, so a point is uniform in double precision: a
-      // 2^-32 refinement no estimate can resolve, so one multiply-xorshift of (key, index)
-      // serves (uniform over the keys; each half of the word a different refinement).
-      std::uint64_t low_bits = (keys.key ^ index) * k_mix64_first;
-      low_bits ^= low_bits >> 29;
-      const double low_x = static_cast<std::uint32_t>(low_bits >> 32) * 0x1p-32;
-      const double low_y = static_cast<std::uint32_t>(low_bits) * 0x1p-32;
-      return {(x + low_x) * 0x1p-32, (y + low_y) * 0x1p-32};
-    }
+    if (kind_ == PathSampler::sobol) return sobol_point(index, set_index);
     // Jittered: the sample's cell of the columns x rows grid, by the set's permutation, and
     // the place in the cell from one mix64 of (key, index).
+    const PaddedSetKeys& keys = set(set_index);
     const std::uint64_t low_bits = mix64(keys.key ^ (index + std::uint64_t{1}) * k_stream_offset);
     const double low_x = static_cast<std::uint32_t>(low_bits) * 0x1p-32;
     const double low_y = static_cast<std::uint32_t>(low_bits >> 32) * 0x1p-32;
@@ -228,29 +112,50 @@ class PaddedPixel {
   }
 
  private:
+  static constexpr std::uint32_t k_no_block = ~std::uint32_t{0};
+
+  /// padded_sobol_point(set's keys, index, count, h), read from the block of the set's points
+  /// that holds it; a cached set's points are made a block at a time, the same bits.
+  Vec2 sobol_point(std::uint32_t index, unsigned set_index) {
+    if (set_index >= k_cached_sets)
+      return padded_sobol_point(set(set_index), index, count_, half_bits_);
+    const std::uint32_t block = index / k_sobol_block;
+    if (block_of_[set_index] != block) {
+      padded_sobol_block(set(set_index), block * k_sobol_block, count_, half_bits_,
+                         points_[set_index]);
+      block_of_[set_index] = block;
+    }
+    return points_[set_index][index % k_sobol_block];
+  }
+
   PathSampler kind_;
   std::uint64_t pixel_key_;
   std::uint32_t count_;
-  unsigned half_bits_;      // of the Sobol' sample shuffle
-  unsigned index_nibbles_;  // a shuffled index is below 2^(2 half_bits_) <= 16^index_nibbles_
-  std::uint32_t columns_;   // of the jittered grid: the largest divisor of count <= sqrt(count)
-  unsigned made_ = 0;       // sets_[0, made_) are made
+  unsigned half_bits_;     // of the Sobol' sample shuffle
+  std::uint32_t columns_;  // of the jittered grid: the largest divisor of count <= sqrt(count)
+  unsigned made_ = 0;      // sets_[0, made_) are made
   std::array<PaddedSetKeys, k_cached_sets> sets_;
   PaddedSetKeys beyond_{};
+  std::array<std::uint32_t, k_cached_sets> block_of_;  // sobol: points_[set]'s block, or none
+  std::array<std::array<Vec2, k_sobol_block>, k_cached_sets> points_;
 };
 
 /// Sample `index` of a pixel's samples, as padded 2D sets: each uniform2() is the sample's
 /// point in the next set. A small value, made per sample: no allocation, no virtual call; the
-/// estimator takes it where it would take an Rng (uniform2() and uniform()). Per bounce:
-/// jittered, a mix64 and a permutation element; sobol, three multiply-add rounds of the
-/// shuffle, one Sobol' column sum, two Laine-Karras hashes and a multiply for the low bits (the
-/// set's keys are the pixel's, made once).
+/// estimator takes it where it would take an Rng (uniform2() and uniform()). It makes each
+/// point one set ahead, when the previous one is taken: the point does not depend on the path,
+/// so the processor makes it while the path's ray is traced, off the path's chain of steps.
 class PaddedSample {
  public:
-  PaddedSample(PaddedPixel& pixel, std::uint32_t index) : pixel_(&pixel), index_(index) {}
+  PaddedSample(PaddedPixel& pixel, std::uint32_t index)
+      : pixel_(&pixel), index_(index), next_(pixel.point(index, 0)) {}
 
   /// This sample's point in the next 2D set.
-  Vec2 uniform2() { return pixel_->point(index_, set_++); }
+  Vec2 uniform2() {
+    const Vec2 point = next_;
+    next_ = pixel_->point(index_, ++set_);
+    return point;
+  }
 
   /// A single uniform (a delta material's choice): the first coordinate of the next set, so
   /// every bounce takes one set whatever it samples.
@@ -262,7 +167,8 @@ class PaddedSample {
  private:
   PaddedPixel* pixel_;
   std::uint32_t index_;
-  unsigned set_ = 0;
+  unsigned set_ = 0;  // the set of next_
+  Vec2 next_;         // the point the next uniform2() returns
 };
 
 }  // namespace mcrt

@@ -78,26 +78,6 @@ TEST(PathSamplerTest, SobolDimensionZeroIsTheReversedIndex) {
   for (std::uint32_t i = 0; i < 4096; ++i) ASSERT_EQ(sobol_bits(i, 0), reverse_bits(i)) << i;
 }
 
-// The padded sets' own copy of dimension 1's columns (bit-reversed, from the recurrence) is
-// Boost's, column for column.
-TEST(PathSamplerTest, SobolDimensionOneColumnsAreBoosts) {
-  for (unsigned b = 0; b < 32; ++b)
-    EXPECT_EQ(k_sobol_dimension1_reversed[b], reverse_bits(sobol_columns(1)[b])) << b;
-  for (std::uint32_t i : {0u, 1u, 6u, 255u, 4096u, 65535u, 0x12345678u, 0xffffffffu})
-    EXPECT_EQ(sobol_dimension1_reversed(i, 8), reverse_bits(sobol_bits(i, 1))) << i;
-  for (std::uint32_t i = 0; i < 256; ++i)
-    ASSERT_EQ(sobol_dimension1_reversed(i, 2), reverse_bits(sobol_bits(i, 1))) << i;
-}
-
-// Both halves of a word reversed at once are each half reversed.
-TEST(PathSamplerTest, HalvesAreReversedApart) {
-  for (std::uint64_t w : {0x0000000100000000ull, 0x80000000ull, 0x123456789abcdef0ull, ~0ull})
-    EXPECT_EQ(reverse_bits_of_halves(w),
-              std::uint64_t{reverse_bits(static_cast<std::uint32_t>(w >> 32))} << 32 |
-                  reverse_bits(static_cast<std::uint32_t>(w)))
-        << w;
-}
-
 // A sample's point is the same whether its set's keys come from the pixel's cache or are made
 // for it alone (sets beyond the cache): set 40 of a pixel, reached the long way, against a
 // pixel whose cache holds it (made after its first 32 sets were skipped: the same function).
