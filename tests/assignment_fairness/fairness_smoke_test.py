@@ -4,8 +4,9 @@ fairness.json with the same rows, its columns hold what they say (fractions in [
 known bug the diagnosis test expects caught at every seed, the one it expects to pass not
 caught), the files do not depend on --threads, and bad flags exit 2 with one line naming the
 flag (a first seed whose range holds a grading seed among them). With the variant grid (key.py
---hidden-grid's file), the two statistical hidden tests are measured at every point of theirs,
-and a6's efficiency threshold holds on the solution and not on light sampling alone.
+--hidden-grid's file), the two statistical hidden tests are measured at every point of theirs.
+The two threshold tests (a6's efficiency, failing above its limit; a7's jittered rate, failing
+below it) hold on the solution and not on their known bugs, and are not p-value rows.
 
     fairness_smoke_test.py PROGRAM HIDDEN_GRID_JSON
 """
@@ -69,9 +70,12 @@ class QuickRunTest(unittest.TestCase):
                      "a6_phong_lobe", "a6_balance_regions", "a6_power_regions",
                      "a4_hidden_furnace", "a5_hidden_roulette", "a6_hidden_lobe_m3",
                      "a4_hidden_furnace_variants", "a5_hidden_roulette_variants",
-                     "a7_jittered_uniform", "a7_jittered_rate", "a7_latin_uniform",
+                     "a6_dielectric_branch", "a7_jittered_uniform", "a7_latin_uniform",
                      "a7_halton_uniform"):
             self.assertIn(name, names)
+        # thresholds, not p-values: a7's rate "p-value" is 1 at every seed on the solution
+        self.assertNotIn("a7_jittered_rate", names)
+        self.assertNotIn("a7_jitter_shared_by_every_stratum", {r["name"] for r in self.bugs()})
 
     def test_check_columns_are_sane(self):
         for r in self.checks():
@@ -141,6 +145,31 @@ class QuickRunTest(unittest.TestCase):
         self.assertLess(solution["max_ratio"], solution["limit"])
         self.assertEqual(bug["seeds_above_limit"], 3)
         self.assertGreater(bug["min_ratio"], 100 * bug["limit"])
+
+    def test_the_rate_threshold_separates_jitter_from_a_shifted_grid(self):
+        solution = self.json["thresholds"]["a7_jittered_rate"]
+        bug = self.json["thresholds"]["a7_jitter_shared_by_every_stratum"]
+        # --quick: 20 seeds a solution check, 3 a bug
+        self.assertEqual((solution["seeds"], bug["seeds"]), (20, 3))
+        self.assertEqual(solution["seeds_below_limit"], 0)
+        self.assertGreater(solution["min_ratio"], solution["limit"])
+        self.assertEqual(bug["seeds_below_limit"], 3)
+        # a shifted grid falls as 1/n (16 times): far below 64
+        self.assertLess(bug["max_ratio"], bug["limit"] / 2)
+
+    def test_every_threshold_row_has_one_shape_and_names_its_direction(self):
+        keys = {"test", "known_bug", "limit", "seeds", "min_ratio", "median_ratio", "max_ratio"}
+        directions = {"a6_efficiency": "above", "a6_light_sampling_passed_off_as_mis": "above",
+                      "a7_jittered_rate": "below", "a7_jitter_shared_by_every_stratum": "below"}
+        self.assertEqual(sorted(self.json["thresholds"]), sorted(directions))
+        for name, row in self.json["thresholds"].items():
+            count = f"seeds_{directions[name]}_limit"
+            self.assertEqual(set(row), keys | {count}, name)
+            self.assertTrue(0 <= row[count] <= row["seeds"], name)
+            self.assertTrue(row["min_ratio"] <= row["median_ratio"] <= row["max_ratio"], name)
+            self.assertEqual(row["known_bug"], name not in ("a6_efficiency", "a7_jittered_rate"))
+            prefix = "assignments.Diagnoses." if row["known_bug"] else name[:2] + ".A"
+            self.assertTrue(row["test"].startswith(prefix), row["test"])
 
 
 class BadFlagsTest(unittest.TestCase):

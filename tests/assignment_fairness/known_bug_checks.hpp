@@ -364,17 +364,13 @@ inline std::vector<MeasuredBug> known_bugs() {
         std::string invalid, table;
         return dielectric_branch_p_value(wrong, seed, invalid, table);
       });
-  // a7: exact stratification and the recurrence; a point's chi-square; jittered's rate
+  // a7: exact stratification and the recurrence; a point's chi-square (one jitter shared by
+  // every stratum fails the rate threshold: a threshold row of measure_assignment_fairness.cpp)
   bugs.push_back(exact_bug("a7_jitter_outside_its_stratum", "A7JitterOutsideItsStratum",
                            "a7_jittered_strata", [] {
                              auto wrong = a7_with<JitterOutsideItsStratum>();
                              return check_jittered_strata(wrong);
                            }));
-  add("a7_jitter_shared_by_every_stratum", "A7JitterSharedByEveryStratum", "a7_jittered_rate",
-      [](std::uint64_t seed) {
-        auto wrong = a7_with<JitterSharedByEveryStratum>();
-        return jittered_rate(wrong, seed).p_value;
-      });
   add("a7_latin_hypercube_one_permutation", "A7LatinHypercubeWithOnePermutation",
       "a7_latin_uniform", [](std::uint64_t seed) {
         auto wrong = a7_with<JitteredPoints, LatinHypercubeOnePermutation>();
