@@ -12,6 +12,7 @@ Imported by robustness.py, which passes itself in (groups(r)). Group:
 
 import os
 import re
+import shutil
 from pathlib import Path
 
 REASON = "Input/output error"  # strerror(EIO)
@@ -62,15 +63,21 @@ def failure_problems(r, code, err, parent):
 def case_replacing(r, chapters, tmp, checks, name):
     """Over a previous run: each failing step keeps the previous run."""
     command = [chapters[name]] + r.TINY[name] + ["--quiet"]
+    # The previous run is the same at every step (seed 1, a healthy disk): made once, then
+    # copied into each step's --out (files, modes and the manifest: all a later run looks at).
+    # Each step still starts from a whole run of its own; the chapter ran once, not 20 times.
+    template = r.fresh(tmp / f"previous-{name}") / "out"
+    code, _, err, _ = r.run(command + ["--seed", "1", "--out", str(template)],
+                            cwd=template.parent)
+    if code != 0:
+        checks.case(f"{name} previous run", r.exit_problems(code, 0, err))
+        return
+    previous = r.snapshot(template)
     failures = 0
     for after in range(MAX_RENAMES):
         parent = r.fresh(tmp / f"replace{after}")
         out = parent / "out"
-        code, _, err, _ = r.run(command + ["--seed", "1", "--out", str(out)], cwd=parent)
-        if code != 0:
-            checks.case(f"{name} previous run", r.exit_problems(code, 0, err))
-            return
-        previous = r.snapshot(out)
+        shutil.copytree(template, out, symlinks=True)
         code, _, err, _ = run_with(r, command + ["--seed", "2", "--out", str(out)], parent,
                                    failing(after))
         if code == 0:
