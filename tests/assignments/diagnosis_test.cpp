@@ -1014,7 +1014,7 @@ TEST(A7Measure, DISABLED_PrintPValues) {
       "sd %.4f (ratio %.1f); graded above log 64 = %.4f\n",
       log_ratio.mean(), std::sqrt(log_ratio.variance()), std::exp(log_ratio.mean()),
       log_ratio_shared.mean(), std::sqrt(log_ratio_shared.variance()),
-      std::exp(log_ratio_shared.mean()), std::log(64.0));
+      std::exp(log_ratio_shared.mean()), std::log(k_a7_rate_limit));
 }
 
 }  // namespace
