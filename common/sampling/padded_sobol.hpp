@@ -5,7 +5,7 @@
 /// Sobol' set, sample i is Sobol' point pi(i) (dimensions 0 and 1), pi a random permutation
 /// of the samples, and each coordinate Owen-scrambled by a seed of the set. At spp = 2^m the
 /// set is a (0,m,2)-net, and each point alone is uniform on [0,1)^2. padded_sobol_block.hpp
-/// makes eight samples' points at once, the same bits.
+/// makes sixteen samples' points at once, the same bits.
 
 #include <cstdint>
 

@@ -9,13 +9,15 @@
 // the time other processes took, the CPU time only this one's, so the ratios hold.
 // Counters: each sampler's rays per second and sobol_ratio, jittered_ratio (its rate over
 // independent's; the goal is 0.9 or more). Rays are closest-hit queries: the samplers trace
-// different paths, so the rates, not the times, compare.
+// different paths, so the rates, not the times, compare. The label names the version of the
+// Sobol' blocks the processor runs (AVX-512, AVX2 or portable).
 
 #include <cstdint>
 #include <ctime>
 
 #include <benchmark/benchmark.h>
 
+#include "core/cpu_features.hpp"
 #include "render/path_tracer.hpp"
 #include "render/sampled_render.hpp"
 #include "render/scene.hpp"
@@ -55,6 +57,9 @@ void sampler_cost(benchmark::State& state, const char* scene_name) {
   }
   state.counters["jittered_ratio"] = rate[1] / rate[0];
   state.counters["sobol_ratio"] = rate[2] / rate[0];
+  state.SetLabel(mcrt::cpu_has_avx512() ? "sobol blocks: AVX-512"
+                 : mcrt::cpu_has_avx2() ? "sobol blocks: AVX2"
+                                        : "sobol blocks: portable");
 }
 void BM_SamplerCostCornell(benchmark::State& state) { sampler_cost(state, "cornell"); }
 void BM_SamplerCostCornellSpheres(benchmark::State& state) {

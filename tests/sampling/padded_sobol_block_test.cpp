@@ -1,6 +1,6 @@
-// The blocks of a padded Sobol' set (sampling/padded_sobol_block.hpp): the portable, AVX2 and
-// dispatched versions, and a pixel's cache of blocks read in any order, give the plain point's
-// bits (padded_sobol_point) at every sample count, block and order.
+// The blocks of a padded Sobol' set (sampling/padded_sobol_block.hpp): the portable, AVX2,
+// AVX-512 and dispatched versions, and a pixel's cache of blocks read in any order, give the
+// plain point's bits (padded_sobol_point) at every sample count, block and order.
 
 #include <algorithm>
 #include <array>
@@ -24,12 +24,13 @@ namespace {
 
 // Every count from 1 to 300 (walking or not, a last block full or partial) and the powers of
 // four up to 4096, three sets' keys, every block: each version's point is the plain one's, bit
-// for bit. The AVX2 copy runs only where the processor has AVX2 (else it is the portable one).
+// for bit. The AVX2 and AVX-512 copies run only where the processor has them.
 TEST(PaddedSobolBlockTest, BlocksGiveThePlainPointsAtEveryCount) {
   using BlockFunction = void (*)(const PaddedSetKeys&, std::uint32_t, std::uint32_t, unsigned,
                                  std::array<Vec2, k_sobol_block>&);
   std::vector<BlockFunction> versions = {padded_sobol_block_portable, padded_sobol_block};
   if (cpu_has_avx2()) versions.push_back(padded_sobol_block_avx2);
+  if (cpu_has_avx512()) versions.push_back(padded_sobol_block_avx512);
   std::vector<std::uint32_t> counts(300);
   std::iota(counts.begin(), counts.end(), 1u);
   for (std::uint32_t count : {1024u, 4096u}) counts.push_back(count);
@@ -50,7 +51,8 @@ TEST(PaddedSobolBlockTest, BlocksGiveThePlainPointsAtEveryCount) {
 }
 
 // A pixel's cached blocks, read in any order of samples and sets (a block made, left, made
-// again), give the plain points: 37 samples (five blocks, the last partial), in a shuffled order.
+// again), give the plain points: 37 samples (three blocks, the last partial), in a shuffled
+// order.
 TEST(PaddedSobolBlockTest, APixelsBlocksGiveThePlainPointsInAnyOrder) {
   constexpr std::uint32_t count = 37;
   std::vector<std::pair<std::uint32_t, unsigned>> visits;
