@@ -5,9 +5,11 @@
 #if defined(__x86_64__)
 // GCC 12's AVX-512 intrinsics start many results from an "undefined" register that -Wall
 // reports as uninitialised (GCC bug 105593, fixed in GCC 13): silenced for this file only.
+#if !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
 #endif
 
@@ -226,6 +228,6 @@ void padded_sobol_block(const PaddedSetKeys& keys, std::uint32_t first, std::uin
 
 }  // namespace mcrt
 
-#if defined(__x86_64__)
+#if defined(__x86_64__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
