@@ -132,9 +132,9 @@ struct ShuffleRounds16 {
   low_y = _mm512_cvtepi64_epi32(bits);
 }
 
-[[gnu::target("avx512f,avx512bw,avx512vl,avx512dq")]] void make_block_avx512(
-    const PaddedSetKeys& keys, std::uint32_t first, std::uint32_t count, unsigned h,
-    std::array<Vec2, k_sobol_block>& points) {
+[[MCRT_AVX512]] inline void make_block_avx512(const PaddedSetKeys& keys, std::uint32_t first,
+                                              std::uint32_t count, unsigned h,
+                                              std::array<Vec2, k_sobol_block>& points) {
   static_assert(k_sobol_block == 16, "one AVX-512 register of lanes");
   ShuffleRounds16 rounds;
   for (unsigned r = 0; r < 3; ++r) {
@@ -198,8 +198,9 @@ void padded_sobol_block_portable(const PaddedSetKeys& keys, std::uint32_t first,
   make_block(keys, first, count, h, points);
 }
 
-void padded_sobol_block_avx512(const PaddedSetKeys& keys, std::uint32_t first, std::uint32_t count,
-                               unsigned h, std::array<Vec2, k_sobol_block>& points) {
+[[gnu::target("avx512f,avx512bw,avx512vl,avx512dq")]] void padded_sobol_block_avx512(
+    const PaddedSetKeys& keys, std::uint32_t first, std::uint32_t count, unsigned h,
+    std::array<Vec2, k_sobol_block>& points) {
   make_block_avx512(keys, first, count, h, points);
 }
 #else
