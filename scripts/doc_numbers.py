@@ -799,7 +799,8 @@ number("ch09.grid_last_win_k", "ch09", ch09_grid_last_win)
 
 # Chapter 09's render study (runs ch09-render on cornell, ch09-render-spheres on
 # cornell-spheres): per sampler and depth (1 and the full 10) the fitted slope of the rms error
-# against spp, its standard error, and the rms error at 1024 spp.
+# against spp, its standard error, and the rms error at 1024 spp; per sampler the rays (in
+# millions) at 1024 spp and full depth, which make equal spp equal rays.
 for run, prefix in (("ch09-render", "ch09.render_"),
                     ("ch09-render-spheres", "ch09.render_spheres_")):
     for sampler in ("independent", "jittered", "sobol"):
@@ -810,6 +811,9 @@ for run, prefix in (("ch09-render", "ch09.render_"),
                    cell(run, "render_slopes.csv", "standard_error", sampler=sampler, depth=depth))
             number(f"{prefix}{sampler}_d{depth}_rmse", run,
                    cell(run, "render_error.csv", "rmse", sampler=sampler, depth=depth, spp=1024))
+        number(f"{prefix}{sampler}_d10_megarays", run,
+               lambda runs, run=run, sampler=sampler: runs.cell(
+                   run, "render_error.csv", "rays", sampler=sampler, depth=10, spp=1024) / 1e6)
 
 # Chapter 08's light choice (light_choice.csv): relMSE of uniform and power-proportional
 # choice over the floor, the ratio of the two away from the dim light and beside it, and the
