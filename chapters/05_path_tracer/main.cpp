@@ -27,9 +27,9 @@
 //
 // --sampler jittered or sobol draws each pixel's samples from padded 2D point sets instead of
 // independent streams (render/sampled_render.hpp, chapter 09): the pixel positions, and each
-// bounce's direction, stratified across the pixel's spp samples. Those renders run one path at
-// a time (the four-lane engine serves the independent streams only), and each of A and B is a
-// point set of its own, so the A images of growing spp no longer share their first samples.
+// bounce's direction, stratified across the pixel's spp samples; the four lanes take the same
+// points. Each of A and B is a point set of its own, so the A images of growing spp no longer
+// share their first samples.
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +82,7 @@ std::pair<RenderResult, RenderResult> render_pair(const Scene& scene, const Came
                        o.common.quiet);
   const auto render_paths = [&](std::uint64_t first_sample) {
     const RenderSettings settings{spp, first_sample, o.common.seed, o.common.threads, &progress};
-    if (o.lanes && o.sampler == PathSampler::independent)
-      return render_path_tracer_lanes(scene, camera, settings, depth);
+    if (o.lanes) return render_path_tracer_lanes(scene, camera, settings, depth, o.sampler);
     return render_sampled(camera, settings, o.sampler,
                           [&](const Ray& ray, auto& rng, RayCount& count) {
                             return estimate_path_radiance(scene, ray, depth, rng, count);

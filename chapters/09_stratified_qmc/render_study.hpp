@@ -24,14 +24,13 @@
 
 #include "app/ray_limit.hpp"
 #include "app/reference_cache.hpp"
+#include "engine/path_tracer_lanes.hpp"
 #include "integration/convergence.hpp"
 #include "io/contact_sheet.hpp"
 #include "io/image_file.hpp"
 #include "io/plot.hpp"
 #include "io/table.hpp"
-#include "render/path_tracer.hpp"
 #include "render/relative_error.hpp"
-#include "render/sampled_render.hpp"
 #include "render/scene.hpp"
 #include "sampling/path_sampler.hpp"
 
@@ -138,11 +137,8 @@ inline RenderStudy run_render_study(const RenderStudyOptions& o, std::uint64_t s
       std::vector<double> fit_spp, fit_rmse;
       for (int spp : study_spp(o)) {
         const RenderSettings settings{spp, 0, seed, threads, nullptr};
-        const RenderResult a =
-            render_sampled(camera, settings, sampler,
-                           [&](const Ray& ray, auto& rng, RayCount& count) {
-                             return estimate_path_radiance(scene, ray, depth, rng, count);
-                           });
+        // render_sampled's image with estimate_path_radiance, four paths at a time
+        const RenderResult a = render_path_tracer_lanes(scene, camera, settings, depth, sampler);
         const double raw = rms_error(a.image, reference.image);
         const bool fitted = se * se <= 0.5 * raw * raw;
         study.errors.add_row({name_of(sampler), depth, spp, a.rays, raw, se, own_rms_error(raw, se),

@@ -11,14 +11,25 @@
 #include "engine/path_lanes.hpp"
 #include "engine/path_starts.hpp"
 #include "render/path_tracer.hpp"
+#include "render/sampled_render.hpp"
 #include "render/specular.hpp"
+#include "sampling/path_sampler.hpp"
 
 namespace mcrt {
 
-// ASSIGNMENT a4.1 BEGIN needs=a2.1 withheld stub: RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera, const RenderSettings& settings, int max_depth) { return render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) { return estimate_path_radiance(scene, ray, max_depth, rng, count); }); }
+// ASSIGNMENT a4.1 BEGIN needs=a2.1 withheld stub: RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera, const RenderSettings& settings, int max_depth, PathSampler sampler) { return render_sampled(camera, settings, sampler, [&](const Ray& ray, auto& uniforms, RayCount& count) { return estimate_path_radiance(scene, ray, max_depth, uniforms, count); }); }
 namespace {
 
 constexpr int k_lanes = RayLanes::k_lanes;
+
+// A lane's sample of a pixel's padded sets: PaddedSample's points, made when they are taken
+// (the lanes of other paths hide each point's latency, so no point is made ahead).
+struct LaneSample {
+  PaddedPixel* pixel = nullptr;
+  std::uint32_t index = 0;
+  unsigned set = 0;  // the set of the next point
+  Vec2 uniform2() { return pixel->point(index, set++); }
+};
 
 // The paths of one row in flight: a row's samples are numbered task = x spp + s and taken in
 // that order, a chunk at a time. A chunk's radiances are kept until its last path ends, then
@@ -29,14 +40,20 @@ class RowOfPaths {
   // most max_depth + 1 bounces) are a small part of its work.
   static constexpr std::uint64_t k_chunk = 1024;
 
+  // With a padded sampler, `pixels` holds the row's PaddedPixels, made as their first samples
+  // start (its capacity is kept from row to row).
   RowOfPaths(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-             int max_depth, int y)
+             int max_depth, int y, PathSampler sampler, std::vector<PaddedPixel>& pixels)
       : scene_(scene),
         camera_(camera),
         settings_(settings),
         max_depth_(max_depth),
         y_(y),
+        sampler_(sampler),
+        pixels_(pixels),
         tasks_(static_cast<std::uint64_t>(camera.width()) * settings.spp) {
+    pixels_.clear();
+    if (padded()) pixels_.reserve(static_cast<std::size_t>(camera.width()));  // no moves later
     // A diffuse scene spares shade_lanes the look at each lane's lobe.
     const bool lobes = std::ranges::any_of(scene.materials, &Material::has_lobe);
     for (PathGroup& g : groups_) g.bounce.lobes_possible = lobes;
@@ -67,7 +84,12 @@ class RowOfPaths {
     BounceLanes bounce;
     PathLanes paths;
     std::array<std::uint64_t, k_lanes> task{};  // each lane's path: x spp + s
+    // With a padded sampler, each lane's uniforms: its sample's points in the pixel's sets (the
+    // lanes' generators are then left unused).
+    std::array<LaneSample, k_lanes> sample;
   };
+
+  bool padded() const { return sampler_ != PathSampler::independent; }
 
   // Each group's bounce is one chain of dependent steps (the search, the hits, the shading,
   // the bounce, then the next search), so two groups take turns: the processor works on one
@@ -82,6 +104,10 @@ class RowOfPaths {
       g.paths.stop(l);
       return;
     }
+    if (padded()) {
+      start_padded_path(g, l);
+      return;
+    }
     if (next_start_ == PathStarts::k_capacity) {
       const auto left =
           static_cast<int>(std::min<std::uint64_t>(tasks_ - next_task_, PathStarts::k_capacity));
@@ -92,6 +118,34 @@ class RowOfPaths {
     g.paths.start_at(l, starts_.state[next_start_], starts_.increment[next_start_]);
     g.rays.set(l, starts_.ray(next_start_));
     ++next_start_;
+  }
+
+  // As render_sampled starts sample s of pixel x: the pixel's sets made when its first sample
+  // starts, the ray through the sample's point of set 0.
+  void start_padded_path(PathGroup& g, int l) {
+    const RowSample at = next_sample_;
+    next_sample_.advance(settings_.spp);
+    if (at.sample == 0) {
+      const std::uint64_t pixel = static_cast<std::uint64_t>(y_) * camera_.width() + at.x;
+      pixels_.emplace_back(sampler_,
+                           PaddedPixel::pixel_key(settings_.seed, pixel, settings_.first_sample),
+                           static_cast<std::uint32_t>(settings_.spp));
+    }
+    g.task[l] = next_task_++;
+    g.paths.start_at(l, 0, 1);  // the lane's generator is not drawn from
+    g.sample[l] = {&pixels_[static_cast<std::size_t>(at.x)], static_cast<std::uint32_t>(at.sample)};
+    g.rays.set(l, camera_.generate_ray(at.x, y_, g.sample[l].uniform2()));
+  }
+
+  // With a padded sampler, every bouncing lane but those at a delta takes its two uniforms from
+  // its sample's next set, in place of the two shade_lanes drew from its generator.
+  static void take_padded_uniforms(PathGroup& g) {
+    for (int l = 0; l < k_lanes; ++l)
+      if (g.bounce.bouncing[l] != 0) {
+        const Vec2 u = g.sample[l].uniform2();
+        g.bounce.u0[l] = u.x;
+        g.bounce.u1[l] = u.y;
+      }
   }
 
   // One pass of estimate_path_radiance's loop for the group's four paths (engine/path_lanes.hpp);
@@ -106,6 +160,7 @@ class RowOfPaths {
     if (deltas_possible_) generators = g.paths.rng.state;
     shade_lanes(scene_.materials, max_depth_, g.paths, g.bounce);
     const unsigned delta = deltas_possible_ ? delta_lanes(g) : 0u;
+    if (padded()) take_padded_uniforms(g);
     bounce_lanes(g.bounce, g.rays);
     for (unsigned left = delta; left != 0; left &= left - 1)
       bounce_delta_lane(g, nearest, std::countr_zero(left), generators);
@@ -140,8 +195,13 @@ class RowOfPaths {
                          const std::array<std::uint64_t, k_lanes>& generators) const {
     const Ray ray = g.rays.get(l);
     const Hit hit = *scene_.hit_in_lane(nearest, l, ray);
-    g.paths.rng.state[l] = generators[l];
-    const double u = g.paths.rng.next(l) * 0x1p-32;  // Rng::uniform()
+    double u;
+    if (padded()) {
+      u = g.sample[l].uniform2().x;  // PaddedSample::uniform(): the set's first coordinate
+    } else {
+      g.paths.rng.state[l] = generators[l];
+      u = g.paths.rng.next(l) * 0x1p-32;  // Rng::uniform()
+    }
     const BsdfSample specular = sample_delta(scene_.material(hit), hit, -ray.direction, u);
     for (int axis = 0; axis < 3; ++axis) g.bounce.beta[axis][l] *= specular.weight[axis];
     g.rays.set(l, spawn_ray(hit, specular.wi));
@@ -162,12 +222,15 @@ class RowOfPaths {
   const RenderSettings& settings_;
   const int max_depth_;
   const int y_;
-  bool deltas_possible_ = false;  // some material is a mirror or glass
-  const std::uint64_t tasks_;     // the row's paths: width x spp
+  const PathSampler sampler_;
+  std::vector<PaddedPixel>& pixels_;  // padded: the row's pixels whose first sample started
+  bool deltas_possible_ = false;      // some material is a mirror or glass
+  const std::uint64_t tasks_;         // the row's paths: width x spp
   std::uint64_t chunk_first_ = 0, chunk_end_ = 0, next_task_ = 0;
   PathStarts starts_;  // the starts of the tasks from next_task_ on, from entry next_start_
   int next_start_ = PathStarts::k_capacity;
-  RowSample next_sample_;  // the sample of the first task after those in starts_
+  RowSample next_sample_;  // the sample of the first task after those in starts_ (padded: of
+                           // next_task_)
   std::array<PathGroup, k_groups> groups_;
   std::array<Color, k_chunk> radiance_;
 };
@@ -175,11 +238,14 @@ class RowOfPaths {
 }  // namespace
 
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
-                                      const RenderSettings& settings, int max_depth) {
+                                      const RenderSettings& settings, int max_depth,
+                                      PathSampler sampler) {
   return render_rows(
       camera, settings, [&](int y, Color* row, RayCount& rays, std::uint64_t& non_finite) {
         std::vector<Color> sums(camera.width(), Color(0.0));
-        RowOfPaths(scene, camera, settings, max_depth, y).trace(sums, rays, non_finite);
+        thread_local std::vector<PaddedPixel> pixels;  // a pixel is ~10 KiB: kept, not remade
+        RowOfPaths(scene, camera, settings, max_depth, y, sampler, pixels)
+            .trace(sums, rays, non_finite);
         for (int x = 0; x < camera.width(); ++x)
           row[x] = sums[x] / static_cast<double>(settings.spp);
       });

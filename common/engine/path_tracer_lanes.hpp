@@ -16,14 +16,18 @@
 #include "geometry/camera.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"
+#include "sampling/path_sampler.hpp"
 
 namespace mcrt {
 
 /// render(camera, settings, path radiance with at most `max_depth` bounces), four paths at a
 /// time. A lane at a delta material (mirror, glass) leaves the four-lane bounce and takes
 /// estimate_path_radiance's delta branch on its own (one uniform, sample_delta), between the
-/// same search and end of step as the other lanes.
+/// same search and end of step as the other lanes. With a `sampler` other than independent,
+/// render_sampled's image instead (--sampler): each lane draws its uniforms from its sample's
+/// PaddedSample, as the loop does, in place of its generator's.
 RenderResult render_path_tracer_lanes(const Scene& scene, const Camera& camera,
-                                      const RenderSettings& settings, int max_depth);
+                                      const RenderSettings& settings, int max_depth,
+                                      PathSampler sampler = PathSampler::independent);
 
 }  // namespace mcrt

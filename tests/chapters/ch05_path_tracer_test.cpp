@@ -183,9 +183,9 @@ TEST(Ch05Test, BothEnginesWriteTheSameImages) {
   EXPECT_EQ(a.numbers("rays"), b.numbers("rays"));
 }
 
-// --sampler jittered and sobol render one path at a time whatever --engine (the four lanes
-// serve the independent streams only), the same bytes for any thread count; each differs from
-// the independent image, and from the other.
+// --sampler jittered and sobol render the same bytes with either --engine (the four lanes take
+// each sample's points as the loop does) and for any thread count; each differs from the
+// independent image, and from the other.
 TEST(Ch05Test, SamplersRenderTheSameImageWhateverTheEngineAndThreads) {
   const std::string flags =
       "--scene cornell --width 15 --height 11 --spp 4 --depth 4 --seed 3 --reference-spp 0 --quiet";
