@@ -47,34 +47,10 @@ struct Case {
   int threads;
 };
 
-void expect_lecture_image(const Case& c) {
-  SCOPED_TRACE(c.scene + " " + std::to_string(c.width) + "x" + std::to_string(c.height) + " spp " +
-               std::to_string(c.spp) + " depth " + std::to_string(c.depth) + " first sample " +
-               std::to_string(c.first_sample) + " threads " + std::to_string(c.threads));
-  const Scene scene = make_scene(c.scene);
-  const Camera camera(scene.camera, c.width, c.height);
-  const RenderSettings settings{c.spp, c.first_sample, 11, c.threads, nullptr};
-  const RenderResult lecture =
-      render(camera, settings, [&](const Ray& ray, Rng& rng, RayCount& count) {
-        return estimate_path_radiance(scene, ray, c.depth, rng, count);
-      });
-  const RenderResult lanes = render_path_tracer_lanes(scene, camera, settings, c.depth);
-  ASSERT_EQ(lanes.image.width, lecture.image.width);
-  ASSERT_EQ(lanes.image.height, lecture.image.height);
-  std::size_t differing = 0, first = lecture.image.pixels.size();
-  for (std::size_t i = 0; i < lecture.image.pixels.size(); ++i)
-    if (!same_bits(lanes.image.pixels[i], lecture.image.pixels[i])) {
-      ++differing;
-      first = std::min(first, i);
-    }
-  EXPECT_EQ(differing, 0u) << "first differing pixel: " << first;
-  EXPECT_EQ(lanes.rays, lecture.rays);
-  EXPECT_EQ(lanes.non_finite_samples, lecture.non_finite_samples);
-}
-
-// --sampler jittered and sobol: the lanes draw their uniforms from their samples' padded sets,
-// and must give render_sampled's image with the lecture's loop, bit for bit.
-void expect_sampled_image(const Case& c, PathSampler sampler) {
+// The lanes' image against the lecture's loop: render_sampled with estimate_path_radiance,
+// which for independent streams is render() itself; with --sampler jittered or sobol the lanes
+// draw their uniforms from their samples' padded sets, as the loop does.
+void expect_lecture_image(const Case& c, PathSampler sampler = PathSampler::independent) {
   SCOPED_TRACE(name_of(sampler) + " " + c.scene + " " + std::to_string(c.width) + "x" +
                std::to_string(c.height) + " spp " + std::to_string(c.spp) + " depth " +
                std::to_string(c.depth) + " first sample " + std::to_string(c.first_sample) +
@@ -88,8 +64,9 @@ void expect_sampled_image(const Case& c, PathSampler sampler) {
                        return estimate_path_radiance(scene, ray, c.depth, uniforms, count);
                      });
   const RenderResult lanes = render_path_tracer_lanes(scene, camera, settings, c.depth, sampler);
+  ASSERT_EQ(lanes.image.width, lecture.image.width);
+  ASSERT_EQ(lanes.image.height, lecture.image.height);
   std::size_t differing = 0, first = lecture.image.pixels.size();
-  ASSERT_EQ(lanes.image.pixels.size(), lecture.image.pixels.size());
   for (std::size_t i = 0; i < lecture.image.pixels.size(); ++i)
     if (!same_bits(lanes.image.pixels[i], lecture.image.pixels[i])) {
       ++differing;
@@ -109,19 +86,19 @@ void expect_sampled_image(const Case& c, PathSampler sampler) {
 TEST(PathTracerLanesTest, GivesTheSampledLoopsImageWithEveryPaddedSampler) {
   for (const PathSampler sampler : {PathSampler::jittered, PathSampler::sobol}) {
     for (const std::string& name : scene_names())
-      expect_sampled_image({name, 24, 18, 8, 10, 0, 2}, sampler);
+      expect_lecture_image({name, 24, 18, 8, 10, 0, 2}, sampler);
     for (int width = 1; width <= 9; ++width)
       for (int spp = 1; spp <= 3; ++spp)
-        expect_sampled_image({"smallpt", width, 7, spp, 10, 0, 1}, sampler);
-    expect_sampled_image({"cornell", 1031, 1, 1, 10, 0, 1}, sampler);
+        expect_lecture_image({"smallpt", width, 7, spp, 10, 0, 1}, sampler);
+    expect_lecture_image({"cornell", 1031, 1, 1, 10, 0, 1}, sampler);
     for (int spp : {16, 17, 33})
-      expect_sampled_image({"cornell-spheres", 9, 4, spp, 10, 0, 1}, sampler);
+      expect_lecture_image({"cornell-spheres", 9, 4, spp, 10, 0, 1}, sampler);
     for (int depth : {0, 1, 2, 3, 40}) {
-      expect_sampled_image({"furnace", 8, 6, 4, depth, 0, 1}, sampler);
-      expect_sampled_image({"smallpt", 12, 9, 4, depth, 0, 1}, sampler);
+      expect_lecture_image({"furnace", 8, 6, 4, depth, 0, 1}, sampler);
+      expect_lecture_image({"smallpt", 12, 9, 4, depth, 0, 1}, sampler);
     }
     for (int threads : {1, 2, 3})
-      expect_sampled_image({"veach-plates", 17, 9, 5, 10, 5, threads}, sampler);
+      expect_lecture_image({"veach-plates", 17, 9, 5, 10, 5, threads}, sampler);
   }
 }
 
