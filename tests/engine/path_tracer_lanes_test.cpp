@@ -2,8 +2,9 @@
 // loop, render(camera, settings, estimate_path_radiance): the same image bit for bit, the same
 // ray count and the same count of non-finite estimates, for every scene, for image widths and
 // sample counts that leave every remainder of the four lanes and of a chunk of paths, for
-// depths 0 to 10, for first_sample > 0 and for 1 and 2 threads. Both run the same operations on
-// the same streams, so nothing but a bug can make them differ: the comparison is exact.
+// depths 0 to 10, for first_sample > 0 and for 1 and 2 threads; and with --sampler jittered and
+// sobol, render_sampled's image with the same loop. Both run the same operations on the same
+// streams (or points), so nothing but a bug can make them differ: the comparison is exact.
 //
 // The four-ray searches are also compared with closest_hit ray by ray, on the rays real paths
 // meet and on rays from random points in random directions, with their results built into Hits
